@@ -1,0 +1,216 @@
+using System.ComponentModel;
+using System.Diagnostics;
+using System.Text;
+using System.Text.Json;
+using System.Text.Json.Nodes;
+
+namespace QuantumRayTracing.Bridge;
+
+/// <summary>
+/// Owns one Node bridge process (Quantum/bridge.mjs): starts it, sends one JSON request per line
+/// and reads the reply, enforces the time limit by killing the process, restarts a bridge that died
+/// once per request, and turns every failure into a <see cref="BridgeException"/> or
+/// <see cref="QSharpException"/>. Not thread-safe: one bridge serves one worker.
+/// </summary>
+public sealed class QSharpBridge(BridgeOptions options) : IDisposable
+{
+    private const int StderrTailLength = 4000;
+
+    private Process? _process;
+    private readonly StringBuilder _stderr = new();
+    private long _nextId;
+
+    public QSharpBridge() : this(new BridgeOptions()) { }
+
+    /// <summary>How many times a dead bridge was started again.</summary>
+    public int Restarts { get; private set; }
+
+    /// <summary>Process id of the running bridge, or null.</summary>
+    public int? ProcessId => _process is { HasExited: false } p ? p.Id : null;
+
+    /// <summary>The qsharp-lang version the bridge reported when it started.</summary>
+    public string? QSharpVersion { get; private set; }
+
+    /// <summary>Runs a Q# expression for <paramref name="shots"/> shots; one Q# value (as the QDK prints it) per shot.</summary>
+    public IReadOnlyList<string> Run(string expression, int shots = 1, TimeSpan? timeout = null)
+    {
+        var result = Send(new JsonObject { ["method"] = "run", ["expr"] = expression, ["shots"] = shots }, timeout);
+        return result.AsArray().Select(v => v!.GetValue<string>()).ToArray();
+    }
+
+    /// <summary>Asks the Resource Estimator about a Q# expression; one result object per parameter set.</summary>
+    public JsonArray Estimate(string expression, JsonArray? parameters = null, TimeSpan? timeout = null) =>
+        Send(new JsonObject { ["method"] = "estimate", ["expr"] = expression, ["params"] = parameters ?? [new JsonObject()] }, timeout).AsArray();
+
+    /// <summary>The bridge's qsharp-lang and Node versions.</summary>
+    public JsonObject Version() => Send(new JsonObject { ["method"] = "version" }).AsObject();
+
+    /// <summary>Sends one request and returns its result; restarts a dead bridge and retries once.</summary>
+    public JsonNode Send(JsonObject request, TimeSpan? timeout = null)
+    {
+        var limit = timeout ?? options.RequestTimeout;
+        try
+        {
+            return SendOnce(request, limit);
+        }
+        catch (BridgeDiedException first)
+        {
+            Restarts++;
+            try
+            {
+                return SendOnce(request, limit);
+            }
+            catch (BridgeDiedException second)
+            {
+                throw new BridgeException(
+                    $"the Q# bridge died twice on one request ({first.Message}; then {second.Message}){StderrTail()}");
+            }
+        }
+    }
+
+    private JsonNode SendOnce(JsonObject request, TimeSpan timeout)
+    {
+        var process = EnsureStarted();
+        var id = ++_nextId;
+        request = (JsonObject)request.DeepClone();
+        request["id"] = id;
+        try
+        {
+            process.StandardInput.WriteLine(request.ToJsonString());
+            process.StandardInput.Flush();
+        }
+        catch (IOException e)
+        {
+            Stop();
+            throw new BridgeDiedException($"writing the request failed: {e.Message}");
+        }
+
+        var line = ReadLine(process, timeout, $"request {request["method"]}");
+        var reply = ParseReply(line);
+        if (reply["ok"]?.GetValue<bool>() == true)
+            return reply["result"] ?? throw new BridgeException($"the Q# bridge replied without a result: {line}");
+        throw ErrorFrom(reply["error"]);
+    }
+
+    private Process EnsureStarted()
+    {
+        if (_process is { HasExited: false }) return _process;
+        Stop();
+        var start = new ProcessStartInfo(options.Node)
+        {
+            WorkingDirectory = Path.GetDirectoryName(options.Script)!,
+            RedirectStandardInput = true,
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            UseShellExecute = false,
+            StandardOutputEncoding = Encoding.UTF8,
+            StandardErrorEncoding = Encoding.UTF8,
+        };
+        start.ArgumentList.Add(options.Script);
+        Process process;
+        try
+        {
+            process = Process.Start(start) ?? throw new BridgeException($"could not start '{options.Node}'");
+        }
+        catch (Win32Exception e)
+        {
+            throw new BridgeException(
+                $"could not start Node.js ('{options.Node}'): {e.Message}. Node.js 20 or later is required to run Q# (see README.md).", e);
+        }
+        lock (_stderr) _stderr.Clear();
+        process.ErrorDataReceived += (_, e) =>
+        {
+            if (e.Data is null) return;
+            lock (_stderr)
+            {
+                _stderr.AppendLine(e.Data);
+                if (_stderr.Length > 4 * StderrTailLength) _stderr.Remove(0, _stderr.Length - StderrTailLength);
+            }
+        };
+        process.BeginErrorReadLine();
+        _process = process;
+
+        var ready = ParseReply(ReadLine(process, options.StartTimeout, "start-up"));
+        if (ready["ready"]?.GetValue<bool>() != true)
+        {
+            Stop();
+            var message = ready["error"]?["message"]?.GetValue<string>() ?? ready.ToJsonString();
+            throw new QSharpException($"the Q# sources do not compile:{Environment.NewLine}{message}", "compile", null, null);
+        }
+        QSharpVersion = ready["qsharp"]?.GetValue<string>();
+        return process;
+    }
+
+    private string ReadLine(Process process, TimeSpan timeout, string what)
+    {
+        var read = process.StandardOutput.ReadLineAsync();
+        if (!read.Wait(timeout))
+        {
+            Stop();
+            throw new BridgeTimeoutException(
+                $"the Q# bridge did not answer {what} within {timeout.TotalSeconds:0.###} s; it was stopped and restarts on next use");
+        }
+        if (read.Result is { } line) return line;
+        if (process.WaitForExit(2000)) process.WaitForExit(); // also drains stderr
+        var code = process.HasExited ? process.ExitCode.ToString() : "unknown";
+        Stop();
+        throw new BridgeDiedException($"the bridge exited (code {code}) during {what}");
+    }
+
+    private static JsonObject ParseReply(string line)
+    {
+        try
+        {
+            return JsonNode.Parse(line) as JsonObject ?? throw new BridgeException($"the Q# bridge sent a non-object line: {line}");
+        }
+        catch (JsonException e)
+        {
+            throw new BridgeException($"the Q# bridge sent a line that is not JSON: {line}", e);
+        }
+    }
+
+    private static Exception ErrorFrom(JsonNode? error)
+    {
+        var kind = error?["kind"]?.GetValue<string>();
+        var message = error?["message"]?.GetValue<string>() ?? "(no message)";
+        return kind switch
+        {
+            "qsharp" => new QSharpException(
+                message, error?["code"]?.GetValue<string>(), error?["location"]?.GetValue<string>(), error?["stack"]?.GetValue<string>()),
+            "request" => new BridgeRequestException($"the Q# bridge rejected the request: {message}"),
+            _ => new BridgeException($"the Q# bridge failed: {message}"),
+        };
+    }
+
+    private string StderrTail()
+    {
+        lock (_stderr)
+        {
+            var text = _stderr.ToString().Trim();
+            if (text.Length == 0) return "";
+            if (text.Length > StderrTailLength) text = text[^StderrTailLength..];
+            return $"{Environment.NewLine}bridge stderr:{Environment.NewLine}{text}";
+        }
+    }
+
+    private void Stop()
+    {
+        if (_process is null) return;
+        try
+        {
+            if (!_process.HasExited) _process.Kill(entireProcessTree: true);
+            _process.WaitForExit(5000);
+        }
+        catch (InvalidOperationException)
+        {
+            // Already gone.
+        }
+        _process.Dispose();
+        _process = null;
+    }
+
+    public void Dispose() => Stop();
+
+    /// <summary>The process ended under a request: the one case that is retried after a restart.</summary>
+    private sealed class BridgeDiedException(string message) : Exception(message);
+}

@@ -1,0 +1,74 @@
+using System.Globalization;
+using System.Text;
+using System.Text.Json;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Engines;
+
+/// <summary>
+/// Runs Grover requests as Q# on the QDK full-state simulator: a batch is cut into chunks, each
+/// chunk is one call of the Q# operation <c>MeasureGroverBatch</c> on one bridge, and the chunks run
+/// on all workers at once. Registers are sized per request (see <see cref="SearchRegisters"/>).
+/// Measurement outcomes come from the simulator and cannot be seeded.
+/// </summary>
+public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall) : IGroverEngine
+{
+    /// <summary>Large enough to amortise the ~60 ms compile of every QDK call, small enough to spread over workers.</summary>
+    public const int DefaultMaxRequestsPerCall = 500;
+
+    public const string BatchOperation = "QuantumRayTracing.Search.MeasureGroverBatch";
+
+    public string Name => "fullstate";
+
+    public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
+    {
+        var measured = new int[requests.Count];
+        if (requests.Count == 0) return measured;
+        var chunkSize = Math.Min(maxRequestsPerCall, (requests.Count + pool.Workers - 1) / pool.Workers);
+        var chunks = Enumerable.Range(0, (requests.Count + chunkSize - 1) / chunkSize)
+            .Select(c => (Start: c * chunkSize, Length: Math.Min(chunkSize, requests.Count - c * chunkSize)))
+            .ToArray();
+        pool.ForEach(chunks, (chunk, bridge) =>
+        {
+            var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => requests[k]).ToArray();
+            var shots = bridge.Run(BatchExpression(slice));
+            var indices = JsonSerializer.Deserialize<int[]>(shots[0])
+                ?? throw new BridgeException($"{BatchOperation} returned no value");
+            if (indices.Length != slice.Length)
+                throw new BridgeException($"{BatchOperation} returned {indices.Length} indices for {slice.Length} requests");
+            for (var k = 0; k < slice.Length; k++)
+            {
+                if (indices[k] < 0 || indices[k] >= slice[k].Marked.Count)
+                    throw new BridgeException($"{BatchOperation} measured index {indices[k]} outside 0..{slice[k].Marked.Count - 1}");
+                measured[chunk.Start + k] = indices[k];
+            }
+        });
+        return measured;
+    }
+
+    /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>.</summary>
+    public static string BatchExpression(IReadOnlyList<GroverRequest> requests)
+    {
+        var text = new StringBuilder(BatchOperation).Append("([");
+        for (var k = 0; k < requests.Count; k++)
+        {
+            if (k > 0) text.Append(", ");
+            var request = requests[k];
+            text.Append('(').Append(request.Marked.Count.ToString(CultureInfo.InvariantCulture)).Append(", [");
+            var indices = request.Marked.Indices;
+            for (var i = 0; i < indices.Length; i++)
+            {
+                if (i > 0) text.Append(", ");
+                text.Append(indices[i].ToString(CultureInfo.InvariantCulture));
+            }
+            text.Append("], ").Append(request.Iterations.ToString(CultureInfo.InvariantCulture)).Append(')');
+        }
+        return text.Append("])").ToString();
+    }
+
+    public BridgePool Pool => pool;
+
+    /// <summary>Stops the engine's bridges.</summary>
+    public void Dispose() => pool.Dispose();
+}

@@ -1,0 +1,12 @@
+namespace QuantumRayTracing.Randomness;
+
+/// <summary>
+/// The fixed stream numbers forked from the root seed, so that each consumer's randomness is
+/// independent of the others and of scheduling order. Per-search streams start at <see cref="FirstSearch"/>.
+/// </summary>
+public static class RandomStreams
+{
+    public const ulong Engine = 1;
+    public const ulong Scenario = 2;
+    public const ulong FirstSearch = 1UL << 32;
+}

@@ -1,0 +1,72 @@
+using QuantumRayTracing.Randomness;
+
+namespace QuantumRayTracing.Search;
+
+/// <summary>
+/// QSearch (Algorithm 1 of the ray tracing paper, after Boyer, Brassard, Høyer and Tapp) for one
+/// search, as a state machine: <see cref="NextRequest"/> says which Grover run to do next and
+/// <see cref="Observe"/> takes its measured index. A driver advances many of these in lock step so
+/// that one engine call serves every active search (see <see cref="QSearchDriver"/>).
+/// </summary>
+/// <remarks>
+/// Steps: sample the uniform superposition (r = 0) and test the index classically; then for each
+/// bound M_l of the schedule draw r_l uniformly from 1..M_l, run Grover with r_l iterations, measure,
+/// test. Stop at the first marked index or when the schedule is exhausted (not found).
+/// </remarks>
+public sealed class QSearch
+{
+    private readonly QSearchSchedule _schedule;
+    private readonly SeededRandom _random;
+    private int _stage; // 0: the initial sample; l ≥ 1: the run bounded by M_l
+    private int _pendingIterations = -1;
+
+    public QSearch(MarkedSet marked, QSearchSchedule schedule, SeededRandom random)
+    {
+        ArgumentNullException.ThrowIfNull(marked);
+        ArgumentNullException.ThrowIfNull(schedule);
+        if (schedule.Count != marked.Count)
+            throw new ArgumentException($"schedule is for N = {schedule.Count}, search has N = {marked.Count}", nameof(schedule));
+        Marked = marked;
+        _schedule = schedule;
+        _random = random;
+    }
+
+    public MarkedSet Marked { get; }
+
+    public bool IsDone { get; private set; }
+
+    /// <summary>The marked index found, or null while running or when the search ended without one.</summary>
+    public int? Found { get; private set; }
+
+    /// <summary>The last measured index (Algorithm 1 returns it with found = false on a miss).</summary>
+    public int LastMeasured { get; private set; } = -1;
+
+    public SearchCost Cost { get; private set; }
+
+    public GroverRequest NextRequest()
+    {
+        if (IsDone) throw new InvalidOperationException("the search has ended");
+        if (_pendingIterations < 0)
+            _pendingIterations = _stage == 0 ? 0 : _random.NextInt(1, _schedule.Bounds[_stage - 1]);
+        return new GroverRequest(Marked, _pendingIterations);
+    }
+
+    public void Observe(int measured)
+    {
+        if (_pendingIterations < 0) throw new InvalidOperationException("no Grover run is pending");
+        if (measured < 0 || measured >= Marked.Count)
+            throw new ArgumentOutOfRangeException(nameof(measured), measured, $"measured index outside 0..{Marked.Count - 1}");
+        Cost += SearchCost.OfGroverRun(_pendingIterations) + SearchCost.OfClassicalTest;
+        _pendingIterations = -1;
+        LastMeasured = measured;
+        if (Marked.Contains(measured))
+        {
+            Found = measured;
+            IsDone = true;
+        }
+        else if (++_stage > _schedule.Bounds.Count)
+        {
+            IsDone = true;
+        }
+    }
+}

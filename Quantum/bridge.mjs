@@ -1,0 +1,180 @@
+// The Node bridge between the C# host and the modern QDK (npm package qsharp-lang).
+//
+//   node bridge.mjs --check   compile the Q# sources under src/ and print each diagnostic as
+//                             "file(line,col): error QS: message [code]" (exit 1 on any error)
+//   node bridge.mjs           compile once, print one "ready" line, then answer requests:
+//                             one JSON object per line on stdin, one JSON reply per line on stdout
+//
+// Requests carry an "id" that the reply echoes, and a "method":
+//   {"id":1,"method":"version"}                               -> {"id":1,"ok":true,"result":{"qsharp":"1.32.5-dev","node":"v20..."}}
+//   {"id":2,"method":"run","expr":"Ns.Op(1, [2])","shots":1}  -> {"id":2,"ok":true,"result":["<Q# value of shot 1>", ...]}
+//   {"id":3,"method":"estimate","expr":"Ns.Op(8)","params":[{}]} -> {"id":3,"ok":true,"result":[<estimator result per params item>]}
+// A failure replies {"id":N,"ok":false,"error":{"kind":"qsharp"|"request","message":"...","location":"file:line:col","stack":"..."}}.
+// Requests are answered one at a time, in order; simulation runs synchronously inside WebAssembly,
+// so the host enforces time limits by killing this process.
+
+import fs from "node:fs";
+import path from "node:path";
+import readline from "node:readline";
+import { fileURLToPath } from "node:url";
+import { getCompiler, loadWasmModule, QscEventTarget } from "qsharp-lang";
+
+const projectDir = path.dirname(fileURLToPath(import.meta.url));
+const sourceDir = path.join(projectDir, "src");
+const packageDir = path.join(projectDir, "node_modules", "qsharp-lang");
+
+/** Every .qs file under src/, as [path relative to the project, text], in a stable order. */
+function readSources() {
+  const found = [];
+  const walk = (dir) => {
+    for (const entry of fs.readdirSync(dir, { withFileTypes: true }).sort((a, b) => a.name.localeCompare(b.name))) {
+      const full = path.join(dir, entry.name);
+      if (entry.isDirectory()) walk(full);
+      else if (entry.name.endsWith(".qs")) found.push([path.relative(projectDir, full).split(path.sep).join("/"), fs.readFileSync(full, "utf8")]);
+    }
+  };
+  walk(sourceDir);
+  return found;
+}
+
+async function loadCompiler() {
+  const wasm = fs.readFileSync(path.join(packageDir, "lib", "web", "qsc_wasm_bg.wasm"));
+  await loadWasmModule(wasm.buffer.slice(wasm.byteOffset, wasm.byteOffset + wasm.byteLength));
+  return getCompiler();
+}
+
+/**
+ * Checks all sources as one text (namespaces are explicit, so concatenation is the same program)
+ * and maps each diagnostic's line back to the file it came from.
+ */
+async function checkSources(compiler, sources) {
+  const starts = [];
+  let line = 0;
+  for (const [name, text] of sources) {
+    starts.push({ name, line });
+    line += text.split("\n").length;
+  }
+  const diagnostics = await compiler.checkCode(sources.map(([, text]) => text).join("\n"));
+  return diagnostics.map((d) => {
+    const start = d.range.start;
+    const file = starts.filter((s) => s.line <= start.line).at(-1);
+    return {
+      file: path.join(projectDir, file.name),
+      line: start.line - file.line + 1,
+      column: start.character + 1,
+      severity: d.severity,
+      code: d.code ?? "",
+      message: d.message,
+    };
+  });
+}
+
+function formatDiagnostic(d) {
+  const severity = d.severity === "error" ? "error" : "warning";
+  return `${d.file}(${d.line},${d.column}): ${severity} QS: ${d.message} [${d.code}]`;
+}
+
+/** Turns the error value of a failed shot into the bridge's error object. */
+function qsharpError(value) {
+  if (typeof value === "string") return { kind: "qsharp", message: value };
+  const first = value?.errors?.[0];
+  const range = first?.diagnostic?.range?.start;
+  return {
+    kind: "qsharp",
+    code: value?.code,
+    message: first?.diagnostic?.message ?? value?.message ?? String(value),
+    location: first && range ? `${first.document}:${range.line + 1}:${range.character + 1}` : undefined,
+    stack: first?.stack ?? undefined,
+  };
+}
+
+class RequestError extends Error {}
+
+function requireString(request, field) {
+  if (typeof request[field] !== "string" || request[field].length === 0) {
+    throw new RequestError(`request field "${field}" must be a non-empty string`);
+  }
+  return request[field];
+}
+
+async function answer(compiler, program, versions, request) {
+  switch (request.method) {
+    case "version":
+      return versions;
+    case "run": {
+      const expr = requireString(request, "expr");
+      const shots = request.shots ?? 1;
+      if (!Number.isInteger(shots) || shots < 1) throw new RequestError(`request field "shots" must be a positive integer`);
+      const events = new QscEventTarget(true);
+      try {
+        await compiler.run(program, expr, shots, events);
+      } catch {
+        // The failure is also recorded as a shot result, with its location; reported below.
+      }
+      const results = events.getResults();
+      const failed = results.find((r) => !r.success);
+      if (failed) return { error: qsharpError(failed.result) };
+      if (results.length !== shots) return { error: { kind: "qsharp", message: `expected ${shots} shot results, got ${results.length}` } };
+      return results.map((r) => r.result);
+    }
+    case "estimate": {
+      const expr = requireString(request, "expr");
+      const params = request.params ?? [{}];
+      if (!Array.isArray(params)) throw new RequestError(`request field "params" must be an array of estimator parameter objects`);
+      try {
+        return JSON.parse(await compiler.getEstimates(program, expr, JSON.stringify(params)));
+      } catch (e) {
+        return { error: qsharpError(e?.message ?? e) };
+      }
+    }
+    default:
+      throw new RequestError(`unknown method ${JSON.stringify(request.method)}; expected version, run or estimate`);
+  }
+}
+
+async function serve(compiler, sources) {
+  const program = { sources, languageFeatures: [], profile: "unrestricted" };
+  const versions = {
+    qsharp: JSON.parse(fs.readFileSync(path.join(packageDir, "package.json"), "utf8")).version,
+    node: process.version,
+  };
+  const write = (reply) => process.stdout.write(JSON.stringify(reply) + "\n");
+  const diagnostics = (await checkSources(compiler, sources)).filter((d) => d.severity === "error");
+  if (diagnostics.length > 0) {
+    write({ ready: false, error: { kind: "compile", message: diagnostics.map(formatDiagnostic).join("\n") } });
+    process.exit(1);
+  }
+  write({ ready: true, ...versions });
+
+  const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
+  for await (const line of lines) {
+    if (line.trim() === "") continue;
+    let request;
+    try {
+      request = JSON.parse(line);
+    } catch (e) {
+      write({ id: null, ok: false, error: { kind: "request", message: `request is not JSON: ${e.message}` } });
+      continue;
+    }
+    const id = request?.id ?? null;
+    try {
+      const result = await answer(compiler, program, versions, request ?? {});
+      write(result?.error ? { id, ok: false, error: result.error } : { id, ok: true, result });
+    } catch (e) {
+      const kind = e instanceof RequestError ? "request" : "bridge";
+      write({ id, ok: false, error: { kind, message: e?.message ?? String(e), stack: e?.stack } });
+    }
+  }
+}
+
+const compiler = await loadCompiler();
+const sources = readSources();
+if (process.argv.includes("--check")) {
+  const diagnostics = await checkSources(compiler, sources);
+  for (const d of diagnostics) console.log(formatDiagnostic(d));
+  const errors = diagnostics.filter((d) => d.severity === "error").length;
+  console.log(`Q#: ${sources.length} files, ${errors} errors, ${diagnostics.length - errors} warnings`);
+  process.exit(errors > 0 ? 1 : 0);
+} else {
+  await serve(compiler, sources);
+}

@@ -1,0 +1,66 @@
+namespace QuantumRayTracing.Search {
+    import Std.Math.BitSizeI;
+    import Std.Measurement.MeasureInteger;
+
+    /// # Summary
+    /// Prepares the uniform superposition over `count` indices, applies `iterations` Grover
+    /// iterations with the oracle marking `marked`, and measures the index register.
+    ///
+    /// # Input
+    /// ## count
+    /// Number of indices searched (N ≥ 1).
+    /// ## marked
+    /// Distinct marked indices, each in 0..count-1.
+    /// ## iterations
+    /// Number of Grover iterations r ≥ 0; r = 0 samples the uniform superposition.
+    ///
+    /// # Output
+    /// The measured index, always below `count`.
+    ///
+    /// # Remarks
+    /// Allocates ceil(log2 count) index qubits and one flag qubit; the standard library's
+    /// multi-controlled Z borrows its own auxiliary qubits for the duration of each gate.
+    /// When more than half the indices are marked the oracle marks the complement instead:
+    /// that oracle is the original times −1, a global phase this uncontrolled search cannot see.
+    operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
+        if count < 1 {
+            fail $"count must be at least 1, got {count}";
+        }
+        if iterations < 0 {
+            fail $"iterations must be non-negative, got {iterations}";
+        }
+        for m in marked {
+            if m < 0 or m >= count {
+                fail $"marked index {m} is outside 0..{count - 1}";
+            }
+        }
+        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
+        use index = Qubit[BitSizeI(count - 1)];
+        use flag = Qubit();
+        within {
+            X(flag);
+        } apply {
+            PrepareUniformSuperposition(count, index);
+            for _ in 1..iterations {
+                ApplyGroverIteration(count, oracleSet, index, flag);
+            }
+        }
+        MeasureInteger(index)
+    }
+
+    /// # Summary
+    /// Returns the indices in 0..count-1 that are not in `indices`, in ascending order.
+    function ComplementIndices(count : Int, indices : Int[]) : Int[] {
+        mutable isListed = [false, size = count];
+        for i in indices {
+            set isListed w/= i <- true;
+        }
+        mutable complement = [];
+        for i in 0..count - 1 {
+            if not isListed[i] {
+                set complement += [i];
+            }
+        }
+        complement
+    }
+}
