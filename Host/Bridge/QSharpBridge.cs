@@ -22,8 +22,10 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
 
     public QSharpBridge() : this(new BridgeOptions()) { }
 
-    /// <summary>How many times a dead bridge was started again.</summary>
-    public int Restarts { get; private set; }
+    private int _starts;
+
+    /// <summary>How many times the bridge was started again after its process ended (crash, kill, time-out).</summary>
+    public int Restarts => Math.Max(0, _starts - 1);
 
     /// <summary>Process id of the running bridge, or null.</summary>
     public int? ProcessId => _process is { HasExited: false } p ? p.Id : null;
@@ -55,7 +57,6 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
         }
         catch (BridgeDiedException first)
         {
-            Restarts++;
             try
             {
                 return SendOnce(request, limit);
@@ -117,6 +118,7 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
             throw new BridgeException(
                 $"could not start Node.js ('{options.Node}'): {e.Message}. Node.js 20 or later is required to run Q# (see README.md).", e);
         }
+        _starts++;
         lock (_stderr) _stderr.Clear();
         process.ErrorDataReceived += (_, e) =>
         {

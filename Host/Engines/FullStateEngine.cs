@@ -55,8 +55,10 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
         {
             if (k > 0) text.Append(", ");
             var request = requests[k];
-            text.Append('(').Append(request.Marked.Count.ToString(CultureInfo.InvariantCulture)).Append(", [");
+            text.Append('(').Append(request.Marked.Count.ToString(CultureInfo.InvariantCulture)).Append(", ");
             var indices = request.Marked.Indices;
+            // An empty literal [] has no element type for Q# to infer from.
+            text.Append(indices.IsEmpty ? "[0, size = 0" : "[");
             for (var i = 0; i < indices.Length; i++)
             {
                 if (i > 0) text.Append(", ");

@@ -1,0 +1,19 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+
+namespace QuantumRayTracing.Tests.Engines;
+
+/// <summary>One full-state engine (two bridges) shared by every test that runs Q#, started once.</summary>
+public sealed class FullStateFixture : IDisposable
+{
+    public FullStateEngine Engine { get; } = new(new BridgePool(2));
+
+    public void Dispose() => Engine.Dispose();
+}
+
+/// <summary>Tests that start Node bridges run one class at a time: the machine has two cores.</summary>
+[CollectionDefinition(Name)]
+public sealed class QSharpCollection : ICollectionFixture<FullStateFixture>
+{
+    public const string Name = "Q#";
+}
