@@ -8,8 +8,11 @@ namespace QuantumRayTracing.Tests.Statistics;
 /// </summary>
 public static class StatisticalBounds
 {
-    /// <summary>False-failure probability of every statistical test in this suite.</summary>
-    public const double FalseFailure = 1e-7;
+    /// <summary>
+    /// False-failure probability of one statistical check. No test makes more than 20 checks, so each
+    /// test's false-failure probability is below 20 · 1e-8 = 2e-7.
+    /// </summary>
+    public const double FalseFailure = 1e-8;
 
     /// <summary>
     /// The smallest interval [lo, hi] of Binomial(n, p) counts whose two tails outside it each hold at

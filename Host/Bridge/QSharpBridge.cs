@@ -140,6 +140,13 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
             throw new QSharpException($"the Q# sources do not compile:{Environment.NewLine}{message}", "compile", null, null);
         }
         QSharpVersion = ready["qsharp"]?.GetValue<string>();
+        var pinned = QuantumProject.PinnedQSharpVersion(options.Script);
+        if (pinned is not null && QSharpVersion != pinned)
+        {
+            Stop();
+            throw new BridgeException(
+                $"the Q# bridge runs qsharp-lang {QSharpVersion}, but Quantum/package.json pins {pinned}; run 'dotnet build' to reinstall the Node packages");
+        }
         return process;
     }
 

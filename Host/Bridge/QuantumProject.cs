@@ -1,4 +1,5 @@
 using System.Reflection;
+using System.Text.Json.Nodes;
 
 namespace QuantumRayTracing.Bridge;
 
@@ -19,4 +20,12 @@ public static class QuantumProject
     }
 
     public static string BridgeScript => Path.Combine(Directory, "bridge.mjs");
+
+    /// <summary>The qsharp-lang version package.json beside <paramref name="script"/> pins, or null when there is none.</summary>
+    public static string? PinnedQSharpVersion(string script)
+    {
+        var manifest = Path.Combine(Path.GetDirectoryName(script)!, "package.json");
+        if (!File.Exists(manifest)) return null;
+        return JsonNode.Parse(File.ReadAllText(manifest))?["dependencies"]?["qsharp-lang"]?.GetValue<string>();
+    }
 }
