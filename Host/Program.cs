@@ -5,6 +5,7 @@ using QuantumRayTracing.Output;
 
 var root = new RootCommand("QuantumRayTracing: hybrid quantum-classical ray tracing on the Q# full-state simulator.");
 root.Subcommands.Add(new SearchCommand());
+root.Subcommands.Add(new ScenesCommand());
 root.Subcommands.Add(new BenchCommand());
 
 var parse = root.Parse(args);
@@ -14,7 +15,7 @@ try
 {
     return parse.Invoke(new InvocationConfiguration { EnableDefaultExceptionHandler = false });
 }
-catch (UserError e)
+catch (Exception e) when (e is UserError or QuantumRayTracing.Scenes.SceneError)
 {
     Console.Error.WriteLine($"error: {e.Message}");
     return 2;

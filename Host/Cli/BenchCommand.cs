@@ -76,7 +76,7 @@ public sealed class BenchCommand : Command
         private int Execute(ParseResult parse)
         {
             var output = parse.GetValue(_output);
-            var report = new GeneratedReport(output?.FullName, "qrt bench grover");
+            var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker("qrt bench grover"));
             report.EnsureWritable();
 
             var random = new SeededRandom(parse.GetValue(_seed));

@@ -1,0 +1,16 @@
+namespace QuantumRayTracing.Tests;
+
+/// <summary>Paths inside the repository, found by walking up from the test binaries to the solution file.</summary>
+public static class RepositoryPaths
+{
+    public static string Root { get; } = FindRoot();
+
+    public static string Scenes => Path.Combine(Root, "Scenes");
+
+    private static string FindRoot()
+    {
+        for (var directory = new DirectoryInfo(AppContext.BaseDirectory); directory is not null; directory = directory.Parent)
+            if (File.Exists(Path.Combine(directory.FullName, "QuantumRayTracing.sln"))) return directory.FullName;
+        throw new InvalidOperationException("QuantumRayTracing.sln not found above " + AppContext.BaseDirectory);
+    }
+}

@@ -1,0 +1,69 @@
+using System.Globalization;
+using System.Text;
+
+namespace QuantumRayTracing.Scenes.Generation;
+
+/// <summary>
+/// Collects materials, lights and rectangles in order and writes them as a scene file in the
+/// documented format, one rectangle per line so the files stay readable and diffable.
+/// </summary>
+public sealed class SceneBuilder(string name, int integerBits)
+{
+    private readonly List<(string Name, double[] Diffuse, double Mirror)> _materials = [];
+    private readonly List<(double[] Position, double[] Intensity)> _lights = [];
+    private readonly List<(double[] Min, double[] Max, string Material)> _rectangles = [];
+    private (double[] Position, double[] LookAt, double Fov) _camera = ([0, 0, -1], [0, 0, 0], 40);
+
+    public int Count => _rectangles.Count;
+
+    public SceneBuilder Material(string material, double r, double g, double b, double mirror = 0)
+    {
+        _materials.Add((material, [r, g, b], mirror));
+        return this;
+    }
+
+    public SceneBuilder Light(double x, double y, double z, double intensity)
+    {
+        _lights.Add(([x, y, z], [intensity, intensity, intensity]));
+        return this;
+    }
+
+    public SceneBuilder Camera(double[] position, double[] lookAt, double verticalFov)
+    {
+        _camera = (position, lookAt, verticalFov);
+        return this;
+    }
+
+    /// <summary>A rectangle from corner to corner; exactly one axis must have equal coordinates.</summary>
+    public SceneBuilder Rectangle(double[] min, double[] max, string material)
+    {
+        _rectangles.Add((min, max, material));
+        return this;
+    }
+
+    /// <summary>The scene file's text, without the generator's marker line.</summary>
+    public string ToJson()
+    {
+        var text = new StringBuilder();
+        text.AppendLine("{");
+        text.AppendLine($"  \"name\": \"{name}\",");
+        text.AppendLine("  \"image\": { \"width\": 128, \"height\": 128 },");
+        text.AppendLine($"  \"grid\": {{ \"integerBits\": {integerBits}, \"fractionBits\": 0 }},");
+        text.AppendLine($"  \"camera\": {{ \"position\": {V(_camera.Position)}, \"lookAt\": {V(_camera.LookAt)}, \"up\": [0, 1, 0], \"verticalFov\": {N(_camera.Fov)} }},");
+        text.AppendLine("  \"ambient\": 0.1,");
+        text.AppendLine("  \"materials\": {");
+        text.AppendJoin(",\n", _materials.Select(m => $"    \"{m.Name}\": {{ \"diffuse\": {V(m.Diffuse)}, \"mirror\": {N(m.Mirror)} }}")).AppendLine();
+        text.AppendLine("  },");
+        text.AppendLine("  \"lights\": [");
+        text.AppendJoin(",\n", _lights.Select(l => $"    {{ \"position\": {V(l.Position)}, \"intensity\": {V(l.Intensity)} }}")).AppendLine();
+        text.AppendLine("  ],");
+        text.AppendLine("  \"rectangles\": [");
+        text.AppendJoin(",\n", _rectangles.Select(r => $"    {{ \"min\": {V(r.Min)}, \"max\": {V(r.Max)}, \"material\": \"{r.Material}\" }}")).AppendLine();
+        text.AppendLine("  ]");
+        text.AppendLine("}");
+        return text.ToString();
+    }
+
+    private static string N(double v) => v.ToString(CultureInfo.InvariantCulture);
+    private static string V(double[] v) => $"[{string.Join(", ", v.Select(N))}]";
+}
