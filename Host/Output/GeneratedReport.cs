@@ -31,8 +31,6 @@ public sealed class GeneratedReport(string? path, string marker)
     {
         if (path is null) return;
         EnsureWritable();
-        var temporary = path + ".tmp";
-        File.WriteAllText(temporary, Marker + Environment.NewLine + body, new UTF8Encoding(false));
-        File.Move(temporary, path, overwrite: true);
+        AtomicFile.WriteAllBytes(path, new UTF8Encoding(false).GetBytes(Marker + Environment.NewLine + body));
     }
 }

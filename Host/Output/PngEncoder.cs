@@ -42,19 +42,7 @@ public static class PngEncoder
     public static void Write(RgbImage image, string path)
     {
         ArgumentNullException.ThrowIfNull(image);
-        ArgumentException.ThrowIfNullOrEmpty(path);
-        var bytes = Encode(image);
-        var temporary = path + ".tmp";
-        try
-        {
-            File.WriteAllBytes(temporary, bytes);
-            File.Move(temporary, path, overwrite: true);
-        }
-        catch
-        {
-            DeleteQuietly(temporary);
-            throw;
-        }
+        AtomicFile.WriteAllBytes(path, Encode(image));
     }
 
     private static byte[] Header(RgbImage image)
@@ -148,13 +136,5 @@ public static class PngEncoder
             table[n] = c;
         }
         return table;
-    }
-
-    private static void DeleteQuietly(string path)
-    {
-        // Cleanup after a failure: the original exception is the one worth reporting, not a second one from here.
-        try { File.Delete(path); }
-        catch (IOException) { }
-        catch (UnauthorizedAccessException) { }
     }
 }
