@@ -99,27 +99,29 @@ public sealed class SearchCommand : Command
         int rounds;
         using (var engine = _engine.Create(parse))
         {
-            rounds = AnsiConsole.Progress().AutoClear(true).Start(progress =>
-            {
-                var task = progress.AddTask($"{engine.Name}: searching", maxValue: searches.Length);
-                return QSearchDriver.Run(searches, engine, (_, active) => task.Value = searches.Length - active);
-            });
+            rounds = AnsiConsole.Profile.Capabilities.Interactive
+                ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
+                {
+                    var task = progress.AddTask($"{engine.Name}: searching", maxValue: searches.Length);
+                    return QSearchDriver.Run(searches, engine, (_, active) => task.Value = searches.Length - active);
+                })
+                : QSearchDriver.Run(searches, engine);
         }
         clock.Stop();
 
         var total = searches.Aggregate(default(SearchCost), (sum, s) => sum + s.Cost);
         var found = searches.Count(s => s.Found is not null);
-        var table = new Table().AddColumns("per search (mean)", "value");
+        var table = new Table().AddColumns("measure", "value");
         table.AddRow("searches", searches.Length.ToString());
         table.AddRow("found / not found", $"{found} / {searches.Length - found}");
-        table.AddRow("#Eval, conservative", Per(total.QueriesConservative, searches.Length));
-        table.AddRow("#Eval, paper", Per(total.QueriesPaper, searches.Length));
-        table.AddRow("#C_Int", Per(total.ClassicalTests, searches.Length));
-        table.AddRow("Grover runs", Per(total.GroverRuns, searches.Length));
+        table.AddRow("#Eval per search, conservative", Per(total.QueriesConservative, searches.Length));
+        table.AddRow("#Eval per search, paper", Per(total.QueriesPaper, searches.Length));
+        table.AddRow("#C_Int per search", Per(total.ClassicalTests, searches.Length));
+        table.AddRow("Grover runs per search", Per(total.GroverRuns, searches.Length));
         table.AddRow("engine calls (rounds)", rounds.ToString());
         table.AddRow("wall time", $"{clock.Elapsed.TotalSeconds:0.000} s");
         AnsiConsole.Write(table);
-        AnsiConsole.MarkupLine("[grey]Per-search means. #Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (DESIGN.md §5).[/]");
+        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (DESIGN.md §5).[/]");
         return 0;
     }
 
