@@ -26,9 +26,9 @@ public class SeededRandomTests
     {
         var used = new SeededRandom(7);
         for (var k = 0; k < 10; k++) used.NextUInt64();
-        // Forks are derived from the state, so draw-order matters only within a stream:
-        // forking before any draw is what the host does, and must be reproducible.
-        Assert.Equal(new SeededRandom(7).Fork(5).NextUInt64(), new SeededRandom(7).Fork(5).NextUInt64());
+        // A stream depends on the seed and its number, never on how much the parent has drawn.
+        Assert.Equal(new SeededRandom(7).Fork(5).NextUInt64(), used.Fork(5).NextUInt64());
+        Assert.NotEqual(new SeededRandom(8).Fork(5).NextUInt64(), used.Fork(5).NextUInt64());
     }
 
     [Fact]

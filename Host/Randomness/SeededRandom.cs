@@ -8,10 +8,12 @@ namespace QuantumRayTracing.Randomness;
 /// </summary>
 public sealed class SeededRandom
 {
+    private readonly ulong _seed;
     private ulong _s0, _s1, _s2, _s3;
 
     public SeededRandom(ulong seed)
     {
+        _seed = seed;
         var mixer = seed;
         _s0 = SplitMix64(ref mixer);
         _s1 = SplitMix64(ref mixer);
@@ -19,11 +21,15 @@ public sealed class SeededRandom
         _s3 = SplitMix64(ref mixer);
     }
 
-    /// <summary>An independent generator for stream <paramref name="stream"/>, derived from this one's seed state, not its position.</summary>
+    /// <summary>
+    /// An independent generator for stream <paramref name="stream"/>, derived from this generator's seed
+    /// only: forking before or after drawing numbers gives the same stream.
+    /// </summary>
     public SeededRandom Fork(ulong stream)
     {
-        var mixer = _s0 ^ (stream * 0x9E3779B97F4A7C15UL) ^ Rotl(_s2, 17);
-        return new SeededRandom(SplitMix64(ref mixer) ^ _s1);
+        var mixer = _seed ^ Rotl(stream * 0xD1B54A32D192ED03UL, 29);
+        var first = SplitMix64(ref mixer);
+        return new SeededRandom(first ^ SplitMix64(ref mixer) * 0x9E3779B97F4A7C15UL);
     }
 
     public ulong NextUInt64()
