@@ -66,10 +66,7 @@ public sealed class BenchCommand : Command
             {
                 if ((r.GetValueOrDefault<int[]>() ?? []).Any(b => b < 1)) r.AddError("--batches: each batch size must be at least 1");
             });
-            _workers.Validators.Add(r =>
-            {
-                if (r.GetValueOrDefault<int>() < 1) r.AddError("--workers must be at least 1");
-            });
+            _workers.AtLeast(1);
             SetAction(Execute);
         }
 

@@ -27,13 +27,7 @@ public sealed class EngineOptions
         DefaultValueFactory = _ => BridgePool.DefaultWorkers,
     };
 
-    public EngineOptions()
-    {
-        Workers.Validators.Add(result =>
-        {
-            if (result.GetValueOrDefault<int>() < 1) result.AddError("--workers must be at least 1");
-        });
-    }
+    public EngineOptions() => Workers.AtLeast(1);
 
     public void AddTo(Command command)
     {

@@ -2,6 +2,7 @@ using System.CommandLine;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
 
@@ -40,9 +41,10 @@ public sealed class ScenesCommand : Command
                 foreach (var (path, _) in files) new GeneratedReport(path, marker).EnsureWritable();
                 foreach (var (path, scene) in files)
                 {
+                    var report = new GeneratedReport(path, marker);
                     var text = scene.ToJson();
-                    SceneLoader.Parse(marker + "\n" + text, path); // a generator bug must not reach disk
-                    new GeneratedReport(path, marker).Write(text);
+                    SceneLoader.Parse(report.Compose(text), path); // a generator bug must not reach disk
+                    report.Write(text);
                     Console.WriteLine($"wrote {Path.GetRelativePath(Environment.CurrentDirectory, path)} ({scene.Count} primitives)");
                 }
                 return 0;
@@ -69,8 +71,8 @@ public sealed class ScenesCommand : Command
                     try
                     {
                         var scene = SceneLoader.Load(file.FullName);
-                        var register = 32 - int.LeadingZeroCount(scene.Rectangles.Count - 1);
-                        Console.WriteLine($"{file}: ok: '{scene.Name}', {scene.Rectangles.Count} rectangles ({register} index qubits), {scene.Lights.Count} lights, {scene.Width}x{scene.Height}, {scene.Grid}");
+                        var index = SearchRegisters.For(scene.Rectangles.Count).IndexQubits;
+                        Console.WriteLine($"{file}: ok: '{scene.Name}', {scene.Rectangles.Count} rectangles ({index} index qubits), {scene.Lights.Count} lights, {scene.Width}x{scene.Height}, {scene.Grid}");
                     }
                     catch (SceneError e)
                     {

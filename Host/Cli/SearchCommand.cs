@@ -54,15 +54,8 @@ public sealed class SearchCommand : Command
         Options.Add(_growth);
         Options.Add(_rule);
         _engine.AddTo(this);
-        _count.Validators.Add(r =>
-        {
-            var n = r.GetValueOrDefault<int>();
-            if (n is < 1 or > 4096) r.AddError($"--count must be between 1 and 4096, got {n}");
-        });
-        _searches.Validators.Add(r =>
-        {
-            if (r.GetValueOrDefault<int>() < 1) r.AddError("--searches must be at least 1");
-        });
+        _count.Between(1, 4096);
+        _searches.AtLeast(1);
         _growth.Validators.Add(r =>
         {
             var c = r.GetValueOrDefault<double>();
@@ -71,10 +64,12 @@ public sealed class SearchCommand : Command
         Validators.Add(r =>
         {
             var n = r.GetValue(_count);
-            foreach (var m in r.GetValue(_marked) ?? [])
-                if (m < 0 || m >= n) { r.AddError($"--marked: index {m} is outside 0..{n - 1}"); return; }
             var marked = r.GetValue(_marked) ?? [];
-            if (marked.Distinct().Count() != marked.Length) r.AddError("--marked: an index is listed twice");
+            var outside = marked.Where(m => m < 0 || m >= n).ToArray();
+            if (outside.Length > 0)
+                r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
+            else if (marked.Distinct().Count() != marked.Length)
+                r.AddError("--marked: an index is listed twice");
         });
         SetAction(Execute);
     }
