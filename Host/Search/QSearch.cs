@@ -1,3 +1,4 @@
+using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Randomness;
 
 namespace QuantumRayTracing.Search;
@@ -20,7 +21,9 @@ public sealed class QSearch
     private int _stage; // 0: the initial sample; l ≥ 1: the run bounded by M_l
     private int _pendingIterations = -1;
 
-    public QSearch(MarkedSet marked, QSearchSchedule schedule, SeededRandom random)
+    private readonly OracleInput? _oracle;
+
+    public QSearch(MarkedSet marked, QSearchSchedule schedule, SeededRandom random, OracleInput? oracle = null)
     {
         ArgumentNullException.ThrowIfNull(marked);
         ArgumentNullException.ThrowIfNull(schedule);
@@ -29,6 +32,7 @@ public sealed class QSearch
         Marked = marked;
         _schedule = schedule;
         _random = random;
+        _oracle = oracle;
     }
 
     public MarkedSet Marked { get; }
@@ -48,7 +52,7 @@ public sealed class QSearch
         if (IsDone) throw new InvalidOperationException("the search has ended");
         if (_pendingIterations < 0)
             _pendingIterations = _stage == 0 ? 0 : _random.NextInt(1, _schedule.Bounds[_stage - 1]);
-        return new GroverRequest(Marked, _pendingIterations);
+        return new GroverRequest(Marked, _pendingIterations, _oracle);
     }
 
     public void Observe(int measured)

@@ -1,0 +1,10 @@
+namespace QuantumRayTracing.Intersection;
+
+/// <summary>
+/// Everything the gate-level intersection oracle loads for one search: the primitives' bounds (from
+/// the table's geometry), the ray's table and the window of accepted (depth, id).
+/// </summary>
+public sealed record OracleInput(RayTable Table, HitWindow Window)
+{
+    public SceneGeometry Geometry => Table.Geometry;
+}

@@ -1,0 +1,128 @@
+using QuantumRayTracing.Rays;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Intersection;
+
+/// <summary>
+/// One ray's lookup table (paper sec. 4.1): for every primitive, eval-rpc's ray/plane point quantised
+/// to the scene's fixed-point grid and its depth along the ray's principal axis; and verify-rpc, the
+/// integer test the oracle computes with comparators. Building it costs N row evaluations, counted as
+/// table rows, never as intersection tests (DESIGN.md §5).
+/// </summary>
+/// <remarks>
+/// A row is invalid (no point to load, the primitive cannot be hit) when the ray is parallel to the
+/// primitive's plane, the plane is not ahead of the origin, the primitive is the one the ray leaves
+/// from, or the point falls outside the grid. Coordinates are quantised by flooring (the paper's cast
+/// to integers) after adding <see cref="SnapTolerance"/>, so a point a rounding error below a grid line
+/// lands on it; the flat axis takes the plane's exact value.
+/// </remarks>
+public sealed class RayTable
+{
+    public const double SnapTolerance = 1e-9;
+
+    private readonly bool[] _valid;
+    private readonly int[] _points;
+    private readonly int[] _depths;
+    private readonly double[] _distances;
+
+    private RayTable(SceneGeometry geometry, Ray ray)
+    {
+        Geometry = geometry;
+        Ray = ray;
+        var n = geometry.Count;
+        _valid = new bool[n];
+        _points = new int[n * 3];
+        _depths = new int[n];
+        _distances = new double[n];
+        var limit = 1 << geometry.Grid.Bits;
+        var scale = geometry.Scale;
+        var principal = ray.PrincipalAxis;
+        var maxDepth = 0;
+        for (var p = 0; p < n; p++)
+        {
+            var flat = geometry.Rectangles[p].FlatAxis;
+            var along = ray.Direction[flat];
+            if (p == ray.ExcludedPrimitive || Math.Abs(along) < 1e-12) continue;
+            var t = (geometry.Rectangles[p].PlaneOffset - ray.Origin[flat]) / along;
+            if (!(t > SnapTolerance)) continue;
+            var point = ray.At(t);
+            var inGrid = true;
+            for (var axis = 0; axis < 3; axis++)
+            {
+                var q = axis == flat ? geometry.Min(p, axis) : Quantise(point[axis], scale);
+                inGrid &= q >= 0 && q < limit;
+                _points[p * 3 + axis] = q;
+            }
+            var depth = Quantise(t * Math.Abs(ray.Direction[principal]), scale);
+            if (!inGrid || depth < 0) continue;
+            _valid[p] = true;
+            _depths[p] = depth;
+            _distances[p] = t;
+            maxDepth = Math.Max(maxDepth, depth);
+        }
+        DepthBits = Math.Max(1, 32 - int.LeadingZeroCount(maxDepth));
+    }
+
+    public static RayTable Build(SceneGeometry geometry, Ray ray)
+    {
+        ArgumentNullException.ThrowIfNull(geometry);
+        ArgumentNullException.ThrowIfNull(ray);
+        return new RayTable(geometry, ray);
+    }
+
+    public SceneGeometry Geometry { get; }
+
+    public Ray Ray { get; }
+
+    /// <summary>N, one row per primitive.</summary>
+    public int Count => _valid.Length;
+
+    /// <summary>Qubits of a coordinate register: the grid's bits.</summary>
+    public int CoordinateBits => Geometry.Grid.Bits;
+
+    /// <summary>Qubits of the depth register: enough for the largest depth in this table, at least 1.</summary>
+    public int DepthBits { get; }
+
+    /// <summary>Whether row <paramref name="p"/> holds a ray/plane point at all.</summary>
+    public bool IsValid(int p) => _valid[p];
+
+    /// <summary>The quantised ray/plane point's grid integer along <paramref name="axis"/> (0 for an invalid row).</summary>
+    public int Point(int p, int axis) => _valid[p] ? _points[p * 3 + axis] : 0;
+
+    /// <summary>Quantised depth along the ray's principal axis (0 for an invalid row).</summary>
+    public int Depth(int p) => _depths[p];
+
+    /// <summary>The ray parameter t of the unquantised ray/plane point, for shading.</summary>
+    public double Distance(int p) => _distances[p];
+
+    /// <summary>verify-rpc: the point lies in the rectangle on every axis and its (depth, id) in the window.</summary>
+    public bool Verify(int p, HitWindow window)
+    {
+        if (!_valid[p]) return false;
+        for (var axis = 0; axis < 3; axis++)
+        {
+            var q = _points[p * 3 + axis];
+            if (q < Geometry.Min(p, axis) || q > Geometry.Max(p, axis)) return false;
+        }
+        return window.Accepts(_depths[p], p);
+    }
+
+    /// <summary>The oracle's marked set for <paramref name="window"/>: every row verify-rpc accepts.</summary>
+    public MarkedSet Marked(HitWindow window)
+    {
+        var marked = new List<int>();
+        for (var p = 0; p < Count; p++)
+            if (Verify(p, window)) marked.Add(p);
+        return new MarkedSet(Count, marked);
+    }
+
+    /// <summary>The window of this ray's own depth range.</summary>
+    public HitWindow FullRange => HitWindow.Range(Ray.Near, Ray.Far, Count);
+
+    /// <summary>The grid integer of a world value: floor(value · scale + tolerance), saturated to the int range.</summary>
+    public static int Quantise(double value, double scale)
+    {
+        var scaled = Math.Floor(value * scale + SnapTolerance);
+        return scaled >= int.MaxValue ? int.MaxValue : scaled <= int.MinValue ? int.MinValue : (int)scaled;
+    }
+}

@@ -1,0 +1,52 @@
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Intersection;
+
+/// <summary>
+/// The scene's primitives as the oracle sees them: each rectangle's bounds as fixed-point grid
+/// integers (value · 2^FractionBits), its flat axis and plane. Built once per scene.
+/// </summary>
+public sealed class SceneGeometry
+{
+    private readonly int[] _min;
+    private readonly int[] _max;
+
+    public SceneGeometry(Scene scene)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        Grid = scene.Grid;
+        Rectangles = scene.Rectangles;
+        Count = scene.Rectangles.Count;
+        _min = new int[Count * 3];
+        _max = new int[Count * 3];
+        for (var p = 0; p < Count; p++)
+            for (var axis = 0; axis < 3; axis++)
+            {
+                _min[p * 3 + axis] = ToGrid(scene.Rectangles[p].Min[axis], p);
+                _max[p * 3 + axis] = ToGrid(scene.Rectangles[p].Max[axis], p);
+            }
+    }
+
+    public CoordinateGrid Grid { get; }
+
+    public IReadOnlyList<Rectangle> Rectangles { get; }
+
+    /// <summary>N, the number of primitives.</summary>
+    public int Count { get; }
+
+    /// <summary>Qubits of the index register: ceil(log2 N).</summary>
+    public int IndexBits => SearchRegisters.For(Count).IndexQubits;
+
+    /// <summary>Fixed-point minimum of primitive <paramref name="p"/> along <paramref name="axis"/>.</summary>
+    public int Min(int p, int axis) => _min[p * 3 + axis];
+
+    /// <summary>Fixed-point maximum of primitive <paramref name="p"/> along <paramref name="axis"/>.</summary>
+    public int Max(int p, int axis) => _max[p * 3 + axis];
+
+    /// <summary>Scale from world units to grid integers: 2^FractionBits.</summary>
+    public double Scale => 1 << Grid.FractionBits;
+
+    private int ToGrid(double value, int p) =>
+        Grid.ToFixed(value) ?? throw new ArgumentException($"rectangle {p}: coordinate {value} is not on the {Grid}");
+}
