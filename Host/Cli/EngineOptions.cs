@@ -2,22 +2,31 @@ using System.CommandLine;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>The options every command that runs quantum steps shares: engine, seed, workers.</summary>
+/// <summary>
+/// The options every command that runs searches shares: engine, seed, workers. A command lists the
+/// engines it accepts: Grover-level commands take the quantum engines, ray-tracing commands all.
+/// </summary>
 public sealed class EngineOptions
 {
-    public readonly Option<EngineKind> Engine = new("--engine", "-e")
+    private static readonly Dictionary<EngineKind, string> Descriptions = new()
     {
-        Description = "Where quantum steps run: fullstate (Q# on the QDK full-state simulator; outcomes cannot be seeded) or analytic (exact outcome distributions sampled in C#; reproducible by seed).",
-        DefaultValueFactory = _ => EngineKind.FullState,
-        HelpName = "fullstate|analytic",
+        [EngineKind.FullState] = "fullstate (Q# on the QDK full-state simulator; outcomes cannot be seeded)",
+        [EngineKind.Analytic] = "analytic (exact outcome distributions sampled in C#; reproducible by seed)",
+        [EngineKind.Classical] = "classical (brute force, every primitive tested: the reference)",
+        [EngineKind.Randomized] = "randomized (floor(sqrt N) random primitives per ray, the paper's sec. 6.3)",
     };
+
+    private readonly EngineKind[] _accepted;
+
+    public readonly Option<EngineKind> Engine;
 
     public readonly Option<ulong> Seed = new("--seed")
     {
-        Description = "Seed of every classical random choice (QSearch's iteration counts, analytic outcomes).",
+        Description = "Seed of every classical random choice (QSearch's iteration counts, analytic outcomes, random primitives).",
         DefaultValueFactory = _ => 1UL,
     };
 
@@ -27,7 +36,25 @@ public sealed class EngineOptions
         DefaultValueFactory = _ => BridgePool.DefaultWorkers,
     };
 
-    public EngineOptions() => Workers.AtLeast(1);
+    public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
+    {
+        _accepted = accepted;
+        Engine = new Option<EngineKind>("--engine", "-e")
+        {
+            Description = "Where searches run: " + string.Join("; ", accepted.Select(k => Descriptions[k])) + ".",
+            DefaultValueFactory = _ => fallback,
+            HelpName = string.Join('|', accepted.Select(Name)),
+        };
+        Engine.Validators.Add(result =>
+        {
+            var kind = result.GetValueOrDefault<EngineKind>();
+            if (!_accepted.Contains(kind))
+                result.AddError($"--engine {Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(Name))}");
+        });
+        Workers.AtLeast(1);
+    }
+
+    public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();
 
     public void AddTo(Command command)
     {
@@ -36,13 +63,23 @@ public sealed class EngineOptions
         command.Options.Add(Workers);
     }
 
-    /// <summary>The engine a parse result asks for; its randomness is the seed's engine stream.</summary>
+    /// <summary>The Grover engine a parse result asks for; its randomness is the seed's engine stream.</summary>
     public IGroverEngine Create(ParseResult parse) => Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers));
 
     public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers) => kind switch
     {
         EngineKind.FullState => new FullStateEngine(new BridgePool(workers)),
         EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine)),
+        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
+    };
+
+    /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>
+    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options) => kind switch
+    {
+        EngineKind.FullState or EngineKind.Analytic =>
+            new QuantumHitSearch(Create(kind, root, workers), root.Fork(RandomStreams.Search), options),
+        EngineKind.Classical => new ClassicalHitSearch(),
+        EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),
     };
 }

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Diagnostics;
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
 using Spectre.Console;
@@ -31,36 +32,19 @@ public sealed class SearchCommand : Command
         DefaultValueFactory = _ => 100,
     };
 
-    private readonly Option<double> _growth = new("--growth", "-c")
-    {
-        Description = "QSearch's growth constant c, 1 < c < 2.",
-        DefaultValueFactory = _ => QSearchSchedule.DefaultGrowth,
-    };
+    private readonly QSearchOptionSet _qsearch = new();
 
-    private readonly Option<MSetRule> _rule = new("--m-rule")
-    {
-        Description = "How the bounds M_l grow: ceiling (Algorithm 1: ceil(c^l) from l = 1, capped at ceil(sqrt N)) or round (the paper's table 6: round(c^l) from l = 0, below ceil(sqrt N)).",
-        DefaultValueFactory = _ => MSetRule.Ceiling,
-        HelpName = "ceiling|round",
-    };
-
-    private readonly EngineOptions _engine = new();
+    private readonly EngineOptions _engine = new(EngineKind.FullState, EngineKind.FullState, EngineKind.Analytic);
 
     public SearchCommand() : base("search", "Grover search with QSearch (adaptive exponential search) over N indices with a given marked set.")
     {
         Options.Add(_count);
         Options.Add(_marked);
         Options.Add(_searches);
-        Options.Add(_growth);
-        Options.Add(_rule);
+        _qsearch.AddTo(this);
         _engine.AddTo(this);
         _count.Between(1, 4096);
         _searches.AtLeast(1);
-        _growth.Validators.Add(r =>
-        {
-            var c = r.GetValueOrDefault<double>();
-            if (!(c > 1 && c < 2)) r.AddError($"--growth must satisfy 1 < c < 2, got {c}");
-        });
         Validators.Add(r =>
         {
             var n = r.GetValue(_count);
@@ -81,7 +65,8 @@ public sealed class SearchCommand : Command
         var marked = parse.GetResult(_marked) is null
             ? new MarkedSet(count, [root.Fork(RandomStreams.Scenario).NextInt(count)])
             : new MarkedSet(count, parse.GetValue(_marked) ?? []);
-        var schedule = new QSearchSchedule(count, parse.GetValue(_growth), parse.GetValue(_rule));
+        var options = _qsearch.Get(parse);
+        var schedule = new QSearchSchedule(count, options.Growth, options.Rule);
         var searches = Enumerable.Range(0, parse.GetValue(_searches))
             .Select(k => new QSearch(marked, schedule, root.Fork(RandomStreams.FirstSearch + (ulong)k)))
             .ToArray();

@@ -8,4 +8,10 @@ public enum EngineKind
 
     /// <summary>Exact closed-form outcome distributions, sampled in C#.</summary>
     Analytic,
+
+    /// <summary>Brute force: every ray tested against every primitive. The reference.</summary>
+    Classical,
+
+    /// <summary>The paper's sec. 6.3: every ray tested against floor(sqrt N) random primitives.</summary>
+    Randomized,
 }

@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Intersection;
 /// </summary>
 /// <remarks>
 /// A row is invalid (no point to load, the primitive cannot be hit) when the ray is parallel to the
-/// primitive's plane, the plane is not ahead of the origin, the primitive is the one the ray leaves
+/// primitive's plane, the plane is not ahead of the origin or not before the ray's end, the primitive is the one the ray leaves
 /// from, or the point falls outside the grid. Coordinates are quantised by flooring (the paper's cast
 /// to integers) after adding <see cref="SnapTolerance"/>, so a point a rounding error below a grid line
 /// lands on it; the flat axis takes the plane's exact value.
@@ -44,7 +44,7 @@ public sealed class RayTable
             var along = ray.Direction[flat];
             if (p == ray.ExcludedPrimitive || Math.Abs(along) < 1e-12) continue;
             var t = (geometry.Rectangles[p].PlaneOffset - ray.Origin[flat]) / along;
-            if (!(t > SnapTolerance)) continue;
+            if (!(t > SnapTolerance) || t >= ray.MaxDistance) continue;
             var point = ray.At(t);
             var inGrid = true;
             for (var axis = 0; axis < 3; axis++)

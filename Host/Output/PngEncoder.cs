@@ -5,8 +5,9 @@ using System.Text;
 namespace QuantumRayTracing.Output;
 
 /// <summary>
-/// Writes an <see cref="RgbImage"/> as an 8-bit truecolour PNG (no interlacing, no ancillary chunks).
-/// The output depends only on the pixels, so the same image always gives the same bytes.
+/// Writes an <see cref="RgbImage"/> as an 8-bit truecolour PNG (no interlacing; one ancillary chunk,
+/// tEXt Software = <see cref="Software"/>, which marks the files this program wrote). The output
+/// depends only on the pixels, so the same image always gives the same bytes.
 /// </summary>
 public static class PngEncoder
 {
@@ -22,6 +23,20 @@ public static class PngEncoder
 
     private static readonly uint[] CrcTable = BuildCrcTable();
 
+    /// <summary>The value of the tEXt "Software" chunk of every PNG written here.</summary>
+    public const string Software = "QuantumRayTracing";
+
+    private static byte[] SoftwareText => Encoding.Latin1.GetBytes("Software\0" + Software);
+
+    /// <summary>Whether the file at <paramref name="path"/> is a PNG this encoder wrote (it carries the Software marker).</summary>
+    public static bool IsWrittenHere(string path)
+    {
+        var head = new byte[256];
+        int read;
+        using (var file = File.OpenRead(path)) read = file.ReadAtLeast(head, head.Length, throwOnEndOfStream: false);
+        return head.AsSpan(0, read).StartsWith(Signature) && head.AsSpan(0, read).IndexOf(SoftwareText) >= 0;
+    }
+
     /// <summary>The complete PNG file for <paramref name="image"/>.</summary>
     public static byte[] Encode(RgbImage image)
     {
@@ -29,6 +44,7 @@ public static class PngEncoder
         using var png = new MemoryStream();
         png.Write(Signature);
         WriteChunk(png, "IHDR", Header(image));
+        WriteChunk(png, "tEXt", SoftwareText);
         // One IDAT: a decoder concatenates IDATs anyway, and splitting them gains nothing in a file.
         WriteChunk(png, "IDAT", CompressScanlines(image));
         WriteChunk(png, "IEND", []);

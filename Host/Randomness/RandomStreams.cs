@@ -8,5 +8,8 @@ public static class RandomStreams
 {
     public const ulong Engine = 1;
     public const ulong Scenario = 2;
+
+    /// <summary>QSearch's iteration counts in a render, drawn in the fixed order the passes ask for them.</summary>
+    public const ulong Search = 3;
     public const ulong FirstSearch = 1UL << 32;
 }

@@ -1,0 +1,36 @@
+using System.CommandLine;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>QSearch's options, shared by every command that runs it: --growth and --m-rule.</summary>
+public sealed class QSearchOptionSet
+{
+    public readonly Option<double> Growth = new("--growth", "-c")
+    {
+        Description = "QSearch's growth constant c, 1 < c < 2.",
+        DefaultValueFactory = _ => QSearchSchedule.DefaultGrowth,
+    };
+
+    public readonly Option<MSetRule> Rule = new("--m-rule")
+    {
+        Description = "How the bounds M_l grow: ceiling (Algorithm 1: ceil(c^l) from l = 1, capped at ceil(sqrt N)) or round (the paper's table 6: round(c^l) from l = 0, below ceil(sqrt N)).",
+        DefaultValueFactory = _ => MSetRule.Ceiling,
+        HelpName = "ceiling|round",
+    };
+
+    public QSearchOptionSet() =>
+        Growth.Validators.Add(r =>
+        {
+            var c = r.GetValueOrDefault<double>();
+            if (!(c > 1 && c < 2)) r.AddError($"--growth must satisfy 1 < c < 2, got {c}");
+        });
+
+    public void AddTo(Command command)
+    {
+        command.Options.Add(Growth);
+        command.Options.Add(Rule);
+    }
+
+    public QSearchOptions Get(ParseResult parse) => new(parse.GetValue(Growth), parse.GetValue(Rule));
+}

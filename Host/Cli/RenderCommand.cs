@@ -1,0 +1,188 @@
+using System.CommandLine;
+using System.Diagnostics;
+using System.Globalization;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Metrics;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Search;
+using Spectre.Console;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// `render`: renders a scene on the chosen engine, compares it with the classical reference and
+/// prints the paper's table 1 metrics per pass.
+/// </summary>
+public sealed class RenderCommand : Command
+{
+    /// <summary>The scene rendered when none is named: the paper's figure 1.</summary>
+    public const int DefaultQornellPrimitives = 64;
+
+    private readonly Argument<FileInfo?> _scene = new("scene")
+    {
+        Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {DefaultQornellPrimitives} primitives, built in.",
+        Arity = ArgumentArity.ZeroOrOne,
+    };
+
+    private readonly Option<string?> _output = new("--output", "-o")
+    {
+        Description = "PNG to write. Default: <scene>-<engine>.png in the current directory. An existing file is replaced only if this program wrote it.",
+    };
+
+    private readonly Option<int> _passes = new("--passes", "-p")
+    {
+        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray.",
+        DefaultValueFactory = _ => RenderOptions.DefaultIterations,
+    };
+
+    private readonly Option<int> _shadowPasses = new("--shadow-passes")
+    {
+        Description = "DirectPass rounds: QOccluded searches per shadow ray not yet found occluded.",
+        DefaultValueFactory = _ => DirectPass.DefaultIterations,
+    };
+
+    private readonly Option<string?> _size = new("--size")
+    {
+        Description = "Image size, WIDTHxHEIGHT or one number for a square. Default: the scene's.",
+        HelpName = "WxH",
+    };
+
+    private readonly Option<TieBreak> _tieBreak = new("--tie-break")
+    {
+        Description = "Equal quantised depths: strict (the smaller primitive id wins, deterministic) or random (the paper: whichever is found first). The classical reference is always strict.",
+        DefaultValueFactory = _ => TieBreak.Strict,
+        HelpName = "strict|random",
+    };
+
+    private readonly Option<bool> _reference = new("--reference")
+    {
+        Description = "Also write the classical reference (<output>-reference.png) and a difference image (<output>-difference.png: differing pixels red).",
+    };
+
+    private readonly EngineOptions _engine = new(EngineKind.Analytic,
+        EngineKind.FullState, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
+
+    private readonly QSearchOptionSet _qsearch = new();
+
+    public RenderCommand() : base("render", "Render a scene with quantum (or classical) ray searches; print cost per pass (paper table 1) and the error against the classical image.")
+    {
+        Arguments.Add(_scene);
+        Options.Add(_output);
+        Options.Add(_passes);
+        Options.Add(_shadowPasses);
+        Options.Add(_size);
+        Options.Add(_tieBreak);
+        Options.Add(_reference);
+        _engine.AddTo(this);
+        _qsearch.AddTo(this);
+        _passes.Between(1, 64);
+        _shadowPasses.Between(1, 64);
+        _size.Validators.Add(r =>
+        {
+            if (ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
+        });
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var sceneFile = parse.GetValue(_scene);
+        var scene = sceneFile is null
+            ? SceneLoader.Parse(QornellBox.Build(DefaultQornellPrimitives).ToJson(), $"built-in qornell-{DefaultQornellPrimitives}")
+            : SceneLoader.Load(sceneFile.FullName);
+        var kind = parse.GetValue(_engine.Engine);
+        var engineName = EngineOptions.Name(kind);
+        var stem = sceneFile is null ? $"qornell-{DefaultQornellPrimitives}" : Path.GetFileNameWithoutExtension(sceneFile.Name);
+        var output = parse.GetValue(_output) ?? $"{stem}-{engineName}.png";
+        var withReference = parse.GetValue(_reference);
+        var outputs = withReference ? new[] { output, Sibling(output, "reference"), Sibling(output, "difference") } : [output];
+        ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
+
+        var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
+        var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak));
+        var geometry = new SceneGeometry(scene);
+        AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {scene.Lights.Count} lights, {width}x{height} pixels, {scene.Grid}");
+        AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+
+        var progress = new ConsoleProgress(engineName);
+        var clock = Stopwatch.StartNew();
+        RenderResult result;
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse)))
+            result = SceneRenderer.Render(scene, search, options, progress);
+        var renderTime = clock.Elapsed;
+        clock.Restart();
+        var referenceProgress = new ConsoleProgress("classical reference");
+        using var classical = new ClassicalHitSearch();
+        var reference = SceneRenderer.Render(scene, classical, options with { TieBreak = TieBreak.Strict }, referenceProgress);
+        var referenceTime = clock.Elapsed;
+        progress.Finish();
+        referenceProgress.Finish();
+
+        var error = ImageError.Between(result.Image, reference.Image);
+        var images = new List<(RgbImage, string)> { (result.Image, output) };
+        if (withReference)
+        {
+            images.Add((reference.Image, outputs[1]));
+            images.Add((DifferenceImage.Of(result.Image, reference.Image), outputs[2]));
+        }
+        ImageFiles.Write(images);
+
+        AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
+        AnsiConsole.WriteLine($"error against the classical render: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
+        AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s");
+        AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (DESIGN.md §5); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc, O(N) per search) are not in Int/Ray.[/]");
+        foreach (var (_, path) in images) AnsiConsole.WriteLine($"wrote {path}");
+        return 0;
+    }
+
+    private static Table MetricsTable(string engine, RenderResult result, PassMetrics classical)
+    {
+        // Passes as columns, measures as rows: fits an 80-column terminal.
+        var passes = result.Passes.Append(result.Total).ToArray();
+        var table = new Table().Title($"{engine}: cost per pass (paper table 1)");
+        table.AddColumn("measure");
+        foreach (var pass in passes) table.AddColumn(new TableColumn(pass.Name).RightAligned());
+        void Row(string measure, Func<PassMetrics, string> value) => table.AddRow([measure, .. passes.Select(value)]);
+        Row("#Rays", p => N(p.Rays));
+        Row("#It", p => p.Iterations.ToString(CultureInfo.InvariantCulture));
+        Row("#Eval, conservative", p => N(p.Cost.QueriesConservative));
+        Row("#Eval, paper", p => N(p.Cost.QueriesPaper));
+        Row("#C_Int", p => N(p.Cost.ClassicalTests));
+        Row("#Int, conservative", p => N(p.IntersectionsConservative));
+        Row("Int/Ray, conservative", p => p.PerRayConservative.ToString("0.00", CultureInfo.InvariantCulture));
+        Row("Int/Ray, paper", p => p.PerRayPaper.ToString("0.00", CultureInfo.InvariantCulture));
+        Row("table rows (eval-rpc)", p => N(p.TableRows));
+        Row("wall time", p => $"{p.Elapsed.TotalSeconds:0.00} s");
+        table.Caption($"classical reference: {N(classical.Rays)} rays, Int/Ray {classical.PerRayConservative:0.00}");
+        return table;
+    }
+
+    private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
+
+    /// <summary>out.png → out-reference.png.</summary>
+    public static string Sibling(string output, string suffix)
+    {
+        var directory = Path.GetDirectoryName(output) ?? "";
+        return Path.Combine(directory, $"{Path.GetFileNameWithoutExtension(output)}-{suffix}{Path.GetExtension(output)}");
+    }
+
+    /// <summary>"128" or "160x120" → the size; null text → no size.</summary>
+    public static ((int Width, int Height)? Size, string? Error) ParseSize(string? text)
+    {
+        if (text is null) return (null, null);
+        var parts = text.Split('x', 'X');
+        if (parts.Length > 2 || parts.Any(p => !int.TryParse(p, NumberStyles.None, CultureInfo.InvariantCulture, out _)))
+            return (null, $"expected WIDTHxHEIGHT or one number, got '{text}'");
+        var width = int.Parse(parts[0], CultureInfo.InvariantCulture);
+        var height = parts.Length == 2 ? int.Parse(parts[1], CultureInfo.InvariantCulture) : width;
+        if (width < 1 || height < 1 || width > SceneLoader.MaxImageSide || height > SceneLoader.MaxImageSide)
+            return (null, $"each side must be 1..{SceneLoader.MaxImageSide}, got {width}x{height}");
+        return ((width, height), null);
+    }
+}

@@ -1,0 +1,58 @@
+using System.Diagnostics;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Rays;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Passes;
+
+/// <summary>
+/// The loop every pass shares: up to <c>iterations</c> rounds, each searching every unfinished ray
+/// once through the engine seam. Rays go a block at a time, so only one block's lookup tables are in
+/// memory; the pass decides the window of each search and what an outcome means.
+/// </summary>
+public static class IteratedSearch
+{
+    /// <summary>Rays per engine batch: enough to fill the full-state engine's calls, few enough to keep tables small.</summary>
+    public const int BlockSize = 4096;
+
+    /// <param name="name">The pass's name, for metrics and progress.</param>
+    /// <param name="search">The engine.</param>
+    /// <param name="geometry">The scene's primitives.</param>
+    /// <param name="rays">The pass's rays, one search per unfinished ray per round.</param>
+    /// <param name="iterations">Most rounds (#IT).</param>
+    /// <param name="window">The window of ray i's search, given its table.</param>
+    /// <param name="observe">Takes ray i's outcome; returns true when the ray needs no further round.</param>
+    /// <param name="progress">Told after each block.</param>
+    public static PassMetrics Run(
+        string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, int iterations,
+        Func<int, RayTable, HitWindow> window, Func<int, RayTable, HitOutcome, bool> observe, IRenderProgress? progress)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
+        var clock = Stopwatch.StartNew();
+        var finished = new bool[rays.Count];
+        var cost = default(SearchCost);
+        long tableRows = 0;
+        var round = 0;
+        for (; round < iterations; round++)
+        {
+            var active = Enumerable.Range(0, rays.Count).Where(i => !finished[i]).ToArray();
+            if (active.Length == 0) break;
+            for (var start = 0; start < active.Length; start += BlockSize)
+            {
+                var block = active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
+                var tables = new RayTable[block.Length];
+                Parallel.For(0, block.Length, k => tables[k] = RayTable.Build(geometry, rays[block[k]]));
+                var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]))).ToArray();
+                tableRows += (long)block.Length * geometry.Count;
+                var outcomes = search.Run(queries);
+                for (var k = 0; k < block.Length; k++)
+                {
+                    cost += outcomes[k].Cost;
+                    finished[block[k]] = observe(block[k], tables[k], outcomes[k]);
+                }
+                progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
+            }
+        }
+        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed);
+    }
+}

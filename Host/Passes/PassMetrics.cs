@@ -1,0 +1,30 @@
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Passes;
+
+/// <summary>
+/// The paper's table 1 for one pass: rays traced, iterations (#It), oracle queries and classical tests
+/// (in <see cref="Cost"/>), plus the lookup-table rows built (eval-rpc work, shown apart, never in
+/// Int/Ray) and wall time.
+/// </summary>
+public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchCost Cost, long TableRows, TimeSpan Elapsed)
+{
+    /// <summary>#Int = #Eval + #C_Int, in the conservative query count.</summary>
+    public long IntersectionsConservative => Cost.QueriesConservative + Cost.ClassicalTests;
+
+    /// <summary>#Int = #Eval + #C_Int, in the paper's query count.</summary>
+    public long IntersectionsPaper => Cost.QueriesPaper + Cost.ClassicalTests;
+
+    public double PerRayConservative => Rays == 0 ? 0 : (double)IntersectionsConservative / Rays;
+
+    public double PerRayPaper => Rays == 0 ? 0 : (double)IntersectionsPaper / Rays;
+
+    /// <summary>The metrics of several passes together; #It is the largest of theirs.</summary>
+    public static PassMetrics Total(string name, IReadOnlyCollection<PassMetrics> passes) => new(
+        name,
+        passes.Sum(p => p.Rays),
+        passes.Count == 0 ? 0 : passes.Max(p => p.Iterations),
+        passes.Aggregate(default(SearchCost), (sum, p) => sum + p.Cost),
+        passes.Sum(p => p.TableRows),
+        TimeSpan.FromTicks(passes.Sum(p => p.Elapsed.Ticks)));
+}

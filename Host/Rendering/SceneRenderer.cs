@@ -1,0 +1,74 @@
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Rays;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+using QuantumRayTracing.Shading;
+
+namespace QuantumRayTracing.Rendering;
+
+/// <summary>
+/// RenderScene (appendix B, Algorithm 7): the primary pass, the specular pass for pixels that see a
+/// mirror, the direct-light pass for every surface point and light, then Whitted shading. Rays are
+/// traced breadth first, a whole pass at a time, so each pass batches all its searches. Every engine
+/// runs exactly this; they differ only in the <see cref="IHitSearch"/> they bring.
+/// </summary>
+public static class SceneRenderer
+{
+    public static RenderResult Render(Scene scene, IHitSearch search, RenderOptions options, IRenderProgress? progress = null)
+    {
+        var geometry = new SceneGeometry(scene);
+        var primaryRays = CameraRays.For(scene.Camera, options.Width, options.Height);
+        var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, options.Iterations, options.TieBreak, progress);
+
+        // Surface points: each primary hit carries 1 − mirror of its pixel, its reflection the mirror share.
+        var points = new List<SurfacePoint>();
+        var specularPixels = new List<int>();
+        var specularRays = new List<Ray>();
+        for (var pixel = 0; pixel < primaryRays.Length; pixel++)
+        {
+            if (primaryHits[pixel] is not { } hit) continue;
+            var rectangle = scene.Rectangles[hit.Primitive];
+            var point = SurfacePoint.Of(pixel, primaryRays[pixel], hit, rectangle, 1 - rectangle.Material.Mirror);
+            if (point.Weight > 0) points.Add(point);
+            if (!rectangle.Material.IsMirror) continue;
+            specularPixels.Add(pixel);
+            specularRays.Add(SecondaryRays.Specular(primaryRays[pixel], point));
+        }
+        var (specularHits, specularMetrics) = TracePass.Run("specular", search, geometry, specularRays, options.Iterations, options.TieBreak, progress);
+        for (var k = 0; k < specularRays.Count; k++)
+        {
+            if (specularHits[k] is not { } hit) continue;
+            var mirror = scene.Rectangles[primaryHits[specularPixels[k]]!.Value.Primitive].Material.Mirror;
+            // One bounce: a mirror seen in a mirror shows only its diffuse share.
+            var rectangle = scene.Rectangles[hit.Primitive];
+            points.Add(SurfacePoint.Of(specularPixels[k], specularRays[k], hit, rectangle, mirror * (1 - rectangle.Material.Mirror)));
+        }
+
+        // Shadow rays: one per surface point and light in front of it; rayOf[point, light] = −1 for none.
+        var shadowRays = new List<Ray>();
+        var rayOf = new int[points.Count, scene.Lights.Count];
+        for (var k = 0; k < points.Count; k++)
+            for (var l = 0; l < scene.Lights.Count; l++)
+            {
+                var ray = SecondaryRays.Shadow(points[k], scene.Lights[l]);
+                rayOf[k, l] = ray is null ? -1 : shadowRays.Count;
+                if (ray is not null) shadowRays.Add(ray);
+            }
+        var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays, options.ShadowIterations, progress);
+
+        var radiance = new Vec3[primaryRays.Length];
+        for (var k = 0; k < points.Count; k++)
+        {
+            var point = points[k];
+            radiance[point.Pixel] += point.Weight * WhittedShading.Radiance(scene, point, l => rayOf[k, l] >= 0 && !occluded[rayOf[k, l]]);
+        }
+        var image = RgbImage.FromLinear(options.Width, options.Height, (x, y) =>
+        {
+            var c = radiance[y * options.Width + x];
+            return (WhittedShading.Encode(c.X), WhittedShading.Encode(c.Y), WhittedShading.Encode(c.Z));
+        });
+        return new RenderResult(image, [primaryMetrics, specularMetrics, shadowMetrics]);
+    }
+}

@@ -1,0 +1,26 @@
+namespace QuantumRayTracing.Search;
+
+/// <summary>
+/// The brute-force reference: tests the ray against every primitive (N classical tests) and returns
+/// the first accepted one in the (depth, id) order. Its answer is certain.
+/// </summary>
+public sealed class ClassicalHitSearch : IHitSearch
+{
+    public string Name => "classical";
+
+    public IReadOnlyList<HitOutcome> Run(IReadOnlyList<HitQuery> queries, Action<int, int>? onRound = null)
+    {
+        var outcomes = new HitOutcome[queries.Count];
+        Parallel.For(0, queries.Count, k =>
+        {
+            var (table, window) = queries[k];
+            var all = Enumerable.Range(0, table.Count);
+            outcomes[k] = new HitOutcome(BestAccepted.Among(table, window, all), true,
+                new SearchCost(0, 0, table.Count, 0));
+        });
+        onRound?.Invoke(1, 0);
+        return outcomes;
+    }
+
+    public void Dispose() { }
+}

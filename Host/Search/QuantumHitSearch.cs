@@ -1,0 +1,39 @@
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Randomness;
+
+namespace QuantumRayTracing.Search;
+
+/// <summary>
+/// Ray searches by QSearch over a Grover engine (QTrace and QOccluded, Algorithm 3): the marked set is
+/// the table's verify-rpc set, every search of a batch advances in lock step through
+/// <see cref="QSearchDriver"/>. With <paramref name="gateLevel"/> each request also carries the table
+/// and window, which the gate engine loads into its gate-level oracle.
+/// </summary>
+public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false) : IHitSearch
+{
+    private readonly Dictionary<int, QSearchSchedule> _schedules = [];
+
+    public string Name => engine.Name;
+
+    public IReadOnlyList<HitOutcome> Run(IReadOnlyList<HitQuery> queries, Action<int, int>? onRound = null)
+    {
+        var searches = new QSearch[queries.Count];
+        for (var k = 0; k < queries.Count; k++)
+        {
+            var (table, window) = queries[k];
+            searches[k] = new QSearch(table.Marked(window), Schedule(table.Count), random,
+                gateLevel ? new Intersection.OracleInput(table, window) : null);
+        }
+        QSearchDriver.Run(searches, engine, onRound);
+        return searches.Select(s => new HitOutcome(s.Found, false, s.Cost)).ToArray();
+    }
+
+    private QSearchSchedule Schedule(int count)
+    {
+        if (!_schedules.TryGetValue(count, out var schedule))
+            _schedules[count] = schedule = new QSearchSchedule(count, options.Growth, options.Rule);
+        return schedule;
+    }
+
+    public void Dispose() => engine.Dispose();
+}
