@@ -16,6 +16,7 @@ public sealed class BenchCommand : Command
     public BenchCommand() : base("bench", "Measure speed and write the tables in docs/.")
     {
         Subcommands.Add(new GroverBenchCommand());
+        Subcommands.Add(new BenchRenderCommand());
     }
 
     private sealed class GroverBenchCommand : Command

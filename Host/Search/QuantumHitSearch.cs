@@ -18,12 +18,14 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
     public IReadOnlyList<HitOutcome> Run(IReadOnlyList<HitQuery> queries, Action<int, int>? onRound = null)
     {
         var searches = new QSearch[queries.Count];
-        for (var k = 0; k < queries.Count; k++)
+        var schedules = queries.Select(q => q.Table.Count).Distinct().ToDictionary(n => n, Schedule);
+        // Marked sets are O(N) each and independent; no randomness is drawn before the driver runs.
+        Parallel.For(0, queries.Count, k =>
         {
             var (table, window) = queries[k];
-            searches[k] = new QSearch(table.Marked(window), Schedule(table.Count), random,
+            searches[k] = new QSearch(table.Marked(window), schedules[table.Count], random,
                 gateLevel ? new Intersection.OracleInput(table, window) : null);
-        }
+        });
         QSearchDriver.Run(searches, engine, onRound);
         return searches.Select(s => new HitOutcome(s.Found, false, s.Cost)).ToArray();
     }

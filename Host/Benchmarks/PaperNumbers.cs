@@ -1,0 +1,33 @@
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>
+/// Published results of the ray tracing paper (../shared/seeds/000, tables 2 and 3; 128x128), the
+/// numbers our tables are set against. Int/Ray there uses the paper's query count.
+/// </summary>
+public static class PaperNumbers
+{
+    /// <summary>Table 2: quantum Int/Ray, no optimisation, by scene file stem.</summary>
+    public static readonly IReadOnlyDictionary<string, double> Scalability = new Dictionary<string, double>
+    {
+        ["qornell-8"] = 12.0,
+        ["qornell-16"] = 18.0,
+        ["qornell-32"] = 27.4,
+        ["qornell-64"] = 33.6,
+        ["qornell-128"] = 50.4,
+        ["qornell-256"] = 51.3,
+        ["qornell-512"] = 79.7,
+        ["depth-complexity-32"] = 30.7,
+        ["depth-complexity-64"] = 39.4,
+    };
+
+    /// <summary>Table 2's TracePass iterations: the Qornell rows equal table 3's 4-pass row, the Depth rows its 5-pass row.</summary>
+    public static int ScalabilityIterations(string stem) => stem.StartsWith("depth", StringComparison.Ordinal) ? 5 : 4;
+
+    /// <summary>Table 3 rows: (#It, Int/Ray, NRMSE, #Dpix) by scene file stem.</summary>
+    public static readonly IReadOnlyDictionary<string, (int Iterations, double IntPerRay, double Nrmse, int DifferentPixels)[]> Iterations =
+        new Dictionary<string, (int, double, double, int)[]>
+        {
+            ["qornell-64"] = [(1, 17.0, 0.63, 2278), (2, 22.6, 0.24, 430), (3, 28.1, 0.10, 146), (4, 33.6, 0.04, 107), (5, 39.2, 0.01, 103)],
+            ["depth-complexity-64"] = [(1, 15.9, 0.34, 5665), (2, 21.7, 0.13, 2556), (3, 27.6, 0.04, 973), (4, 33.6, 0.01, 304), (5, 39.4, 0.00, 95), (6, 45.2, 0.00, 47)],
+        };
+}

@@ -1,0 +1,162 @@
+using System.CommandLine;
+using System.Globalization;
+using System.Text;
+using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+using Spectre.Console;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// `bench render`: the paper's tables 2 and 3 on our renderer, and the engines side by side, written
+/// as Markdown (docs/rendering-results.md).
+/// </summary>
+public sealed class BenchRenderCommand : Command
+{
+    public const string CommandLine = "qrt bench render";
+
+    private readonly Option<DirectoryInfo> _scenes = new("--scenes")
+    {
+        Description = "Directory holding the qornell-N.json and depth-complexity-N.json scenes.",
+        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
+    };
+
+    private readonly Option<int> _size = new("--size")
+    {
+        Description = "Square image size of the table 2 and 3 renders (the paper: 128).",
+        DefaultValueFactory = _ => 128,
+    };
+
+    private readonly Option<int> _engineSize = new("--engine-size")
+    {
+        Description = "Square image size of the engine comparison (the full-state simulator is slow).",
+        DefaultValueFactory = _ => 32,
+    };
+
+    private readonly Option<ulong> _seed = new("--seed")
+    {
+        Description = "Seed of every render.",
+        DefaultValueFactory = _ => 1UL,
+    };
+
+    private readonly Option<int> _workers = new("--workers")
+    {
+        Description = "Node bridges for the fullstate engine. Default: the core count.",
+        DefaultValueFactory = _ => Bridge.BridgePool.DefaultWorkers,
+    };
+
+    private readonly Option<FileInfo?> _output = new("--output", "-o")
+    {
+        Description = "Write the Markdown report here (e.g. docs/rendering-results.md). It replaces only a report this command wrote before.",
+    };
+
+    public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix) and an engine comparison (wall time per ray).")
+    {
+        Options.Add(_scenes);
+        Options.Add(_size);
+        Options.Add(_engineSize);
+        Options.Add(_seed);
+        Options.Add(_workers);
+        Options.Add(_output);
+        _size.Between(1, 1024);
+        _engineSize.Between(1, 1024);
+        _workers.AtLeast(1);
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var output = parse.GetValue(_output);
+        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandLine));
+        report.EnsureWritable();
+        var directory = parse.GetValue(_scenes)!;
+        Scene Load(string stem) => SceneLoader.Load(Path.Combine(directory.FullName, stem + ".json"));
+        var size = parse.GetValue(_size);
+        var seed = parse.GetValue(_seed);
+        var workers = parse.GetValue(_workers);
+        var paperRule = new QSearchOptions(Rule: MSetRule.Round);
+        var ourRule = new QSearchOptions();
+        var text = new StringBuilder();
+        text.AppendLine("# Rendering results");
+        text.AppendLine();
+        text.AppendLine($"{size}x{size} pixels, seed {seed}, strict (depth, id) tie-breaking, Whitted shading, 2 DirectPass rounds. Error is against the classical render of the same");
+        text.AppendLine("scene and options: NRMSE = RMS of the 8-bit channel differences / the reference's value range; #Dpix = pixels whose 8-bit RGB differs.");
+        text.AppendLine("Int/Ray = (#Eval + #C_Int) / #Rays over primary, specular and shadow rays. *Paper count*: a Grover run with r iterations costs r, with");
+        text.AppendLine("QSearch's M_l = round(c^l) from l = 0 (the paper's table 6), the setting that reproduces the paper; *conservative*: r + 1, with");
+        text.AppendLine("Algorithm 1's M_l = ceil(c^l) from l = 1, our default (DESIGN.md §5). Both on the analytic engine, which samples the exact outcome");
+        text.AppendLine("distribution of every Grover run (tests show it agrees with the full-state simulator).");
+        text.AppendLine();
+
+        AnsiConsole.Progress().AutoClear(true).Start(progress =>
+        {
+            var stems = PaperNumbers.Scalability.Keys.ToArray();
+            var task = progress.AddTask("table 2", maxValue: stems.Length);
+            text.AppendLine("## Scalability with the number of primitives (the paper's table 2)");
+            text.AppendLine();
+            text.AppendLine("| scene | N | #It | classical Int/Ray | Int/Ray, paper count | paper's table 2 | ours / paper | #Dpix | Int/Ray, conservative | #Dpix | analytic / classical wall time |");
+            text.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|");
+            foreach (var stem in stems)
+            {
+                var scene = Load(stem);
+                var options = new RenderOptions(size, size, PaperNumbers.ScalabilityIterations(stem));
+                var reference = RenderMeasurement.Reference(scene, options);
+                var paper = RenderMeasurement.Run(scene, EngineKind.Analytic, options, paperRule, seed, workers, reference);
+                var ours = RenderMeasurement.Run(scene, EngineKind.Analytic, options, ourRule, seed, workers, reference);
+                var published = PaperNumbers.Scalability[stem];
+                text.AppendLine($"| {stem} | {scene.Rectangles.Count} | {options.Iterations} | {F(reference.Result.Total.PerRayConservative)} | {F(paper.Result.Total.PerRayPaper)} | {F(published)} | {paper.Result.Total.PerRayPaper / published:0.00} | {paper.Error.DifferentPixels} | {F(ours.Result.Total.PerRayConservative)} | {ours.Error.DifferentPixels} | {ours.WallTime / reference.WallTime:0.0}x |");
+                task.Increment(1);
+            }
+            text.AppendLine();
+
+            text.AppendLine("## Error against TracePass iterations (the paper's table 3)");
+            text.AppendLine();
+            text.AppendLine("| scene | #It | Int/Ray, paper count | NRMSE | #Dpix | %Dpix | paper: Int/Ray | paper: NRMSE | paper: #Dpix | Int/Ray, conservative | #Dpix, conservative |");
+            text.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|");
+            foreach (var (stem, rows) in PaperNumbers.Iterations)
+            {
+                var scene = Load(stem);
+                var rowTask = progress.AddTask($"table 3: {stem}", maxValue: rows.Length);
+                foreach (var row in rows)
+                {
+                    var options = new RenderOptions(size, size, row.Iterations);
+                    var reference = RenderMeasurement.Reference(scene, options);
+                    var paper = RenderMeasurement.Run(scene, EngineKind.Analytic, options, paperRule, seed, workers, reference);
+                    var ours = RenderMeasurement.Run(scene, EngineKind.Analytic, options, ourRule, seed, workers, reference);
+                    text.AppendLine($"| {stem} | {row.Iterations} | {F(paper.Result.Total.PerRayPaper)} | {paper.Error.Nrmse:P1} | {paper.Error.DifferentPixels} | {paper.Error.DifferentShare:P1} | {F(row.IntPerRay)} | {row.Nrmse:P0} | {row.DifferentPixels} | {F(ours.Result.Total.PerRayConservative)} | {ours.Error.DifferentPixels} |");
+                    rowTask.Increment(1);
+                }
+            }
+            text.AppendLine();
+
+            var engineSize = parse.GetValue(_engineSize);
+            text.AppendLine($"## Engines side by side (qornell-64, {engineSize}x{engineSize}, 4 passes, conservative count, default M rule)");
+            text.AppendLine();
+            text.AppendLine("| engine | #Rays | Int/Ray | NRMSE | #Dpix | wall time | ms per ray | wall time / classical |");
+            text.AppendLine("|---|---|---|---|---|---|---|---|");
+            var qornell = Load("qornell-64");
+            var engineOptions = new RenderOptions(engineSize, engineSize);
+            var classical = RenderMeasurement.Reference(qornell, engineOptions);
+            EngineKind[] kinds = [EngineKind.Classical, EngineKind.Randomized, EngineKind.Analytic, EngineKind.FullState];
+            var engineTask = progress.AddTask("engines", maxValue: kinds.Length);
+            foreach (var kind in kinds)
+            {
+                var m = RenderMeasurement.Run(qornell, kind, engineOptions, ourRule, seed, workers, classical);
+                text.AppendLine($"| {EngineOptions.Name(kind)} | {m.Result.Total.Rays} | {F(m.Result.Total.PerRayConservative)} | {m.Error.Nrmse:P2} | {m.Error.DifferentPixels} | {m.WallTime.TotalSeconds:0.00} s | {m.MillisecondsPerRay:0.000} | {m.WallTime / classical.WallTime:0.0}x |");
+                engineTask.Increment(1);
+            }
+        });
+        text.AppendLine();
+        text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
+        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
+        var body = text.ToString();
+        Console.WriteLine(body);
+        report.Write(body);
+        return 0;
+    }
+
+    private static string F(double value) => value.ToString("0.0", CultureInfo.InvariantCulture);
+}
