@@ -136,7 +136,7 @@ public sealed class RenderCommand : Command
         AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
         AnsiConsole.WriteLine($"error against the classical render: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s");
-        AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (DESIGN.md §5); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc, O(N) per search) are not in Int/Ray.[/]");
+        AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (DESIGN.md §5); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");
         foreach (var (_, path) in images) AnsiConsole.WriteLine($"wrote {path}");
         return 0;
     }

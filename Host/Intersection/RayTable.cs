@@ -15,20 +15,29 @@ namespace QuantumRayTracing.Intersection;
 /// from, or the point falls outside the grid. Coordinates are quantised by flooring (the paper's cast
 /// to integers) after adding <see cref="SnapTolerance"/>, so a point a rounding error below a grid line
 /// lands on it; the flat axis takes the plane's exact value.
+/// <para>
+/// A table is full (every row, what the gate-level oracle loads) or <see cref="Compact"/>: only the
+/// rows whose point lies inside their rectangle, the only rows any window can accept. Passes keep the
+/// compact form of a ray's table between rounds instead of rebuilding N rows.
+/// </para>
 /// </remarks>
 public sealed class RayTable
 {
     public const double SnapTolerance = 1e-9;
 
-    private readonly bool[] _valid;
-    private readonly int[] _points;
+    // Full form: one entry per primitive. Compact form: _valid and _points are null and the arrays hold
+    // only the rows listed, in ascending order, in _rows.
+    private readonly bool[]? _valid;
+    private readonly int[]? _points;
     private readonly int[] _depths;
     private readonly double[] _distances;
+    private readonly int[]? _rows;
 
     private RayTable(SceneGeometry geometry, Ray ray)
     {
         Geometry = geometry;
         Ray = ray;
+        Count = geometry.Count;
         var n = geometry.Count;
         _valid = new bool[n];
         _points = new int[n * 3];
@@ -63,6 +72,17 @@ public sealed class RayTable
         DepthBits = Math.Max(1, 32 - int.LeadingZeroCount(maxDepth));
     }
 
+    private RayTable(RayTable full, int[] rows)
+    {
+        Geometry = full.Geometry;
+        Ray = full.Ray;
+        Count = full.Count;
+        DepthBits = full.DepthBits;
+        _rows = rows;
+        _depths = rows.Select(full.Depth).ToArray();
+        _distances = rows.Select(full.Distance).ToArray();
+    }
+
     public static RayTable Build(SceneGeometry geometry, Ray ray)
     {
         ArgumentNullException.ThrowIfNull(geometry);
@@ -75,7 +95,21 @@ public sealed class RayTable
     public Ray Ray { get; }
 
     /// <summary>N, one row per primitive.</summary>
-    public int Count => _valid.Length;
+    public int Count { get; }
+
+    /// <summary>Whether this table holds only the rows inside their rectangles (see <see cref="Compact"/>).</summary>
+    public bool IsCompact => _rows is not null;
+
+    /// <summary>
+    /// The same table holding only the rows whose point lies inside their rectangle: what verify-rpc
+    /// can accept under any window, a handful of rows instead of N.
+    /// </summary>
+    public RayTable Compact()
+    {
+        if (IsCompact) return this;
+        var inside = Enumerable.Range(0, Count).Where(p => Verify(p, new HitWindow(0, int.MaxValue, int.MaxValue))).ToArray();
+        return new RayTable(this, inside);
+    }
 
     /// <summary>Qubits of a coordinate register: the grid's bits.</summary>
     public int CoordinateBits => Geometry.Grid.Bits;
@@ -84,24 +118,26 @@ public sealed class RayTable
     public int DepthBits { get; }
 
     /// <summary>Whether row <paramref name="p"/> holds a ray/plane point at all.</summary>
-    public bool IsValid(int p) => _valid[p];
+    public bool IsValid(int p) => Full.Valid[p];
 
     /// <summary>The quantised ray/plane point's grid integer along <paramref name="axis"/> (0 for an invalid row).</summary>
-    public int Point(int p, int axis) => _valid[p] ? _points[p * 3 + axis] : 0;
+    public int Point(int p, int axis) => Full.Valid[p] ? Full.Points[p * 3 + axis] : 0;
 
-    /// <summary>Quantised depth along the ray's principal axis (0 for an invalid row).</summary>
-    public int Depth(int p) => _depths[p];
+    /// <summary>Quantised depth along the ray's principal axis (0 for a row without a point or, compact, outside its rectangle).</summary>
+    public int Depth(int p) => Slot(p) is var k and >= 0 ? _depths[k] : 0;
 
-    /// <summary>The ray parameter t of the unquantised ray/plane point, for shading.</summary>
-    public double Distance(int p) => _distances[p];
+    /// <summary>The ray parameter t of the unquantised ray/plane point, for shading (0 where <see cref="Depth"/> is).</summary>
+    public double Distance(int p) => Slot(p) is var k and >= 0 ? _distances[k] : 0;
 
     /// <summary>verify-rpc: the point lies in the rectangle on every axis and its (depth, id) in the window.</summary>
     public bool Verify(int p, HitWindow window)
     {
-        if (!_valid[p]) return false;
+        if (_rows is not null) return Array.BinarySearch(_rows, p) is var k and >= 0 && window.Accepts(_depths[k], p);
+        var (valid, points) = Full;
+        if (!valid[p]) return false;
         for (var axis = 0; axis < 3; axis++)
         {
-            var q = _points[p * 3 + axis];
+            var q = points[p * 3 + axis];
             if (q < Geometry.Min(p, axis) || q > Geometry.Max(p, axis)) return false;
         }
         return window.Accepts(_depths[p], p);
@@ -111,10 +147,17 @@ public sealed class RayTable
     public MarkedSet Marked(HitWindow window)
     {
         var marked = new List<int>();
-        for (var p = 0; p < Count; p++)
+        foreach (var p in _rows ?? Enumerable.Range(0, Count))
             if (Verify(p, window)) marked.Add(p);
         return new MarkedSet(Count, marked);
     }
+
+    private (bool[] Valid, int[] Points) Full => _valid is not null && _points is not null
+        ? (_valid, _points)
+        : throw new InvalidOperationException("a compact table holds only the rows inside their rectangles; build the full table");
+
+    // Index of row p in the depth and distance arrays, −1 when a compact table does not hold it.
+    private int Slot(int p) => _rows is null ? p : Array.BinarySearch(_rows, p) is var k and >= 0 ? k : -1;
 
     /// <summary>The window of this ray's own depth range.</summary>
     public HitWindow FullRange => HitWindow.Range(Ray.Near, Ray.Far, Count);

@@ -30,6 +30,7 @@ public static class IteratedSearch
         ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
         var clock = Stopwatch.StartNew();
         var finished = new bool[rays.Count];
+        var kept = new RayTable?[rays.Count];
         var cost = default(SearchCost);
         long tableRows = 0;
         var round = 0;
@@ -41,14 +42,15 @@ public static class IteratedSearch
             {
                 var block = active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
                 var tables = new RayTable[block.Length];
-                Parallel.For(0, block.Length, k => tables[k] = RayTable.Build(geometry, rays[block[k]]));
+                Parallel.For(0, block.Length, k => tables[k] = kept[block[k]] ?? RayTable.Build(geometry, rays[block[k]]));
+                tableRows += (long)block.Count(i => kept[i] is null) * geometry.Count;
                 var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]))).ToArray();
-                tableRows += (long)block.Length * geometry.Count;
                 var outcomes = search.Run(queries);
                 for (var k = 0; k < block.Length; k++)
                 {
                     cost += outcomes[k].Cost;
                     finished[block[k]] = observe(block[k], tables[k], outcomes[k]);
+                    kept[block[k]] = finished[block[k]] ? null : tables[k].Compact();
                 }
                 progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
             }

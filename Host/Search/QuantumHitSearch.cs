@@ -7,7 +7,8 @@ namespace QuantumRayTracing.Search;
 /// Ray searches by QSearch over a Grover engine (QTrace and QOccluded, Algorithm 3): the marked set is
 /// the table's verify-rpc set, every search of a batch advances in lock step through
 /// <see cref="QSearchDriver"/>. With <paramref name="gateLevel"/> each request also carries the table
-/// and window, which the gate engine loads into its gate-level oracle.
+/// and window, which the gate engine loads into its gate-level oracle (the full table: a compact one
+/// kept between rounds is rebuilt for it).
 /// </summary>
 public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false) : IHitSearch
 {
@@ -24,7 +25,7 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
         {
             var (table, window) = queries[k];
             searches[k] = new QSearch(table.Marked(window), schedules[table.Count], random,
-                gateLevel ? new Intersection.OracleInput(table, window) : null);
+                gateLevel ? new Intersection.OracleInput(table.IsCompact ? Intersection.RayTable.Build(table.Geometry, table.Ray) : table, window) : null);
         });
         QSearchDriver.Run(searches, engine, onRound);
         return searches.Select(s => new HitOutcome(s.Found, false, s.Cost)).ToArray();
