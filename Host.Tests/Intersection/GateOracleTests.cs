@@ -160,6 +160,51 @@ public partial class GateOracleTests(FullStateFixture fixture)
     }
 
     [Fact]
+    public void AdjointAndControlledIterationsUndoExactly()
+    {
+        // Each variant ends in a basis state, so every shot must match exactly; several shots draw
+        // different outcomes of the unlookups' measurements.
+        var random = new SeededRandom(31);
+        var inputs = new[]
+        {
+            RandomCases("mixed", MixedScene.Value, random, rays: 3).First(c => Marked(c).MarkedCount is > 0 and < 5),
+            RandomCases("fixed-point", FixedPointScene.Value, random, rays: 3).First(c => Marked(c).MarkedCount > 0),
+            RandomCases("qornell-8", QornellScene.Value, random, rays: 3).First(c => Marked(c).MarkedCount > 0),
+        };
+        var calls = inputs.SelectMany(c => Enumerable.Range(0, 3).Select(v => (Case: c, Variant: v))).ToArray();
+        var expression = "[" + string.Join(", ", calls.Select(call =>
+            $"QuantumRayTracing.Intersection.MeasureUndoneGateGroverIteration({GateEngine.OracleArgument(call.Case.Input)}, {call.Variant})")) + "]";
+        foreach (var shot in fixture.Engine.Pool.Bridges[0].Run(expression, shots: 4))
+        {
+            var results = Regex.Matches(shot, @"\[(\d+), (\d+), (\d+), (\d+)\]").Select(m => m.Value).ToArray();
+            Assert.Equal(calls.Length, results.Length);
+            for (var k = 0; k < calls.Length; k++)
+                Assert.True(results[k] == (calls[k].Variant == 1 ? "[0, 1, 0, 1]" : "[0, 0, 0, 1]"),
+                    $"{calls[k].Case}, variant {calls[k].Variant}: [index, control, work, flag] = {results[k]}");
+        }
+    }
+
+    [Fact]
+    public void ExpensiveRequestsAreSpreadOverCalls()
+    {
+        ChunkLimits Gate() => new(GateEngine.DefaultMaxRequestsPerCall, GateEngine.Cost, GateEngine.MaxCostPerCall);
+        IEnumerable<GroverRequest> Runs(int count, int iterations, int times) =>
+            Enumerable.Repeat(new GroverRequest(new MarkedSet(count, [0]), iterations), times);
+        // N = 512 at r = 17 costs more than a call's budget: one run per call.
+        Assert.All(BridgeBatches.Chunks(Runs(512, 17, 10).ToArray(), 2, Gate()), c => Assert.Equal(1, c.Length));
+        // N = 128 at r = 8: twenty runs fill a budget.
+        Assert.Equal([20, 20, 10], BridgeBatches.Chunks(Runs(128, 8, 50).ToArray(), 2, Gate()).Select(c => c.Length));
+        // Cheap runs: the request cap, and at least one call per worker.
+        Assert.Equal([100, 100, 100], BridgeBatches.Chunks(Runs(8, 2, 300).ToArray(), 2, Gate()).Select(c => c.Length));
+        Assert.Equal([3, 3], BridgeBatches.Chunks(Runs(8, 2, 6).ToArray(), 2, Gate()).Select(c => c.Length));
+        // Mixed costs stay in order and cover every request once.
+        var mixed = Runs(8, 1, 5).Concat(Runs(512, 17, 2)).Concat(Runs(64, 3, 5)).ToArray();
+        var chunks = BridgeBatches.Chunks(mixed, 2, Gate());
+        Assert.Equal(Enumerable.Range(0, mixed.Length), chunks.SelectMany(c => Enumerable.Range(c.Start, c.Length)));
+        Assert.Equal([5, 1, 1, 5], chunks.Select(c => c.Length));
+    }
+
+    [Fact]
     public void RequestsWithoutAnOracleAreRejected()
     {
         var bare = new GroverRequest(new MarkedSet(8, [1]), 1);

@@ -5,10 +5,9 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Engines;
 
 /// <summary>
-/// Runs a batch of Grover requests as Q# calls on a bridge pool: the batch is cut into chunks of at
-/// most <c>maxRequestsPerCall</c> requests and at least one chunk per worker, each chunk is one call
-/// on its own bridge, and the chunks run on all workers at once. Shared by the Q# engines, which
-/// differ only in the call they build.
+/// Runs a batch of Grover requests as Q# calls on a bridge pool: the batch is cut into consecutive
+/// chunks, each chunk is one call on its own bridge, and the chunks run on all workers at once.
+/// Shared by the Q# engines, which differ in the call they build and in what a request costs.
 /// </summary>
 internal static class BridgeBatches
 {
@@ -18,18 +17,13 @@ internal static class BridgeBatches
     public static int[] Measure(
         BridgePool pool,
         IReadOnlyList<GroverRequest> requests,
-        int maxRequestsPerCall,
+        ChunkLimits limits,
         string operation,
         Func<IReadOnlyList<GroverRequest>, string> expression)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(maxRequestsPerCall, 1);
         var measured = new int[requests.Count];
         if (requests.Count == 0) return measured;
-        var chunkSize = Math.Min(maxRequestsPerCall, (requests.Count + pool.Workers - 1) / pool.Workers);
-        var chunks = Enumerable.Range(0, (requests.Count + chunkSize - 1) / chunkSize)
-            .Select(c => (Start: c * chunkSize, Length: Math.Min(chunkSize, requests.Count - c * chunkSize)))
-            .ToArray();
-        pool.ForEach(chunks, (chunk, bridge) =>
+        pool.ForEach(Chunks(requests, pool.Workers, limits), (chunk, bridge) =>
         {
             var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => requests[k]).ToArray();
             var shots = bridge.Run(expression(slice));
@@ -46,4 +40,37 @@ internal static class BridgeBatches
         });
         return measured;
     }
+
+    /// <summary>
+    /// Consecutive chunks of at most <see cref="ChunkLimits.MaxRequests"/> requests and at least one
+    /// per worker, closed early when the next request would take the chunk's cost past
+    /// <see cref="ChunkLimits.MaxCost"/> (a request costing more than that gets a chunk of its own).
+    /// </summary>
+    public static IReadOnlyList<(int Start, int Length)> Chunks(IReadOnlyList<GroverRequest> requests, int workers, ChunkLimits limits)
+    {
+        var countLimit = Math.Min(limits.MaxRequests, (requests.Count + workers - 1) / workers);
+        var chunks = new List<(int Start, int Length)>();
+        var (start, cost) = (0, 0.0);
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var next = limits.Cost(requests[k]);
+            if (k > start && (k - start == countLimit || cost + next > limits.MaxCost))
+            {
+                chunks.Add((start, k - start));
+                (start, cost) = (k, 0.0);
+            }
+            cost += next;
+        }
+        chunks.Add((start, requests.Count - start));
+        return chunks;
+    }
+}
+
+/// <summary>How much one Q# call may carry: a request count, and a budget in the engine's own cost unit.</summary>
+internal sealed record ChunkLimits(int MaxRequests, Func<GroverRequest, double> Cost, double MaxCost)
+{
+    /// <summary>Only a request count: every request costs the same.</summary>
+    public static ChunkLimits Count(int maxRequests) => new(maxRequests, _ => 1, double.PositiveInfinity);
+
+    public int MaxRequests { get; } = MaxRequests >= 1 ? MaxRequests : throw new ArgumentOutOfRangeException(nameof(MaxRequests), MaxRequests, "at least one request per call");
 }

@@ -21,7 +21,7 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
     public string Name => "fullstate";
 
     public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests) =>
-        BridgeBatches.Measure(pool, requests, maxRequestsPerCall, BatchOperation, BatchExpression);
+        BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression);
 
     /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>.</summary>
     public static string BatchExpression(IReadOnlyList<GroverRequest> requests)
