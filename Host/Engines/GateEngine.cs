@@ -11,7 +11,8 @@ namespace QuantumRayTracing.Engines;
 /// comparators, flags, everything uncomputed) on the QDK full-state simulator: exact and slow, for
 /// validation on single rays or small images and for resource estimates. Every request must carry
 /// its <see cref="GroverRequest.Oracle"/>; the marked set is then what the circuit computes, not an
-/// input. Batches are cut and spread over the workers as in <see cref="FullStateEngine"/>.
+/// input. Batches are cut and spread over the workers as in <see cref="FullStateEngine"/>, with each
+/// call also held to a simulation budget (<see cref="MaxCostPerCall"/>).
 /// </summary>
 public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall) : IGroverEngine
 {
