@@ -1,6 +1,5 @@
 using System.Globalization;
 using System.Text;
-using System.Text.Json;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Search;
 
@@ -9,8 +8,8 @@ namespace QuantumRayTracing.Engines;
 /// <summary>
 /// Runs Grover requests as Q# on the QDK full-state simulator: a batch is cut into chunks, each
 /// chunk is one call of the Q# operation <c>MeasureGroverBatch</c> on one bridge, and the chunks run
-/// on all workers at once. Registers are sized per request (see <see cref="SearchRegisters"/>).
-/// Measurement outcomes come from the simulator and cannot be seeded.
+/// on all workers at once (<see cref="BridgeBatches"/>). Registers are sized per request (see
+/// <see cref="SearchRegisters"/>). Measurement outcomes come from the simulator and cannot be seeded.
 /// </summary>
 public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall) : IGroverEngine
 {
@@ -21,31 +20,8 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
 
     public string Name => "fullstate";
 
-    public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
-    {
-        var measured = new int[requests.Count];
-        if (requests.Count == 0) return measured;
-        var chunkSize = Math.Min(maxRequestsPerCall, (requests.Count + pool.Workers - 1) / pool.Workers);
-        var chunks = Enumerable.Range(0, (requests.Count + chunkSize - 1) / chunkSize)
-            .Select(c => (Start: c * chunkSize, Length: Math.Min(chunkSize, requests.Count - c * chunkSize)))
-            .ToArray();
-        pool.ForEach(chunks, (chunk, bridge) =>
-        {
-            var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => requests[k]).ToArray();
-            var shots = bridge.Run(BatchExpression(slice));
-            var indices = JsonSerializer.Deserialize<int[]>(shots[0])
-                ?? throw new BridgeException($"{BatchOperation} returned no value");
-            if (indices.Length != slice.Length)
-                throw new BridgeException($"{BatchOperation} returned {indices.Length} indices for {slice.Length} requests");
-            for (var k = 0; k < slice.Length; k++)
-            {
-                if (indices[k] < 0 || indices[k] >= slice[k].Marked.Count)
-                    throw new BridgeException($"{BatchOperation} measured index {indices[k]} outside 0..{slice[k].Marked.Count - 1}");
-                measured[chunk.Start + k] = indices[k];
-            }
-        });
-        return measured;
-    }
+    public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests) =>
+        BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression);
 
     /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>.</summary>
     public static string BatchExpression(IReadOnlyList<GroverRequest> requests)

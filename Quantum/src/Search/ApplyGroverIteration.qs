@@ -14,11 +14,6 @@ namespace QuantumRayTracing.Search {
     /// Oracle output qubit in |1⟩; it stays in |1⟩.
     operation ApplyGroverIteration(count : Int, marked : Int[], index : Qubit[], flag : Qubit) : Unit is Adj + Ctl {
         ApplyMarkingOracle(marked, index, flag);
-        within {
-            Adjoint PrepareUniformSuperposition(count, index);
-            ApplyToEachCA(X, index);
-        } apply {
-            Controlled Z(index, flag);
-        }
+        ReflectAboutUniformSuperposition(count, index, flag);
     }
 }

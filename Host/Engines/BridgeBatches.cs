@@ -1,0 +1,76 @@
+using System.Text.Json;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Engines;
+
+/// <summary>
+/// Runs a batch of Grover requests as Q# calls on a bridge pool: the batch is cut into consecutive
+/// chunks, each chunk is one call on its own bridge, and the chunks run on all workers at once.
+/// Shared by the Q# engines, which differ in the call they build and in what a request costs.
+/// </summary>
+internal static class BridgeBatches
+{
+    /// <summary>One measured index per request, in order, each checked to lie below its request's N.</summary>
+    /// <remarks><paramref name="operation"/> names the Q# operation in error messages; <paramref name="expression"/>
+    /// builds the Q# call of one chunk, which must return one index per request.</remarks>
+    public static int[] Measure(
+        BridgePool pool,
+        IReadOnlyList<GroverRequest> requests,
+        ChunkLimits limits,
+        string operation,
+        Func<IReadOnlyList<GroverRequest>, string> expression)
+    {
+        var measured = new int[requests.Count];
+        if (requests.Count == 0) return measured;
+        pool.ForEach(Chunks(requests, pool.Workers, limits), (chunk, bridge) =>
+        {
+            var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => requests[k]).ToArray();
+            var shots = bridge.Run(expression(slice));
+            var indices = JsonSerializer.Deserialize<int[]>(shots[0])
+                ?? throw new BridgeException($"{operation} returned no value");
+            if (indices.Length != slice.Length)
+                throw new BridgeException($"{operation} returned {indices.Length} indices for {slice.Length} requests");
+            for (var k = 0; k < slice.Length; k++)
+            {
+                if (indices[k] < 0 || indices[k] >= slice[k].Marked.Count)
+                    throw new BridgeException($"{operation} measured index {indices[k]} outside 0..{slice[k].Marked.Count - 1}");
+                measured[chunk.Start + k] = indices[k];
+            }
+        });
+        return measured;
+    }
+
+    /// <summary>
+    /// Consecutive chunks of at most <see cref="ChunkLimits.MaxRequests"/> requests and at least one
+    /// per worker, closed early when the next request would take the chunk's cost past
+    /// <see cref="ChunkLimits.MaxCost"/> (a request costing more than that gets a chunk of its own).
+    /// </summary>
+    public static IReadOnlyList<(int Start, int Length)> Chunks(IReadOnlyList<GroverRequest> requests, int workers, ChunkLimits limits)
+    {
+        var countLimit = Math.Min(limits.MaxRequests, (requests.Count + workers - 1) / workers);
+        var chunks = new List<(int Start, int Length)>();
+        var (start, cost) = (0, 0.0);
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var next = limits.Cost(requests[k]);
+            if (k > start && (k - start == countLimit || cost + next > limits.MaxCost))
+            {
+                chunks.Add((start, k - start));
+                (start, cost) = (k, 0.0);
+            }
+            cost += next;
+        }
+        chunks.Add((start, requests.Count - start));
+        return chunks;
+    }
+}
+
+/// <summary>How much one Q# call may carry: a request count, and a budget in the engine's own cost unit.</summary>
+internal sealed record ChunkLimits(int MaxRequests, Func<GroverRequest, double> Cost, double MaxCost)
+{
+    /// <summary>Only a request count: every request costs the same.</summary>
+    public static ChunkLimits Count(int maxRequests) => new(maxRequests, _ => 1, double.PositiveInfinity);
+
+    public int MaxRequests { get; } = MaxRequests >= 1 ? MaxRequests : throw new ArgumentOutOfRangeException(nameof(MaxRequests), MaxRequests, "at least one request per call");
+}

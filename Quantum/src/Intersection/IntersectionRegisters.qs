@@ -1,0 +1,27 @@
+namespace QuantumRayTracing.Intersection {
+    /// # Summary
+    /// The oracle's work registers besides the index register (paper figs. 3-5), all in |0⟩
+    /// between oracle calls.
+    ///
+    /// # Input
+    /// ## Rpc
+    /// The ray/plane point's coordinate on the axis being tested (CoordinateBits qubits).
+    /// ## Coord
+    /// The primitive's minimum, then maximum, on that axis (CoordinateBits qubits).
+    /// ## AxisFlags
+    /// i_X, i_Y, i_Z: the point lies within the bounds on that axis.
+    /// ## Valid
+    /// The row holds a ray/plane point.
+    /// ## Depth
+    /// The row's depth (DepthBits qubits).
+    /// ## DepthFlags
+    /// [near, limit]: depth ≥ Near, and (depth, p) below the limit.
+    struct IntersectionRegisters {
+        Rpc : Qubit[],
+        Coord : Qubit[],
+        AxisFlags : Qubit[],
+        Valid : Qubit,
+        Depth : Qubit[],
+        DepthFlags : Qubit[],
+    }
+}
