@@ -194,8 +194,8 @@ public partial class GateOracleTests(FullStateFixture fixture)
         Assert.All(BridgeBatches.Chunks(Runs(512, 17, 10).ToArray(), 2, Gate()), c => Assert.Equal(1, c.Length));
         // N = 128 at r = 8: twenty runs fill a budget.
         Assert.Equal([20, 20, 10], BridgeBatches.Chunks(Runs(128, 8, 50).ToArray(), 2, Gate()).Select(c => c.Length));
-        // Cheap runs: the request cap, and at least one call per worker.
-        Assert.Equal([100, 100, 100], BridgeBatches.Chunks(Runs(8, 2, 300).ToArray(), 2, Gate()).Select(c => c.Length));
+        // Cheap runs: 300 at a cap of 100 on 2 workers take 2 waves of 2 calls, so 4 equal calls of 75.
+        Assert.Equal([75, 75, 75, 75], BridgeBatches.Chunks(Runs(8, 2, 300).ToArray(), 2, Gate()).Select(c => c.Length));
         Assert.Equal([3, 3], BridgeBatches.Chunks(Runs(8, 2, 6).ToArray(), 2, Gate()).Select(c => c.Length));
         // Mixed costs stay in order and cover every request once.
         var mixed = Runs(8, 1, 5).Concat(Runs(512, 17, 2)).Concat(Runs(64, 3, 5)).ToArray();

@@ -46,7 +46,34 @@ public sealed class PngEncoderTests : IDisposable
         Assert.Equal(13, BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(8)));
         Assert.Equal("IHDR"u8.ToArray(), png[12..16]);
         Assert.Equal([0, 0, 0x01, 0x2C, 0, 0, 0, 2, 8, 2, 0, 0, 0], png[16..29]); // 300 = 0x012C, 8-bit RGB
-        Assert.Equal(["IHDR", "IDAT", "IEND"], PngTestDecoder.ReadChunks(png).Select(c => c.Type));
+        var chunks = PngTestDecoder.ReadChunks(png);
+        Assert.Equal(["IHDR", "tEXt", "IDAT", "IEND"], chunks.Select(c => c.Type));
+        // tEXt is keyword, NUL, text (PNG spec 11.3.4.3): the marker that lets a later run replace this file.
+        Assert.Equal("Software\0QuantumRayTracing"u8.ToArray(), chunks[1].Data);
+    }
+
+    [Fact]
+    public void RecognisesOnlyItsOwnFiles()
+    {
+        var directory = Directory.CreateTempSubdirectory("qrt-png-");
+        try
+        {
+            var ours = Path.Combine(directory.FullName, "ours.png");
+            var foreign = Path.Combine(directory.FullName, "foreign.png");
+            var text = Path.Combine(directory.FullName, "notes.png");
+            PngEncoder.Write(new RgbImage(2, 2), ours);
+            var bytes = PngEncoder.Encode(new RgbImage(2, 2));
+            // The same PNG without its tEXt chunk: 8 signature bytes + 25 IHDR bytes, then skip 12 + 26 tEXt bytes.
+            File.WriteAllBytes(foreign, [.. bytes[..33], .. bytes[(33 + 12 + 26)..]]);
+            File.WriteAllText(text, "Software\0QuantumRayTracing");
+            Assert.True(PngEncoder.IsWrittenHere(ours));
+            Assert.False(PngEncoder.IsWrittenHere(foreign));
+            Assert.False(PngEncoder.IsWrittenHere(text));
+        }
+        finally
+        {
+            directory.Delete(recursive: true);
+        }
     }
 
     [Fact]

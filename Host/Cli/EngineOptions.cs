@@ -15,6 +15,7 @@ public sealed class EngineOptions
     private static readonly Dictionary<EngineKind, string> Descriptions = new()
     {
         [EngineKind.FullState] = "fullstate (Q# on the QDK full-state simulator; outcomes cannot be seeded)",
+        [EngineKind.Gate] = "gate (the gate-level intersection oracle, comparators and all, on the full-state simulator; exact, slow: tiny images)",
         [EngineKind.Analytic] = "analytic (exact outcome distributions sampled in C#; reproducible by seed)",
         [EngineKind.Classical] = "classical (brute force, every primitive tested: the reference)",
         [EngineKind.Randomized] = "randomized (floor(sqrt N) random primitives per ray, the paper's sec. 6.3)",
@@ -69,6 +70,7 @@ public sealed class EngineOptions
     public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers) => kind switch
     {
         EngineKind.FullState => new FullStateEngine(new BridgePool(workers)),
+        EngineKind.Gate => new GateEngine(new BridgePool(workers)),
         EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
     };
@@ -78,6 +80,8 @@ public sealed class EngineOptions
     {
         EngineKind.FullState or EngineKind.Analytic =>
             new QuantumHitSearch(Create(kind, root, workers), root.Fork(RandomStreams.Search), options),
+        EngineKind.Gate =>
+            new QuantumHitSearch(Create(kind, root, workers), root.Fork(RandomStreams.Search), options, gateLevel: true),
         EngineKind.Classical => new ClassicalHitSearch(),
         EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),

@@ -6,6 +6,7 @@ using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
+using QuantumRayTracing.Rays;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
@@ -66,7 +67,7 @@ public sealed class RenderCommand : Command
     };
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
-        EngineKind.FullState, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
+        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
 
     private readonly QSearchOptionSet _qsearch = new();
 
@@ -109,6 +110,13 @@ public sealed class RenderCommand : Command
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {scene.Lights.Count} lights, {width}x{height} pixels, {scene.Grid}");
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+        if (kind == EngineKind.Gate)
+        {
+            // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
+            var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
+            var registers = OracleRegisters.For(new OracleInput(centre, centre.FullRange));
+            AnsiConsole.WriteLine($"gate-level oracle, centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, 2 x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, 7 flags), {registers.PeakQubits} at peak with library auxiliaries");
+        }
 
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();

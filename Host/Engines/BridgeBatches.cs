@@ -42,13 +42,17 @@ internal static class BridgeBatches
     }
 
     /// <summary>
-    /// Consecutive chunks of at most <see cref="ChunkLimits.MaxRequests"/> requests and at least one
-    /// per worker, closed early when the next request would take the chunk's cost past
+    /// Consecutive chunks of at most <see cref="ChunkLimits.MaxRequests"/> requests, as equal as whole
+    /// waves over the workers allow, closed early when the next request would take the chunk's cost past
     /// <see cref="ChunkLimits.MaxCost"/> (a request costing more than that gets a chunk of its own).
     /// </summary>
     public static IReadOnlyList<(int Start, int Length)> Chunks(IReadOnlyList<GroverRequest> requests, int workers, ChunkLimits limits)
     {
-        var countLimit = Math.Min(limits.MaxRequests, (requests.Count + workers - 1) / workers);
+        // Equal chunks in whole waves over the workers: 1024 requests on 2 workers at most 500 per call
+        // go as 4 chunks of 256, not 500 + 500 + 24, which would leave one worker idle for a wave.
+        var perWave = (long)workers * limits.MaxRequests;
+        var waves = (int)((requests.Count + perWave - 1) / perWave);
+        var countLimit = (requests.Count + waves * workers - 1) / (waves * workers);
         var chunks = new List<(int Start, int Length)>();
         var (start, cost) = (0, 0.0);
         for (var k = 0; k < requests.Count; k++)

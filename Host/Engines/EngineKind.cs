@@ -6,6 +6,9 @@ public enum EngineKind
     /// <summary>The Q# operations on the QDK full-state simulator, through the Node bridge.</summary>
     FullState,
 
+    /// <summary>The gate-level intersection oracle (paper sec. 4.2) on the QDK full-state simulator: exact and slow.</summary>
+    Gate,
+
     /// <summary>Exact closed-form outcome distributions, sampled in C#.</summary>
     Analytic,
 
