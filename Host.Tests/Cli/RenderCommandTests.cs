@@ -1,0 +1,173 @@
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Search;
+using QuantumRayTracing.Tests.Output;
+using static QuantumRayTracing.Tests.Intersection.TestScenes;
+
+namespace QuantumRayTracing.Tests.Cli;
+
+/// <summary>`render` through <see cref="CommandLine.Run"/>: exit codes (0 ok, 1 usage, 2 bad input) and the files it writes or refuses to write.</summary>
+public sealed class RenderCommandTests : IDisposable
+{
+    private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+
+    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-render-").FullName;
+
+    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+
+    private string Scratch(string name) => Path.Combine(_scratch, name);
+
+    private string[] Files() => Directory.GetFiles(_scratch).Select(Path.GetFileName).Order().ToArray()!;
+
+    private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
+
+    private static RgbImage Classical(int size)
+    {
+        using var search = new ClassicalHitSearch();
+        return SceneRenderer.Render(Load("qornell-8.json"), search, new RenderOptions(size, size)).Image;
+    }
+
+    [Fact]
+    public void ClassicalRenderWritesAnImageOfTheRequestedSize()
+    {
+        var output = Scratch("x.png");
+        Assert.Equal(0, CommandLine.Run(["render", Scene, "--engine", "classical", "--size", "8", "-o", output]));
+        var image = Decode(output);
+        Assert.Equal((8, 8), (image.Width, image.Height));
+        Assert.True(image.Pixels.SequenceEqual(Classical(8).Pixels));
+        Assert.Equal(["x.png"], Files());
+    }
+
+    [Fact]
+    public void NonSquareSize()
+    {
+        var output = Scratch("wide.png");
+        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "6x3", "-o", output]));
+        Assert.Equal((6, 3), (Decode(output).Width, Decode(output).Height));
+    }
+
+    [Fact]
+    public void ClassicalImageIsTheReference()
+    {
+        var output = Scratch("c.png");
+        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", output]));
+        Assert.Equal(["c-difference.png", "c-reference.png", "c.png"], Files());
+        Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(Scratch("c-reference.png")));
+        var difference = Decode(Scratch("c-difference.png"));
+        var reference = Decode(output);
+        for (var y = 0; y < 8; y++)
+            for (var x = 0; x < 8; x++)
+            {
+                var (r, g, b) = reference.GetPixel(x, y);
+                Assert.Equal(((byte)(r / 4), (byte)(g / 4), (byte)(b / 4)), difference.GetPixel(x, y));
+            }
+    }
+
+    [Fact]
+    public void ReferenceAndDifferenceImagesOfAQuantumRender()
+    {
+        // One pass and one shadow round on the analytic engine leave wrong pixels to mark.
+        var output = Scratch("q.png");
+        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "analytic", "--seed", "3", "--size", "12", "--passes", "1", "--shadow-passes", "1", "--reference", "-o", output]));
+        var image = Decode(output);
+        var reference = Decode(Scratch("q-reference.png"));
+        var difference = Decode(Scratch("q-difference.png"));
+        Assert.True(reference.Pixels.SequenceEqual(Classical(12).Pixels));
+        var wrong = 0;
+        for (var y = 0; y < 12; y++)
+            for (var x = 0; x < 12; x++)
+            {
+                var differs = image.GetPixel(x, y) != reference.GetPixel(x, y);
+                wrong += differs ? 1 : 0;
+                // A reference pixel / 4 is at most 63, so pure red marks a difference and nothing else.
+                Assert.Equal(differs, difference.GetPixel(x, y) == (255, 0, 0));
+            }
+        Assert.True(wrong > 0);
+    }
+
+    [Fact]
+    public void OwnPngIsReplaced()
+    {
+        var output = Scratch("x.png");
+        PngEncoder.Write(new RgbImage(2, 2), output);
+        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(8, Decode(output).Width);
+    }
+
+    [Fact]
+    public void MissingDirectoryIsRefusedBeforeRendering()
+    {
+        var output = Path.Combine(_scratch, "missing", "x.png");
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.False(Directory.Exists(Path.Combine(_scratch, "missing")));
+        Assert.Empty(Files());
+    }
+
+    [Theory]
+    [InlineData(new byte[] { 110, 111, 116, 32, 111, 117, 114, 115 })]                  // "not ours"
+    [InlineData(new byte[] { 0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13 })] // a PNG start without our marker
+    public void ForeignFileIsNotOverwritten(byte[] content)
+    {
+        var output = Scratch("x.png");
+        File.WriteAllBytes(output, content);
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(content, File.ReadAllBytes(output));
+        Assert.Equal(["x.png"], Files());
+    }
+
+    [Fact]
+    public void ForeignFileAtASiblingOutputStopsEveryOutput()
+    {
+        var difference = Scratch("x-difference.png");
+        File.WriteAllText(difference, "someone else's");
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", Scratch("x.png")]));
+        Assert.Equal("someone else's", File.ReadAllText(difference));
+        Assert.Equal(["x-difference.png"], Files());
+    }
+
+    [Fact]
+    public void OutputOverTheInputSceneIsRefused()
+    {
+        var scene = Scratch("scene.json");
+        File.Copy(Scene, scene);
+        var before = File.ReadAllBytes(scene);
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "-o", scene]));
+        Assert.Equal(before, File.ReadAllBytes(scene));
+        Assert.Equal(["scene.json"], Files());
+    }
+
+    [Theory]
+    [InlineData("--size", "0")]
+    [InlineData("--size", "3x")]
+    [InlineData("--size", "x3")]
+    [InlineData("--size", "8193")]
+    [InlineData("--passes", "0")]
+    [InlineData("--passes", "65")]
+    [InlineData("--shadow-passes", "0")]
+    [InlineData("--engine", "bogus")]
+    [InlineData("--growth", "2")]
+    public void UsageErrorsExitWithOne(string option, string value)
+    {
+        Assert.Equal(1, CommandLine.Run(["render", Scene, "-e", "classical", option, value, "-o", Scratch("x.png")]));
+        Assert.Empty(Files());
+    }
+
+    [Fact]
+    public void SceneWithAnErrorExitsWithTwoAndWritesNothing()
+    {
+        // x = 40 is off the 5-bit grid 0..31.
+        var scene = Scratch("bad.json");
+        File.WriteAllText(scene, File.ReadAllText(Scene).Replace("\"max\": [16, 0, 30]", "\"max\": [40, 0, 30]"));
+        Assert.NotEqual(File.ReadAllText(Scene), File.ReadAllText(scene));
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", Scratch("x.png")]));
+        Assert.Equal(["bad.json"], Files());
+    }
+
+    [Fact]
+    public void MissingSceneExitsWithTwo()
+    {
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scratch("nowhere.json"), "-e", "classical", "-o", Scratch("x.png")]));
+        Assert.Empty(Files());
+    }
+}
