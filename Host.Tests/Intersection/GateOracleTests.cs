@@ -221,9 +221,10 @@ public partial class GateOracleTests(FullStateFixture fixture)
         var geometry = StackScene.Value;
         var table = RayTable.Build(geometry, new Ray(new Vec3(7.5, 7.5, 0), new Vec3(0, 0, 1)));
         var input = new OracleInput(table, HitWindow.Range(3, Ray.Unbounded, geometry.Count));
+        // Planes spanning [0, 15) in x and y hold the cells 0..14 (SceneGeometry: half-open spans).
         Assert.Equal(
             "new QuantumRayTracing.Intersection.IntersectionInput { CoordinateBits = 4, DepthBits = 4, "
-            + "Bounds = [[0, 15, 0, 15, 2, 2], [0, 15, 0, 15, 4, 4], [0, 15, 0, 15, 6, 6], [0, 15, 0, 15, 8, 8], [0, 15, 0, 15, 10, 10], [0, 15, 0, 15, 12, 12]], "
+            + "Bounds = [[0, 14, 0, 14, 2, 2], [0, 14, 0, 14, 4, 4], [0, 14, 0, 14, 6, 6], [0, 14, 0, 14, 8, 8], [0, 14, 0, 14, 10, 10], [0, 14, 0, 14, 12, 12]], "
             + "Points = [[7, 7, 2], [7, 7, 4], [7, 7, 6], [7, 7, 8], [7, 7, 10], [7, 7, 12]], "
             + "Valid = [true, true, true, true, true, true], Depths = [2, 4, 6, 8, 10, 12], Near = 3, Limit = 128 }",
             GateEngine.OracleArgument(input));

@@ -89,36 +89,40 @@ public class RayTableTests
         Assert.True(table.Verify(0, table.FullRange));
         Assert.Equal(5, table.DepthBits);
         Assert.Equal(5, table.CoordinateBits);
-        Assert.Equal((5, 14), (table.Geometry.Min(0, 0), table.Geometry.Max(0, 0)));
-        Assert.Equal((2, 11), (table.Geometry.Min(0, 1), table.Geometry.Max(0, 1)));
+        // Cells held: x from 5 up to one step below the max corner 14, y from 2 to one below 11.
+        Assert.Equal((5, 13), (table.Geometry.Min(0, 0), table.Geometry.Max(0, 0)));
+        Assert.Equal((2, 10), (table.Geometry.Min(0, 1), table.Geometry.Max(0, 1)));
         Assert.Equal((18, 18), (table.Geometry.Min(0, 2), table.Geometry.Max(0, 2)));
     }
 
     [Theory]
-    [InlineData(3.5, 2.75, true)]   // max corner (14, 11)
-    [InlineData(1.25, 0.5, true)]   // min corner (5, 2)
-    [InlineData(1.25, 1.0, true)]   // min-x edge (5, 4)
-    [InlineData(2.0, 2.75, true)]   // max-y edge (8, 11)
-    [InlineData(3.74, 1.0, true)]   // 14.96 floors to the edge 14
-    [InlineData(3.75, 1.0, false)]  // 15, one step past x max
-    [InlineData(1.2, 1.0, false)]   // 4.8 → 4, below x min
-    [InlineData(2.0, 3.0, false)]   // 12, one step past y max
-    [InlineData(2.0, 0.45, false)]  // 1.8 → 1, below y min
-    public void EdgesAndCornersAreInside(double x, double y, bool inside)
+    [InlineData(1.25, 0.5, true)]    // min corner (5, 2)
+    [InlineData(1.25, 1.0, true)]    // min-x edge (5, 4)
+    [InlineData(2.0, 0.5, true)]     // min-y edge (8, 2)
+    [InlineData(3.49, 2.74, true)]   // (13.96, 10.96) floors to the last cell (13, 10)
+    [InlineData(3.49, 1.0, true)]    // 13.96 → 13, the last x cell
+    [InlineData(3.5, 2.75, false)]   // max corner (14, 11): the next rectangle's cell
+    [InlineData(3.5, 1.0, false)]    // max-x edge 14
+    [InlineData(2.0, 2.75, false)]   // max-y edge 11
+    [InlineData(3.75, 1.0, false)]   // 15, past x max
+    [InlineData(1.2, 1.0, false)]    // 4.8 → 4, below x min
+    [InlineData(2.0, 0.45, false)]   // 1.8 → 1, below y min
+    public void MinEdgesAreInsideMaxEdgesAreNot(double x, double y, bool inside)
     {
+        // The rectangle spans [1.25, 3.5) x [0.5, 2.75): half-open, so tiles sharing an edge never both claim a point.
         var table = Table(Fixed, new Ray(new Vec3(x, y, 0), new Vec3(0, 0, 1)));
         Assert.True(table.IsValid(0));
         Assert.Equal(inside, table.Verify(0, table.FullRange));
     }
 
     [Fact]
-    public void IntegerEdgesAreInside()
+    public void IntegerRectangleHoldsExactlyItsHalfOpenSpan()
     {
-        // Square 2..6 x 2..6: every corner and an edge midpoint are inside; 6.99 floors to 6; 7 is outside.
-        foreach (var (x, y) in new[] { (2.0, 2.0), (6.0, 6.0), (2.0, 6.0), (6.0, 2.0), (4.0, 6.0), (6.99, 4.0) })
+        // Square [2, 6) x [2, 6): the min corner and min edges are inside, up to 5.99; 6 and beyond, or below 2, are not.
+        foreach (var (x, y) in new[] { (2.0, 2.0), (2.0, 4.0), (4.0, 2.0), (5.99, 5.99), (5.99, 4.0) })
             Assert.True(Table(Integer, new Ray(new Vec3(x, y, 0), new Vec3(0, 0, 1))).Verify(0, HitWindow.Range(0, 100, 2)), $"({x}, {y})");
-        Assert.False(Table(Integer, new Ray(new Vec3(7, 4, 0), new Vec3(0, 0, 1))).Verify(0, HitWindow.Range(0, 100, 2)));
-        Assert.False(Table(Integer, new Ray(new Vec3(1.99, 4, 0), new Vec3(0, 0, 1))).Verify(0, HitWindow.Range(0, 100, 2)));
+        foreach (var (x, y) in new[] { (6.0, 6.0), (2.0, 6.0), (6.0, 2.0), (4.0, 6.0), (6.99, 4.0), (1.99, 4.0) })
+            Assert.False(Table(Integer, new Ray(new Vec3(x, y, 0), new Vec3(0, 0, 1))).Verify(0, HitWindow.Range(0, 100, 2)), $"({x}, {y})");
     }
 
     [Fact]

@@ -137,8 +137,17 @@ public sealed class PngEncoderTests : IDisposable
         var path = Path.Combine(_scratch, "taken");
         Directory.CreateDirectory(path);
         Assert.ThrowsAny<IOException>(() => PngEncoder.Write(new RgbImage(2, 2), path));
-        Assert.False(File.Exists(path + ".tmp"));
         Assert.Equal([path], Directory.GetFileSystemEntries(_scratch));
+    }
+
+    [Fact]
+    public void LeavesAFileNamedLikeATemporaryOneAlone()
+    {
+        var path = Path.Combine(_scratch, "x.png");
+        File.WriteAllText(path + ".tmp", "the user's notes");
+        PngEncoder.Write(new RgbImage(2, 2), path);
+        Assert.Equal("the user's notes", File.ReadAllText(path + ".tmp"));
+        Assert.Equal(2, Directory.GetFileSystemEntries(_scratch).Length);
     }
 
     private static void AssertSamePixels(RgbImage expected, int width, int height, byte[] rgb)

@@ -7,6 +7,12 @@ namespace QuantumRayTracing.Intersection;
 /// The scene's primitives as the oracle sees them: each rectangle's bounds as fixed-point grid
 /// integers (value · 2^FractionBits), its flat axis and plane. Built once per scene.
 /// </summary>
+/// <remarks>
+/// Bounds are the grid cells a quantised point may fall in. Points are quantised by flooring, so a
+/// rectangle spanning [a, b) on an axis holds the cells a … b − 1 (one step below its max corner):
+/// with the inclusive comparison verify-rpc makes, a point is inside exactly when a ≤ value &lt; b, and
+/// rectangles that share an edge never both claim a point. On the flat axis min = max = the plane.
+/// </remarks>
 public sealed class SceneGeometry
 {
     private readonly int[] _min;
@@ -24,7 +30,8 @@ public sealed class SceneGeometry
             for (var axis = 0; axis < 3; axis++)
             {
                 _min[p * 3 + axis] = ToGrid(scene.Rectangles[p].Min[axis], p);
-                _max[p * 3 + axis] = ToGrid(scene.Rectangles[p].Max[axis], p);
+                var max = ToGrid(scene.Rectangles[p].Max[axis], p);
+                _max[p * 3 + axis] = axis == scene.Rectangles[p].FlatAxis ? max : max - 1;
             }
     }
 
@@ -41,7 +48,7 @@ public sealed class SceneGeometry
     /// <summary>Fixed-point minimum of primitive <paramref name="p"/> along <paramref name="axis"/>.</summary>
     public int Min(int p, int axis) => _min[p * 3 + axis];
 
-    /// <summary>Fixed-point maximum of primitive <paramref name="p"/> along <paramref name="axis"/>.</summary>
+    /// <summary>The last grid cell of primitive <paramref name="p"/> along <paramref name="axis"/>: its max corner minus one step, or the plane on the flat axis.</summary>
     public int Max(int p, int axis) => _max[p * 3 + axis];
 
     /// <summary>Scale from world units to grid integers: 2^FractionBits.</summary>

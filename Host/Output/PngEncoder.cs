@@ -53,7 +53,7 @@ public static class PngEncoder
 
     /// <summary>
     /// Writes <paramref name="image"/> to <paramref name="path"/>, replacing an existing file. The PNG goes to
-    /// <c>path + ".tmp"</c> first and is renamed, so a failure never leaves a partial or truncated image behind.
+    /// a temporary file first and is renamed (<see cref="AtomicFile"/>), so a failure never leaves a partial or truncated image behind.
     /// </summary>
     public static void Write(RgbImage image, string path)
     {
