@@ -54,7 +54,7 @@ public sealed class BenchRenderCommand : Command
         Description = "Write the Markdown report here (e.g. docs/rendering-results.md). It replaces only a report this command wrote before.",
     };
 
-    public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix) and an engine comparison (wall time per ray).")
+    public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
     {
         Options.Add(_scenes);
         Options.Add(_size);
@@ -147,6 +147,25 @@ public sealed class BenchRenderCommand : Command
                 var m = RenderMeasurement.Run(qornell, kind, engineOptions, ourRule, seed, workers, classical);
                 text.AppendLine($"| {EngineOptions.Name(kind)} | {m.Result.Total.Rays} | {F(m.Result.Total.PerRayConservative)} | {m.Error.Nrmse:P2} | {m.Error.DifferentPixels} | {m.WallTime.TotalSeconds:0.00} s | {m.MillisecondsPerRay:0.000} | {m.WallTime / classical.WallTime:0.0}x |");
                 engineTask.Increment(1);
+            }
+
+            text.AppendLine();
+            text.AppendLine("## The gate-level oracle against the lookup form (qornell-8, 8x8, 4 passes)");
+            text.AppendLine();
+            text.AppendLine("The same searches with the oracle built from comparators (`gate`) and from the marked set (`fullstate`), both on the QDK simulator.");
+            text.AppendLine();
+            text.AppendLine("| engine | #Rays | Int/Ray | #Dpix | wall time | ms per ray |");
+            text.AppendLine("|---|---|---|---|---|---|");
+            var small = Load("qornell-8");
+            var smallOptions = new RenderOptions(8, 8);
+            var smallReference = RenderMeasurement.Reference(small, smallOptions);
+            EngineKind[] simulated = [EngineKind.Gate, EngineKind.FullState];
+            var gateTask = progress.AddTask("gate-level oracle", maxValue: simulated.Length);
+            foreach (var kind in simulated)
+            {
+                var m = RenderMeasurement.Run(small, kind, smallOptions, ourRule, seed, workers, smallReference);
+                text.AppendLine($"| {EngineOptions.Name(kind)} | {m.Result.Total.Rays} | {F(m.Result.Total.PerRayConservative)} | {m.Error.DifferentPixels} | {m.WallTime.TotalSeconds:0.00} s | {m.MillisecondsPerRay:0.0} |");
+                gateTask.Increment(1);
             }
         });
         text.AppendLine();
