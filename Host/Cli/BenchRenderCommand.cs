@@ -132,43 +132,32 @@ public sealed class BenchRenderCommand : Command
             }
             text.AppendLine();
 
-            var engineSize = parse.GetValue(_engineSize);
-            text.AppendLine($"## Engines side by side (qornell-64, {engineSize}x{engineSize}, 4 passes, conservative count, default M rule)");
-            text.AppendLine();
-            text.AppendLine("| engine | #Rays | Int/Ray | NRMSE | #Dpix | wall time | ms per ray | wall time / classical |");
-            text.AppendLine("|---|---|---|---|---|---|---|---|");
-            var qornell = Load("qornell-64");
-            var engineOptions = new RenderOptions(engineSize, engineSize);
-            var classical = RenderMeasurement.Reference(qornell, engineOptions);
-            EngineKind[] kinds = [EngineKind.Classical, EngineKind.Randomized, EngineKind.Analytic, EngineKind.FullState];
-            var engineTask = progress.AddTask("engines", maxValue: kinds.Length);
-            foreach (var kind in kinds)
+            void CompareEngines(string title, string note, Scene scene, RenderOptions options, EngineKind[] kinds)
             {
-                var m = RenderMeasurement.Run(qornell, kind, engineOptions, ourRule, seed, workers, classical);
-                text.AppendLine($"| {EngineOptions.Name(kind)} | {m.Result.Total.Rays} | {F(m.Result.Total.PerRayConservative)} | {m.Error.Nrmse:P2} | {m.Error.DifferentPixels} | {m.WallTime.TotalSeconds:0.00} s | {m.MillisecondsPerRay:0.000} | {m.WallTime / classical.WallTime:0.0}x |");
-                engineTask.Increment(1);
+                text.AppendLine(title);
+                text.AppendLine();
+                if (note.Length > 0) text.AppendLine(note).AppendLine();
+                text.AppendLine("| engine | #Rays | Int/Ray | NRMSE | #Dpix | wall time | ms per ray | wall time / classical |");
+                text.AppendLine("|---|---|---|---|---|---|---|---|");
+                var classical = RenderMeasurement.Reference(scene, options);
+                var task = progress.AddTask(title.TrimStart('#', ' '), maxValue: kinds.Length);
+                foreach (var kind in kinds)
+                {
+                    var m = RenderMeasurement.Run(scene, kind, options, ourRule, seed, workers, classical);
+                    text.AppendLine($"| {EngineOptions.Name(kind)} | {m.Result.Total.Rays} | {F(m.Result.Total.PerRayConservative)} | {m.Error.Nrmse:P2} | {m.Error.DifferentPixels} | {m.WallTime.TotalSeconds:0.00} s | {m.MillisecondsPerRay:0.000} | {m.WallTime / classical.WallTime:0.0}x |");
+                    task.Increment(1);
+                }
+                text.AppendLine();
             }
 
-            text.AppendLine();
-            text.AppendLine("## The gate-level oracle against the lookup form (qornell-8, 8x8, 4 passes)");
-            text.AppendLine();
-            text.AppendLine("The same searches with the oracle built from comparators (`gate`) and from the marked set (`fullstate`), both on the QDK simulator.");
-            text.AppendLine();
-            text.AppendLine("| engine | #Rays | Int/Ray | #Dpix | wall time | ms per ray |");
-            text.AppendLine("|---|---|---|---|---|---|");
-            var small = Load("qornell-8");
-            var smallOptions = new RenderOptions(8, 8);
-            var smallReference = RenderMeasurement.Reference(small, smallOptions);
-            EngineKind[] simulated = [EngineKind.Gate, EngineKind.FullState];
-            var gateTask = progress.AddTask("gate-level oracle", maxValue: simulated.Length);
-            foreach (var kind in simulated)
-            {
-                var m = RenderMeasurement.Run(small, kind, smallOptions, ourRule, seed, workers, smallReference);
-                text.AppendLine($"| {EngineOptions.Name(kind)} | {m.Result.Total.Rays} | {F(m.Result.Total.PerRayConservative)} | {m.Error.DifferentPixels} | {m.WallTime.TotalSeconds:0.00} s | {m.MillisecondsPerRay:0.0} |");
-                gateTask.Increment(1);
-            }
+            var engineSize = parse.GetValue(_engineSize);
+            CompareEngines($"## Engines side by side (qornell-64, {engineSize}x{engineSize}, 4 passes, conservative count, default M rule)", "",
+                Load("qornell-64"), new RenderOptions(engineSize, engineSize),
+                [EngineKind.Classical, EngineKind.Randomized, EngineKind.Analytic, EngineKind.FullState]);
+            CompareEngines("## The gate-level oracle against the lookup form (qornell-8, 8x8, 4 passes)",
+                "The same searches with the oracle built from comparators (`gate`) and from the marked set (`fullstate`), both on the QDK simulator.",
+                Load("qornell-8"), new RenderOptions(8, 8), [EngineKind.Gate, EngineKind.FullState]);
         });
-        text.AppendLine();
         text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
         text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
         var body = text.ToString();
