@@ -7,8 +7,10 @@ namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// The loop every pass shares: up to <c>iterations</c> rounds, each searching every unfinished ray
-/// once through the engine seam. Rays go a block at a time, so only one block's lookup tables are in
-/// memory; the pass decides the window of each search and what an outcome means.
+/// once through the engine seam. A ray's lookup table is built in its first round (a block of rays
+/// at a time, so only one block's full tables are in memory) and only its compact form, the rows
+/// inside their rectangles, is kept for later rounds. The pass decides the window of each search and
+/// what an outcome means.
 /// </summary>
 public static class IteratedSearch
 {
