@@ -47,7 +47,7 @@ public class DirectPassTests
     public void ClassicalReportsExactlyTheOccludedRayInOneRound()
     {
         using var search = new ClassicalHitSearch();
-        var (occluded, metrics) = DirectPass.Run("shadow", search, Geometry, [Occluded, Visible, Occluded], DirectPass.DefaultIterations);
+        var (occluded, metrics) = DirectPass.Run("shadow", search, Geometry, [Occluded, Visible, Occluded], new PassOptions(DirectPass.DefaultIterations));
         Assert.Equal([true, false, true], occluded);
         Assert.Equal(1, metrics.Iterations);
         Assert.Equal(new SearchCost(0, 0, 3 * 5, 0), metrics.Cost);
@@ -60,9 +60,9 @@ public class DirectPassTests
         for (var seed = 1UL; seed <= 4; seed++)
         {
             using var quantum = Quantum(seed);
-            Assert.DoesNotContain(true, DirectPass.Run("shadow", quantum, Geometry, rays, 4).Occluded);
+            Assert.DoesNotContain(true, DirectPass.Run("shadow", quantum, Geometry, rays, new PassOptions(4)).Occluded);
             using var randomized = new RandomizedHitSearch(new SeededRandom(seed));
-            Assert.DoesNotContain(true, DirectPass.Run("shadow", randomized, Geometry, rays, 4).Occluded);
+            Assert.DoesNotContain(true, DirectPass.Run("shadow", randomized, Geometry, rays, new PassOptions(4)).Occluded);
         }
     }
 
@@ -73,7 +73,7 @@ public class DirectPassTests
         // unoccluded after two rounds missed twice: q².
         const int rays = 5000;
         using var quantum = Quantum(8);
-        var (occluded, metrics) = DirectPass.Run("shadow", quantum, Geometry, Enumerable.Repeat(Occluded, rays).ToArray(), 2);
+        var (occluded, metrics) = DirectPass.Run("shadow", quantum, Geometry, Enumerable.Repeat(Occluded, rays).ToArray(), new PassOptions(2));
         var q = QSearchExpectations.FalseNegative(5, 1, new QSearchSchedule(5));
         StatisticalBounds.AssertBinomial(occluded.Count(o => !o), q * q, rays, "shadow rays left unoccluded after 2 rounds");
         Assert.Equal(2, metrics.Iterations);
@@ -86,7 +86,7 @@ public class DirectPassTests
         // still unoccluded after two rounds with (3/5)².
         const int rays = 5000;
         using var randomized = new RandomizedHitSearch(new SeededRandom(9));
-        var (occluded, _) = DirectPass.Run("shadow", randomized, Geometry, Enumerable.Repeat(Occluded, rays).ToArray(), 2);
+        var (occluded, _) = DirectPass.Run("shadow", randomized, Geometry, Enumerable.Repeat(Occluded, rays).ToArray(), new PassOptions(2));
         StatisticalBounds.AssertBinomial(occluded.Count(o => !o), 0.36, rays, "randomized shadow rays left unoccluded");
     }
 }

@@ -20,7 +20,7 @@ public class TracePassTests
         new(new AnalyticEngine(new SeededRandom(seed).Fork(RandomStreams.Engine)), new SeededRandom(seed).Fork(RandomStreams.Search), new QSearchOptions());
 
     private static (Hit?[] Hits, PassMetrics Metrics) Trace(Scene scene, IHitSearch search, int size, int iterations, TieBreak tieBreak = TieBreak.Strict) =>
-        TracePass.Run("primary", search, new SceneGeometry(scene), CameraRays.For(scene.Camera, size, size), iterations, tieBreak);
+        TracePass.Run("primary", search, new SceneGeometry(scene), CameraRays.For(scene.Camera, size, size), new PassOptions(iterations, tieBreak));
 
     [Fact]
     public void CentreRayOfQornellHitsTheBackWall()
@@ -59,7 +59,7 @@ public class TracePassTests
         var geometry = new SceneGeometry(scene);
         var rays = CameraRays.For(scene.Camera, size, size);
         using var search = new ClassicalHitSearch();
-        var (hits, _) = TracePass.Run("primary", search, geometry, rays, 1, TieBreak.Strict);
+        var (hits, _) = TracePass.Run("primary", search, geometry, rays, new PassOptions(1, TieBreak.Strict));
         for (var i = 0; i < rays.Length; i++)
         {
             var table = RayTable.Build(geometry, rays[i]);
@@ -77,11 +77,11 @@ public class TracePassTests
         var geometry = new SceneGeometry(Qornell16);
         var rays = CameraRays.For(Qornell16.Camera, 32, 32);
         using var classical = new ClassicalHitSearch();
-        var (reference, _) = TracePass.Run("primary", classical, geometry, rays, 1, TieBreak.Strict);
+        var (reference, _) = TracePass.Run("primary", classical, geometry, rays, new PassOptions(1, TieBreak.Strict));
         foreach (var (seed, iterations) in new[] { (1UL, 1), (2UL, 2), (3UL, 4) })
         {
             using var quantum = Quantum(seed);
-            var (hits, metrics) = TracePass.Run("primary", quantum, geometry, rays, iterations, TieBreak.Strict);
+            var (hits, metrics) = TracePass.Run("primary", quantum, geometry, rays, new PassOptions(iterations, TieBreak.Strict));
             Assert.Equal(iterations, metrics.Iterations); // never certain, so every round runs
             var farther = 0;
             for (var i = 0; i < rays.Length; i++)
@@ -110,7 +110,7 @@ public class TracePassTests
         var geometry = new SceneGeometry(Qornell16);
         var rays = CameraRays.For(Qornell16.Camera, 32, 32);
         using var classical = new ClassicalHitSearch();
-        var (reference, _) = TracePass.Run("primary", classical, geometry, rays, 1, TieBreak.Strict);
+        var (reference, _) = TracePass.Run("primary", classical, geometry, rays, new PassOptions(1, TieBreak.Strict));
         var accepted = rays.Select(r => { var t = RayTable.Build(geometry, r); return t.Marked(t.FullRange).MarkedCount; }).ToArray();
         Assert.True(accepted.Max() >= 3, "the scene should have rays with several hits");
         var schedule = new QSearchSchedule(geometry.Count);
@@ -121,7 +121,7 @@ public class TracePassTests
             var interval = PassExpectations.PoissonBinomialInterval(probabilities, StatisticalBounds.FalseFailure);
             intervals[iterations] = interval;
             using var quantum = Quantum(100 + (ulong)iterations);
-            var (hits, _) = TracePass.Run("primary", quantum, geometry, rays, iterations, TieBreak.Strict);
+            var (hits, _) = TracePass.Run("primary", quantum, geometry, rays, new PassOptions(iterations, TieBreak.Strict));
             var wrong = Enumerable.Range(0, rays.Length).Count(i => hits[i]?.Primitive != reference[i]?.Primitive);
             Assert.True(wrong >= interval.Low && wrong <= interval.High,
                 $"#IT = {iterations}: {wrong} of {rays.Length} pixels differ from classical; expected {probabilities.Sum():0.#}, interval [{interval.Low}, {interval.High}]");
@@ -150,8 +150,8 @@ public class TracePassTests
         var random = new int?[seeds];
         for (var s = 0; s < seeds; s++)
         {
-            using (var search = Quantum((ulong)s)) strict[s] = TracePass.Run("primary", search, geometry, TieRay, rounds, TieBreak.Strict).Hits[0]?.Primitive;
-            using (var search = Quantum((ulong)s)) random[s] = TracePass.Run("primary", search, geometry, TieRay, rounds, TieBreak.Random).Hits[0]?.Primitive;
+            using (var search = Quantum((ulong)s)) strict[s] = TracePass.Run("primary", search, geometry, TieRay, new PassOptions(rounds, TieBreak.Strict)).Hits[0]?.Primitive;
+            using (var search = Quantum((ulong)s)) random[s] = TracePass.Run("primary", search, geometry, TieRay, new PassOptions(rounds, TieBreak.Random)).Hits[0]?.Primitive;
         }
         Assert.All(strict, p => Assert.Equal(1, p));
         // Random keeps whichever depth-8 primitive it lands on first; ids 1 and 2 are symmetric, so each is
@@ -159,6 +159,6 @@ public class TracePassTests
         Assert.All(random, p => Assert.Contains(p, new int?[] { 1, 2 }));
         StatisticalBounds.AssertBinomial(random.Count(p => p == 2), 0.5, seeds, "random tie-break: id 2 chosen");
         using var classical = new ClassicalHitSearch();
-        Assert.Equal(1, TracePass.Run("primary", classical, geometry, TieRay, 1, TieBreak.Random).Hits[0]?.Primitive);
+        Assert.Equal(1, TracePass.Run("primary", classical, geometry, TieRay, new PassOptions(1, TieBreak.Random)).Hits[0]?.Primitive);
     }
 }

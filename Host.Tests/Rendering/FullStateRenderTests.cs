@@ -37,12 +37,12 @@ public class FullStateRenderTests(FullStateFixture fixture)
         var geometry = new SceneGeometry(Qornell8);
         var rays = CameraRays.For(Qornell8.Camera, 12, 12);
         using var classical = new ClassicalHitSearch();
-        var (reference, _) = TracePass.Run("primary", classical, geometry, rays, 1, TieBreak.Strict);
+        var (reference, _) = TracePass.Run("primary", classical, geometry, rays, new PassOptions(1, TieBreak.Strict));
         var outcomes = new List<int>();
         for (var k = 0; k < repeats; k++)
         {
             using var engine = search(k);
-            var (hits, _) = TracePass.Run("primary", engine, geometry, rays, 1, TieBreak.Strict);
+            var (hits, _) = TracePass.Run("primary", engine, geometry, rays, new PassOptions(1, TieBreak.Strict));
             for (var i = 0; i < rays.Length; i++)
                 outcomes.Add((int)(hits[i] is not { } h ? Outcome.Nothing : h.Primitive == reference[i]?.Primitive ? Outcome.Closest : Outcome.Other));
         }

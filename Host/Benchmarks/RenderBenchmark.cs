@@ -31,5 +31,5 @@ public sealed record RenderMeasurement(RenderResult Result, ImageError Error, Ti
 
     /// <summary>The classical render every other render of these options is compared with.</summary>
     public static RenderMeasurement Reference(Scene scene, RenderOptions options) =>
-        Run(scene, EngineKind.Classical, options with { TieBreak = Intersection.TieBreak.Strict }, new QSearchOptions(), 0, 1, null);
+        Run(scene, EngineKind.Classical, RenderDefaults.Reference(options), new QSearchOptions(), 0, 1, null);
 }

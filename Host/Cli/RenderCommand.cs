@@ -66,6 +66,25 @@ public sealed class RenderCommand : Command
         Description = "Also write the classical reference (<output>-reference.png) and a difference image (<output>-difference.png: differing pixels red).",
     };
 
+    private readonly Option<bool> _neighbours = new("--neighbours")
+    {
+        Description = "NeighOpt (Algorithm 5): after each round, test every primary and specular ray against the primitives its 4 neighbours hold (classical tests, counted in #C_Int; changed pixels in #Cpix).",
+        DefaultValueFactory = _ => RenderDefaults.Neighbours,
+    };
+
+    private readonly Option<bool> _shadowNeighbours = new("--shadow-neighbours")
+    {
+        Description = "After each shadow round, test every unoccluded shadow ray against the occluders its neighbours' rays to the same light found.",
+        DefaultValueFactory = _ => RenderDefaults.ShadowNeighbours,
+    };
+
+    private readonly Option<StopMode> _stop = new("--stop")
+    {
+        Description = "Termination criterion (sec. 6.2): after sn empty searches a ray is searched again with probability p̄^sn. off; paper (p̄ from eq. 10 at r = M_l / eq. 11, t uniform); exact (our search's exact miss rate, t uniform); scene (exact, for the t measured on a lattice of primary rays).",
+        DefaultValueFactory = _ => RenderDefaults.Stop,
+        HelpName = "off|paper|exact|scene",
+    };
+
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
         EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
 
@@ -80,6 +99,9 @@ public sealed class RenderCommand : Command
         Options.Add(_size);
         Options.Add(_tieBreak);
         Options.Add(_reference);
+        Options.Add(_neighbours);
+        Options.Add(_shadowNeighbours);
+        Options.Add(_stop);
         _engine.AddTo(this);
         _qsearch.AddTo(this);
         _passes.Between(1, 64);
@@ -106,7 +128,8 @@ public sealed class RenderCommand : Command
         ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
 
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
-        var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak));
+        var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
+            parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed));
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {scene.Lights.Count} lights, {width}x{height} pixels, {scene.Grid}");
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
@@ -127,7 +150,7 @@ public sealed class RenderCommand : Command
         clock.Restart();
         var referenceProgress = new ConsoleProgress("classical reference");
         using var classical = new ClassicalHitSearch();
-        var reference = SceneRenderer.Render(scene, classical, options with { TieBreak = TieBreak.Strict }, referenceProgress);
+        var reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(options), referenceProgress);
         var referenceTime = clock.Elapsed;
         progress.Finish();
         referenceProgress.Finish();
@@ -165,6 +188,7 @@ public sealed class RenderCommand : Command
         Row("#Int, conservative", p => N(p.IntersectionsConservative));
         Row("Int/Ray, conservative", p => p.PerRayConservative.ToString("0.00", CultureInfo.InvariantCulture));
         Row("Int/Ray, paper", p => p.PerRayPaper.ToString("0.00", CultureInfo.InvariantCulture));
+        Row("#Cpix (neighbours)", p => N(p.UpdatedPixels));
         Row("table rows (eval-rpc)", p => N(p.TableRows));
         Row("wall time", p => $"{p.Elapsed.TotalSeconds:0.00} s");
         table.Caption($"classical reference: {N(classical.Rays)} rays, Int/Ray {classical.PerRayConservative:0.00}");

@@ -43,31 +43,16 @@ public sealed class RayTable
         _points = new int[n * 3];
         _depths = new int[n];
         _distances = new double[n];
-        var limit = 1 << geometry.Grid.Bits;
-        var scale = geometry.Scale;
-        var principal = ray.PrincipalAxis;
         var maxDepth = 0;
         for (var p = 0; p < n; p++)
         {
-            var flat = geometry.Rectangles[p].FlatAxis;
-            var along = ray.Direction[flat];
-            if (p == ray.ExcludedPrimitive || Math.Abs(along) < 1e-12) continue;
-            var t = (geometry.Rectangles[p].PlaneOffset - ray.Origin[flat]) / along;
-            if (!(t > SnapTolerance) || t >= ray.MaxDistance) continue;
-            var point = ray.At(t);
-            var inGrid = true;
-            for (var axis = 0; axis < 3; axis++)
-            {
-                var q = axis == flat ? geometry.Min(p, axis) : Quantise(point[axis], scale);
-                inGrid &= q >= 0 && q < limit;
-                _points[p * 3 + axis] = q;
-            }
-            var depth = Quantise(t * Math.Abs(ray.Direction[principal]), scale);
-            if (!inGrid || depth < 0) continue;
+            var row = EvaluateRow(geometry, ray, p);
+            if (!row.Valid) continue;
+            (_points[p * 3], _points[p * 3 + 1], _points[p * 3 + 2]) = (row.X, row.Y, row.Z);
             _valid[p] = true;
-            _depths[p] = depth;
-            _distances[p] = t;
-            maxDepth = Math.Max(maxDepth, depth);
+            _depths[p] = row.Depth;
+            _distances[p] = row.Distance;
+            maxDepth = Math.Max(maxDepth, row.Depth);
         }
         DepthBits = Math.Max(1, 32 - int.LeadingZeroCount(maxDepth));
     }
@@ -81,6 +66,40 @@ public sealed class RayTable
         _rows = rows;
         _depths = rows.Select(full.Depth).ToArray();
         _distances = rows.Select(full.Distance).ToArray();
+    }
+
+    /// <summary>One row of a ray's table: eval-rpc for primitive <paramref name="p"/> alone, O(1).</summary>
+    public static TableRow EvaluateRow(SceneGeometry geometry, Ray ray, int p)
+    {
+        var flat = geometry.Rectangles[p].FlatAxis;
+        var along = ray.Direction[flat];
+        if (p == ray.ExcludedPrimitive || Math.Abs(along) < 1e-12) return default;
+        var t = (geometry.Rectangles[p].PlaneOffset - ray.Origin[flat]) / along;
+        if (!(t > SnapTolerance) || t >= ray.MaxDistance) return default;
+        var point = ray.At(t);
+        var limit = 1 << geometry.Grid.Bits;
+        var q = new int[3];
+        for (var axis = 0; axis < 3; axis++)
+        {
+            q[axis] = axis == flat ? geometry.Min(p, axis) : Quantise(point[axis], geometry.Scale);
+            if (q[axis] < 0 || q[axis] >= limit) return default;
+        }
+        var depth = Quantise(t * Math.Abs(ray.Direction[ray.PrincipalAxis]), geometry.Scale);
+        return depth < 0 ? default : new TableRow(true, q[0], q[1], q[2], depth, t);
+    }
+
+    /// <summary>
+    /// One classical ray/primitive intersection test (what #C_Int counts): eval-rpc and verify-rpc for
+    /// primitive <paramref name="p"/>; the row when <paramref name="window"/> accepts it, otherwise null.
+    /// </summary>
+    public static TableRow? Test(SceneGeometry geometry, Ray ray, int p, HitWindow window)
+    {
+        var row = EvaluateRow(geometry, ray, p);
+        if (!row.Valid || !window.Accepts(row.Depth, p)) return null;
+        int[] q = [row.X, row.Y, row.Z];
+        for (var axis = 0; axis < 3; axis++)
+            if (q[axis] < geometry.Min(p, axis) || q[axis] > geometry.Max(p, axis)) return null;
+        return row;
     }
 
     public static RayTable Build(SceneGeometry geometry, Ray ray)

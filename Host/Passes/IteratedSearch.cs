@@ -25,20 +25,23 @@ public static class IteratedSearch
     /// <param name="window">The window of ray i's search, given its table.</param>
     /// <param name="observe">Takes ray i's outcome; returns true when the ray needs no further round.</param>
     /// <param name="progress">Told after each block.</param>
+    /// <param name="afterRound">Runs after each round (neighbour gathering); returns its classical tests and the rays it changed.</param>
+    /// <param name="settled">Rays the pass has finished by other means (a neighbour's occluder), skipped like finished ones.</param>
     public static PassMetrics Run(
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, int iterations,
-        Func<int, RayTable, HitWindow> window, Func<int, RayTable, HitOutcome, bool> observe, IRenderProgress? progress)
+        Func<int, RayTable, HitWindow> window, Func<int, RayTable, HitOutcome, bool> observe, IRenderProgress? progress,
+        Func<(long Tests, long Updated)>? afterRound = null, Func<int, bool>? settled = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
         var clock = Stopwatch.StartNew();
         var finished = new bool[rays.Count];
         var kept = new RayTable?[rays.Count];
         var cost = default(SearchCost);
-        long tableRows = 0;
+        long tableRows = 0, updated = 0;
         var round = 0;
         for (; round < iterations; round++)
         {
-            var active = Enumerable.Range(0, rays.Count).Where(i => !finished[i]).ToArray();
+            var active = Enumerable.Range(0, rays.Count).Where(i => !finished[i] && settled?.Invoke(i) != true).ToArray();
             if (active.Length == 0) break;
             for (var start = 0; start < active.Length; start += BlockSize)
             {
@@ -56,7 +59,11 @@ public static class IteratedSearch
                 }
                 progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
             }
+            if (afterRound is null) continue;
+            var (tests, changed) = afterRound();
+            cost += new SearchCost(0, 0, tests, 0);
+            updated += changed;
         }
-        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed);
+        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated);
     }
 }

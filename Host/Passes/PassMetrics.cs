@@ -5,9 +5,9 @@ namespace QuantumRayTracing.Passes;
 /// <summary>
 /// The paper's table 1 for one pass: rays traced, iterations (#It), oracle queries and classical tests
 /// (in <see cref="Cost"/>), plus the lookup-table rows built (eval-rpc work, shown apart, never in
-/// Int/Ray) and wall time.
+/// Int/Ray), #Cpix (rays whose result neighbour gathering changed) and wall time.
 /// </summary>
-public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchCost Cost, long TableRows, TimeSpan Elapsed)
+public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchCost Cost, long TableRows, TimeSpan Elapsed, long UpdatedPixels = 0)
 {
     /// <summary>#Int = #Eval + #C_Int, in the conservative query count.</summary>
     public long IntersectionsConservative => Cost.QueriesConservative + Cost.ClassicalTests;
@@ -26,5 +26,6 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
         passes.Count == 0 ? 0 : passes.Max(p => p.Iterations),
         passes.Aggregate(default(SearchCost), (sum, p) => sum + p.Cost),
         passes.Sum(p => p.TableRows),
-        TimeSpan.FromTicks(passes.Sum(p => p.Elapsed.Ticks)));
+        TimeSpan.FromTicks(passes.Sum(p => p.Elapsed.Ticks)),
+        passes.Sum(p => p.UpdatedPixels));
 }

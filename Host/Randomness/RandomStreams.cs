@@ -11,5 +11,8 @@ public static class RandomStreams
 
     /// <summary>QSearch's iteration counts in a render, drawn in the fixed order the passes ask for them.</summary>
     public const ulong Search = 3;
+
+    /// <summary>The termination criterion's draws in a render.</summary>
+    public const ulong Stop = 4;
     public const ulong FirstSearch = 1UL << 32;
 }

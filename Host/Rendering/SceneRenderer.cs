@@ -1,6 +1,7 @@
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
+using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
@@ -20,7 +21,10 @@ public static class SceneRenderer
     {
         var geometry = new SceneGeometry(scene);
         var primaryRays = CameraRays.For(scene.Camera, options.Width, options.Height);
-        var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, options.Iterations, options.TieBreak, progress);
+        var passes = new List<PassMetrics>();
+        var stop = StopRuleFor(search, geometry, primaryRays, options, passes);
+        PassOptions Trace(PixelLayout layout) => new(options.Iterations, options.TieBreak, options.Neighbours ? layout : null, stop);
+        var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, Trace(PixelLayout.Image(options.Width, options.Height)), progress);
 
         // Surface points: each primary hit carries 1 − mirror of its pixel, its reflection the mirror share.
         var points = new List<SurfacePoint>();
@@ -36,7 +40,9 @@ public static class SceneRenderer
             specularPixels.Add(pixel);
             specularRays.Add(SecondaryRays.Specular(primaryRays[pixel], point));
         }
-        var (specularHits, specularMetrics) = TracePass.Run("specular", search, geometry, specularRays, options.Iterations, options.TieBreak, progress);
+        var primaryPointCount = points.Count;
+        var (specularHits, specularMetrics) = TracePass.Run("specular", search, geometry, specularRays,
+            Trace(new PixelLayout(options.Width, options.Height, specularPixels)), progress);
         for (var k = 0; k < specularRays.Count; k++)
         {
             if (specularHits[k] is not { } hit) continue;
@@ -47,16 +53,25 @@ public static class SceneRenderer
         }
 
         // Shadow rays: one per surface point and light in front of it; rayOf[point, light] = −1 for none.
+        // Their layout channel is the light and whether the point is primary or reflected, so gathering
+        // compares rays towards the same light from the same kind of point.
         var shadowRays = new List<Ray>();
+        var shadowPixels = new List<int>();
+        var shadowChannels = new List<int>();
         var rayOf = new int[points.Count, scene.Lights.Count];
         for (var k = 0; k < points.Count; k++)
             for (var l = 0; l < scene.Lights.Count; l++)
             {
                 var ray = SecondaryRays.Shadow(points[k], scene.Lights[l]);
                 rayOf[k, l] = ray is null ? -1 : shadowRays.Count;
-                if (ray is not null) shadowRays.Add(ray);
+                if (ray is null) continue;
+                shadowRays.Add(ray);
+                shadowPixels.Add(points[k].Pixel);
+                shadowChannels.Add(2 * l + (k < primaryPointCount ? 0 : 1));
             }
-        var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays, options.ShadowIterations, progress);
+        var shadowLayout = new PixelLayout(options.Width, options.Height, shadowPixels, shadowChannels);
+        var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays,
+            new PassOptions(options.ShadowIterations, options.TieBreak, options.ShadowNeighbours ? shadowLayout : null, stop), progress);
 
         var radiance = new Vec3[primaryRays.Length];
         for (var k = 0; k < points.Count; k++)
@@ -69,6 +84,21 @@ public static class SceneRenderer
             var c = radiance[y * options.Width + x];
             return (WhittedShading.Encode(c.X), WhittedShading.Encode(c.Y), WhittedShading.Encode(c.Z));
         });
-        return new RenderResult(image, [primaryMetrics, specularMetrics, shadowMetrics]);
+        passes.AddRange([primaryMetrics, specularMetrics, shadowMetrics]);
+        return new RenderResult(image, passes);
+    }
+
+    // The termination criterion's rule, or null; Scene mode first measures t on a lattice of primary rays.
+    private static StopRule? StopRuleFor(IHitSearch search, SceneGeometry geometry, Ray[] primaryRays, RenderOptions options, List<PassMetrics> passes)
+    {
+        if (options.Stop == StopMode.Off) return null;
+        var pt = FalseNegativeRate.Uniform(geometry.Count, geometry.Count);
+        if (options.Stop == StopMode.Scene)
+        {
+            (pt, var calibration) = SceneTDistribution.Measure(geometry, primaryRays, options.Width, options.Height);
+            passes.Add(calibration);
+        }
+        var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper);
+        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop));
     }
 }

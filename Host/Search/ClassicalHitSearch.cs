@@ -22,5 +22,8 @@ public sealed class ClassicalHitSearch : IHitSearch
         return outcomes;
     }
 
+    /// <summary>None: every primitive is tested.</summary>
+    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula) => 0;
+
     public void Dispose() { }
 }

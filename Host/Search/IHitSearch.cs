@@ -12,4 +12,12 @@ public interface IHitSearch : IDisposable
 
     /// <summary>Runs every search; <paramref name="onRound"/> gets (round, searches still active) after each engine call.</summary>
     IReadOnlyList<HitOutcome> Run(IReadOnlyList<HitQuery> queries, Action<int, int>? onRound = null);
+
+    /// <summary>
+    /// The estimated probability that one search over <paramref name="count"/> primitives reports nothing
+    /// although some are accepted, for t distributed as <paramref name="pt"/> (indexed by t): the p̄ of the
+    /// termination criterion (sec. 6.2). <paramref name="paperFormula"/> asks for the paper's estimate
+    /// (eq. 10 at r = M_l, eq. 11) instead of the exact rate where they differ.
+    /// </summary>
+    double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula);
 }

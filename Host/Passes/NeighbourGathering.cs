@@ -1,0 +1,61 @@
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Rays;
+
+namespace QuantumRayTracing.Passes;
+
+/// <summary>
+/// NeighOpt (Algorithm 5): after a round, each ray is tested classically against the primitives its
+/// 4 neighbours currently hold, in scan order and in place, so a found minimum spreads through a
+/// region in one sweep. Every test counts in #C_Int, every ray it changes in #Cpix.
+/// </summary>
+public static class NeighbourGathering
+{
+    /// <summary>Closest hits: a neighbour's primitive replaces the ray's hit if it comes first in the window's order.</summary>
+    public static (long Tests, long Updated) ForClosest(
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, Hit?[] hits, PixelLayout layout, TieBreak tieBreak)
+    {
+        long tests = 0, updated = 0;
+        var tried = new HashSet<int>();
+        for (var i = 0; i < rays.Count; i++)
+        {
+            tried.Clear();
+            var changed = false;
+            foreach (var neighbour in layout.Neighbours(i))
+            {
+                if (hits[neighbour] is not { } held || hits[i]?.Primitive == held.Primitive || !tried.Add(held.Primitive)) continue;
+                var window = hits[i] is { } current
+                    ? HitWindow.Closer(rays[i].Near, current.Depth, current.Primitive, tieBreak)
+                    : HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count);
+                tests++;
+                if (RayTable.Test(geometry, rays[i], held.Primitive, window) is not { } row) continue;
+                hits[i] = new Hit(held.Primitive, row.Depth, row.Distance, rays[i].At(row.Distance));
+                changed = true;
+            }
+            if (changed) updated++;
+        }
+        return (tests, updated);
+    }
+
+    /// <summary>Shadow rays: an unoccluded ray is tested against its neighbours' occluders (the paper's future work).</summary>
+    public static (long Tests, long Updated) ForOcclusion(
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, int?[] occluders, PixelLayout layout)
+    {
+        long tests = 0, updated = 0;
+        var tried = new HashSet<int>();
+        for (var i = 0; i < rays.Count; i++)
+        {
+            if (occluders[i] is not null) continue;
+            tried.Clear();
+            foreach (var neighbour in layout.Neighbours(i))
+            {
+                if (occluders[neighbour] is not { } held || !tried.Add(held)) continue;
+                tests++;
+                if (RayTable.Test(geometry, rays[i], held, HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count)) is null) continue;
+                occluders[i] = held;
+                updated++;
+                break;
+            }
+        }
+        return (tests, updated);
+    }
+}

@@ -1,0 +1,72 @@
+namespace QuantumRayTracing.Search;
+
+/// <summary>
+/// The probability that a search reports nothing although t &gt; 0 primitives are accepted, for the
+/// termination criterion of the paper's sec. 6.2. For QSearch three ways: eq. 10 as printed
+/// (cos²((M_l+1)θ) per bound), eq. 10 evaluated at r = M_l (cos²((2M_l+1)θ), which reproduces the
+/// paper's table 6), and the exact rate of our QSearch (the initial sample, then r_l uniform on 1..M_l
+/// per bound). For the randomized classical search, eq. 11. Each averages over a distribution p_t of t
+/// (the paper's is uniform on 1..N).
+/// </summary>
+public static class FalseNegativeRate
+{
+    /// <summary>Eq. 10 as printed: ∏_l Σ_t p_t cos²((M_l + 1)θ_t).</summary>
+    public static double Eq10AsPrinted(QSearchSchedule schedule, IReadOnlyList<double> pt) =>
+        schedule.Bounds.Aggregate(1.0, (product, m) => product * Average(pt, t => Square(Math.Cos((m + 1) * Theta(t, schedule.Count)))));
+
+    /// <summary>Eq. 10 at r = M_l: ∏_l Σ_t p_t cos²((2M_l + 1)θ_t).</summary>
+    public static double Eq10AtBound(QSearchSchedule schedule, IReadOnlyList<double> pt) =>
+        schedule.Bounds.Aggregate(1.0, (product, m) => product * Average(pt, t => Square(Math.Cos((2 * m + 1) * Theta(t, schedule.Count)))));
+
+    /// <summary>
+    /// The exact miss probability of <see cref="QSearch"/>: Σ_t p_t · (1 − t/N) · ∏_l (1 − mean over
+    /// r = 1..M_l of sin²((2r + 1)θ_t)).
+    /// </summary>
+    public static double QSearchExact(QSearchSchedule schedule, IReadOnlyList<double> pt) =>
+        Average(pt, t => QSearchExact(schedule, t));
+
+    /// <summary>The exact miss probability of <see cref="QSearch"/> for one t.</summary>
+    public static double QSearchExact(QSearchSchedule schedule, int t)
+    {
+        var n = schedule.Count;
+        var theta = Theta(t, n);
+        var miss = 1.0 - (double)t / n;
+        foreach (var m in schedule.Bounds)
+        {
+            var success = 0.0;
+            for (var r = 1; r <= m; r++) success += Square(Math.Sin((2 * r + 1) * theta));
+            miss *= 1 - success / m;
+        }
+        return Math.Max(0, miss);
+    }
+
+    /// <summary>Eq. 11, exact: Σ_t p_t ∏_{j &lt; k} (N − t − j) / (N − j), k primitives drawn without replacement.</summary>
+    public static double Randomized(int count, int tested, IReadOnlyList<double> pt) =>
+        Average(pt, t =>
+        {
+            var miss = 1.0;
+            for (var j = 0; j < tested; j++) miss *= Math.Max(0, (double)(count - t - j) / (count - j));
+            return miss;
+        });
+
+    /// <summary>The paper's p_t: t uniform on 1..<paramref name="last"/> (index t of the result; index 0 is t = 0, weight 0).</summary>
+    public static double[] Uniform(int count, int last)
+    {
+        var pt = new double[count + 1];
+        for (var t = 1; t <= last; t++) pt[t] = 1.0 / last;
+        return pt;
+    }
+
+    private static double Theta(int t, int n) => Math.Asin(Math.Sqrt((double)t / n));
+
+    private static double Square(double x) => x * x;
+
+    // Σ_t p_t f(t) over t ≥ 1, pt indexed by t.
+    private static double Average(IReadOnlyList<double> pt, Func<int, double> f)
+    {
+        var sum = 0.0;
+        for (var t = 1; t < pt.Count; t++)
+            if (pt[t] > 0) sum += pt[t] * f(t);
+        return sum;
+    }
+}
