@@ -85,6 +85,18 @@ public sealed class RenderCommand : Command
         HelpName = "off|paper|exact|scene",
     };
 
+    private readonly Option<int> _lattice = new("--lattice")
+    {
+        Description = "Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where those neighbours agree, full where they disagree. Applies to passes with --neighbours / --shadow-neighbours.",
+        DefaultValueFactory = _ => RenderDefaults.LatticeLevels,
+    };
+
+    private readonly Option<double> _agreedMiss = new("--agreed-miss")
+    {
+        Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used).",
+        DefaultValueFactory = _ => RenderOptions.DefaultAgreedMiss,
+    };
+
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
         EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
 
@@ -102,7 +114,15 @@ public sealed class RenderCommand : Command
         Options.Add(_neighbours);
         Options.Add(_shadowNeighbours);
         Options.Add(_stop);
+        Options.Add(_lattice);
+        Options.Add(_agreedMiss);
         _engine.AddTo(this);
+        _lattice.Between(0, 6);
+        _agreedMiss.Validators.Add(r =>
+        {
+            var p = r.GetValueOrDefault<double>();
+            if (!(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
+        });
         _qsearch.AddTo(this);
         _passes.Between(1, 64);
         _shadowPasses.Between(1, 64);
@@ -129,7 +149,8 @@ public sealed class RenderCommand : Command
 
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
         var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
-            parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed));
+            parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
+            parse.GetValue(_lattice), parse.GetValue(_agreedMiss));
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {scene.Lights.Count} lights, {width}x{height} pixels, {scene.Grid}");
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");

@@ -9,7 +9,8 @@ namespace QuantumRayTracing.Passes;
 /// shadow ray's range, no minimisation) for every shadow ray not yet found occluded; then, with a
 /// layout, each unoccluded ray is tested against its neighbours' occluders. A ray is finished once
 /// occluded, once an engine's answer is certain, or when the stop rule ends it after a miss. The paper
-/// uses two rounds: the second catches most of QSearch's false negatives.
+/// uses two rounds: the second catches most of QSearch's false negatives. With a lattice plan the
+/// lattice rays go first and the others test their lattice neighbours' occluders before searching.
 /// </summary>
 public static class DirectPass
 {
@@ -21,17 +22,34 @@ public static class DirectPass
     {
         var occluders = new int?[shadowRays.Count];
         var misses = new int[shadowRays.Count];
-        var metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations,
-            (_, table) => table.FullRange,
-            (i, _, outcome) =>
-            {
-                occluders[i] ??= outcome.Primitive;
-                misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
-                return occluders[i] is not null || outcome.Certain || options.Stop?.Continue(misses[i]) == false;
-            },
-            progress,
-            options.Neighbours is { } layout ? () => NeighbourGathering.ForOcclusion(geometry, shadowRays, occluders, layout) : null,
-            i => occluders[i] is not null);
-        return ([.. occluders.Select(o => o is not null)], metrics);
+        bool Observe(int i, RayTable table, HitOutcome outcome)
+        {
+            occluders[i] ??= outcome.Primitive;
+            misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
+            return occluders[i] is not null || outcome.Certain || options.Stop?.Continue(misses[i]) == false;
+        }
+        Func<(long, long)>? gather = options.Neighbours is { } neighbours
+            ? () => NeighbourGathering.ForOcclusion(geometry, shadowRays, occluders, neighbours)
+            : null;
+        static HitWindow Window(int i, RayTable table) => table.FullRange;
+
+        if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+        {
+            var metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress, gather,
+                settled: i => occluders[i] is not null);
+            return ([.. occluders.Select(o => o is not null)], metrics);
+        }
+
+        var phased = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, (level, levelRays, agreed) =>
+        {
+            var inLevel = levelRays.ToHashSet();
+            var (tests, updated) = level == lattice.Levels ? (0L, 0L)
+                : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
+            var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress,
+                level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i),
+                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : null);
+            return (searched, tests, updated);
+        });
+        return ([.. occluders.Select(o => o is not null)], phased);
     }
 }

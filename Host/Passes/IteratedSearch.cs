@@ -27,10 +27,12 @@ public static class IteratedSearch
     /// <param name="progress">Told after each block.</param>
     /// <param name="afterRound">Runs after each round (neighbour gathering); returns its classical tests and the rays it changed.</param>
     /// <param name="settled">Rays the pass has finished by other means (a neighbour's occluder), skipped like finished ones.</param>
+    /// <param name="schedule">QSearch's schedule for (round, ray), or null for the engine's own.</param>
     public static PassMetrics Run(
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, int iterations,
         Func<int, RayTable, HitWindow> window, Func<int, RayTable, HitOutcome, bool> observe, IRenderProgress? progress,
-        Func<(long Tests, long Updated)>? afterRound = null, Func<int, bool>? settled = null)
+        Func<(long Tests, long Updated)>? afterRound = null, Func<int, bool>? settled = null,
+        Func<int, int, QSearchSchedule?>? schedule = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
         var clock = Stopwatch.StartNew();
@@ -49,7 +51,7 @@ public static class IteratedSearch
                 var tables = new RayTable[block.Length];
                 Parallel.For(0, block.Length, k => tables[k] = kept[block[k]] ?? RayTable.Build(geometry, rays[block[k]]));
                 tableRows += (long)block.Count(i => kept[i] is null) * geometry.Count;
-                var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]))).ToArray();
+                var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]), schedule?.Invoke(round, ray))).ToArray();
                 var outcomes = search.Run(queries);
                 for (var k = 0; k < block.Length; k++)
                 {

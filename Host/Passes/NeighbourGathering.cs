@@ -58,4 +58,56 @@ public static class NeighbourGathering
         }
         return (tests, updated);
     }
+
+    /// <summary>
+    /// Lattice-first tracing, closest hits: every ray of one lattice level is tested against the
+    /// primitives its next-coarser lattice neighbours hold. It "agrees" when it has lattice neighbours, they all hold the same
+    /// result (one primitive, or all nothing) and the ray accepted that primitive.
+    /// </summary>
+    public static (long Tests, long Updated) FromLattice(
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, IEnumerable<int> level, Hit?[] hits, PixelLayout layout, int levels, TieBreak tieBreak, bool[] agreed)
+    {
+        long tests = 0, updated = 0;
+        foreach (var i in level)
+        {
+            var held = layout.CoarserNeighbours(i, levels).Select(j => hits[j]?.Primitive).ToArray();
+            foreach (var p in held.OfType<int>().Distinct())
+            {
+                var window = hits[i] is { } current
+                    ? HitWindow.Closer(rays[i].Near, current.Depth, current.Primitive, tieBreak)
+                    : HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count);
+                tests++;
+                if (RayTable.Test(geometry, rays[i], p, window) is not { } row) continue;
+                hits[i] = new Hit(p, row.Depth, row.Distance, rays[i].At(row.Distance));
+            }
+            if (hits[i] is not null) updated++;
+            agreed[i] = held.Length > 0 && held.Distinct().Count() == 1 && hits[i]?.Primitive == held[0];
+        }
+        return (tests, updated);
+    }
+
+    /// <summary>
+    /// Lattice-first tracing, shadow rays: every unoccluded ray of one lattice level is tested against
+    /// its next-coarser lattice neighbours' occluders. It "agrees" when it has lattice neighbours and none is occluded.
+    /// </summary>
+    public static (long Tests, long Updated) FromLatticeOccluders(
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, IEnumerable<int> level, int?[] occluders, PixelLayout layout, int levels, bool[] agreed)
+    {
+        long tests = 0, updated = 0;
+        foreach (var i in level)
+        {
+            if (occluders[i] is not null) continue;
+            var held = layout.CoarserNeighbours(i, levels).Select(j => occluders[j]).ToArray();
+            foreach (var p in held.OfType<int>().Distinct())
+            {
+                tests++;
+                if (RayTable.Test(geometry, rays[i], p, HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count)) is null) continue;
+                occluders[i] = p;
+                updated++;
+                break;
+            }
+            agreed[i] = held.Length > 0 && held.All(o => o is null);
+        }
+        return (tests, updated);
+    }
 }

@@ -19,6 +19,15 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
 
     public double PerRayPaper => Rays == 0 ? 0 : (double)IntersectionsPaper / Rays;
 
+    /// <summary>
+    /// One pass run in two phases over the same rays (lattice, then the rest) plus the classical work
+    /// between them: rounds add up, the rays are counted once.
+    /// </summary>
+    public static PassMetrics Phases(PassMetrics first, PassMetrics second, long tests, long updated) => new(
+        first.Name, first.Rays, first.Iterations + second.Iterations,
+        first.Cost + second.Cost + new SearchCost(0, 0, tests, 0), first.TableRows + second.TableRows,
+        first.Elapsed + second.Elapsed, first.UpdatedPixels + second.UpdatedPixels + updated);
+
     /// <summary>The metrics of several passes together; #It is the largest of theirs.</summary>
     public static PassMetrics Total(string name, IReadOnlyCollection<PassMetrics> passes) => new(
         name,

@@ -1,10 +1,26 @@
 using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// How a pass iterates: at most <see cref="Iterations"/> rounds (#IT); <see cref="Neighbours"/>, when
-/// set, the layout NeighOpt gathers over after each round; <see cref="Stop"/>, when set, the sec. 6.2
-/// termination criterion deciding after each empty search whether a ray is searched again.
+/// set, the layout neighbour gathering uses after each round; <see cref="Stop"/>, when set, the sec. 6.2
+/// termination criterion deciding after each empty search whether a ray is searched again;
+/// <see cref="Lattice"/>, with a layout, traces the coarse lattice of pixels first (see <see cref="LatticePlan"/>).
 /// </summary>
-public sealed record PassOptions(int Iterations, TieBreak TieBreak = TieBreak.Strict, PixelLayout? Neighbours = null, StopRule? Stop = null);
+public sealed record PassOptions(
+    int Iterations,
+    TieBreak TieBreak = TieBreak.Strict,
+    PixelLayout? Neighbours = null,
+    StopRule? Stop = null,
+    LatticePlan? Lattice = null);
+
+/// <summary>
+/// Lattice-first tracing over <see cref="Levels"/> levels: the rays whose pixel coordinates are both
+/// multiples of 2^Levels are searched first; then, level by level down to every pixel, each ray tests
+/// its next-coarser lattice neighbours' results classically and gets one confirming search, with the
+/// cheap <see cref="Agreed"/> schedule where those neighbours all agree (and it accepts what they hold)
+/// and the engine's full schedule where they disagree. Null <see cref="Agreed"/>: the full schedule everywhere.
+/// </summary>
+public sealed record LatticePlan(int Levels, QSearchSchedule? Agreed);

@@ -28,6 +28,35 @@ public sealed class PixelLayout
 
     public int Rays => _pixelOf.Length;
 
+    /// <summary>
+    /// The lattice level of ray <paramref name="ray"/>'s pixel, at most <paramref name="levels"/>: the
+    /// largest k with both coordinates multiples of 2^k. Coarser levels are traced first.
+    /// </summary>
+    public int LatticeLevel(int ray, int levels)
+    {
+        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
+        var level = 0;
+        while (level < levels && x % (2 << level) == 0 && y % (2 << level) == 0) level++;
+        return level;
+    }
+
+    /// <summary>
+    /// The rays of the same channel on the next coarser lattice around ray <paramref name="ray"/>: the
+    /// pixels at offsets −s, 0, s (s = 2^level) in x and y whose coordinates are multiples of 2s.
+    /// </summary>
+    public IEnumerable<int> CoarserNeighbours(int ray, int levels)
+    {
+        var step = 1 << LatticeLevel(ray, levels);
+        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
+        for (var dy = -step; dy <= step; dy += step)
+            for (var dx = -step; dx <= step; dx += step)
+            {
+                var (nx, ny) = (x + dx, y + dy);
+                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || nx % (2 * step) != 0 || ny % (2 * step) != 0) continue;
+                if (_rayAt.TryGetValue((ny * _width + nx, _channelOf[ray]), out var neighbour)) yield return neighbour;
+            }
+    }
+
     /// <summary>The rays of the same channel at the pixels left, right, above and below ray <paramref name="ray"/>'s.</summary>
     public IEnumerable<int> Neighbours(int ray)
     {

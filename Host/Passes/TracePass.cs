@@ -10,6 +10,7 @@ namespace QuantumRayTracing.Passes;
 /// what it finds; then, with a layout, NeighOpt (Algorithm 5) tests each ray against its neighbours'
 /// primitives. A ray is finished when the engine's answer is certain (the classical engines test every
 /// primitive, so the classical reference costs one round) or when the stop rule ends it after a miss.
+/// With a lattice plan the lattice rays go first and the others start from their lattice neighbours' hits.
 /// </summary>
 public static class TracePass
 {
@@ -19,16 +20,31 @@ public static class TracePass
     {
         var hits = new Hit?[rays.Count];
         var misses = new int[rays.Count];
-        var metrics = IteratedSearch.Run(name, search, geometry, rays, options.Iterations,
-            (i, table) => hits[i] is { } hit ? HitWindow.Closer(rays[i].Near, hit.Depth, hit.Primitive, options.TieBreak) : table.FullRange,
-            (i, table, outcome) =>
-            {
-                if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);
-                misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
-                return outcome.Certain || options.Stop?.Continue(misses[i]) == false;
-            },
-            progress,
-            options.Neighbours is { } layout ? () => NeighbourGathering.ForClosest(geometry, rays, hits, layout, options.TieBreak) : null);
+        HitWindow Window(int i, RayTable table) =>
+            hits[i] is { } hit ? HitWindow.Closer(rays[i].Near, hit.Depth, hit.Primitive, options.TieBreak) : table.FullRange;
+        bool Observe(int i, RayTable table, HitOutcome outcome)
+        {
+            if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);
+            misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
+            return outcome.Certain || options.Stop?.Continue(misses[i]) == false;
+        }
+        Func<(long, long)>? gather = options.Neighbours is { } neighbours
+            ? () => NeighbourGathering.ForClosest(geometry, rays, hits, neighbours, options.TieBreak)
+            : null;
+
+        if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+            return (hits, IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather));
+
+        var metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, (level, levelRays, agreed) =>
+        {
+            var inLevel = levelRays.ToHashSet();
+            var (tests, updated) = level == lattice.Levels ? (0L, 0L)
+                : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
+            var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress,
+                level == 0 ? gather : null, settled: i => !inLevel.Contains(i),
+                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : null);
+            return (searched, tests, updated);
+        });
         return (hits, metrics);
     }
 }

@@ -9,8 +9,9 @@ public static class RenderDefaults
     public const bool Neighbours = true;
     public const bool ShadowNeighbours = true;
     public const StopMode Stop = StopMode.Exact;
+    public const int LatticeLevels = 2;
 
     /// <summary>The classical render of the same image: strict ties, no pipeline tricks (it needs none: its answers are certain).</summary>
     public static RenderOptions Reference(RenderOptions options) =>
-        options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off };
+        options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off, LatticeLevels = 0 };
 }

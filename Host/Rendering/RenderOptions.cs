@@ -6,7 +6,9 @@ namespace QuantumRayTracing.Rendering;
 /// <summary>
 /// What a render does beyond the scene: image size, TracePass iterations (#IT) for primary and
 /// specular rays, DirectPass rounds, tie-breaking, neighbour gathering (NeighOpt for primary and
-/// specular rays, occluder gathering for shadow rays), the termination criterion and the seed of its draws.
+/// specular rays, occluder gathering for shadow rays), the termination criterion and the seed of its
+/// draws, and lattice-first tracing (levels of spacing 2, 4, …; 0 for none) with its cheap
+/// confirmation where neighbours agree.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -17,8 +19,16 @@ public sealed record RenderOptions(
     bool Neighbours = false,
     bool ShadowNeighbours = false,
     StopMode Stop = StopMode.Off,
-    ulong Seed = 1)
+    ulong Seed = 1,
+    int LatticeLevels = 0,
+    double AgreedMiss = RenderOptions.DefaultAgreedMiss)
 {
+    /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
+    public const double DefaultAgreedMiss = 0.025;
+
+    /// <summary>The t a confirmation is planned for: at most ~6 primitives lie on a Qornell ray, 9 in Depth Complexity's deepest quadrant.</summary>
+    public const int ConfirmationMaxT = 8;
+
     /// <summary>The paper's table 3 reaches its floor of wrong pixels on the Qornell box at 4 to 5 passes.</summary>
     public const int DefaultIterations = 4;
 }

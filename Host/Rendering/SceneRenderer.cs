@@ -23,7 +23,10 @@ public static class SceneRenderer
         var primaryRays = CameraRays.For(scene.Camera, options.Width, options.Height);
         var passes = new List<PassMetrics>();
         var stop = StopRuleFor(search, geometry, primaryRays, options, passes);
-        PassOptions Trace(PixelLayout layout) => new(options.Iterations, options.TieBreak, options.Neighbours ? layout : null, stop);
+        var lattice = options.LatticeLevels > 0
+            ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss))
+            : null;
+        PassOptions Trace(PixelLayout layout) => new(options.Iterations, options.TieBreak, options.Neighbours ? layout : null, stop, lattice);
         var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, Trace(PixelLayout.Image(options.Width, options.Height)), progress);
 
         // Surface points: each primary hit carries 1 − mirror of its pixel, its reflection the mirror share.
@@ -71,7 +74,7 @@ public static class SceneRenderer
             }
         var shadowLayout = new PixelLayout(options.Width, options.Height, shadowPixels, shadowChannels);
         var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays,
-            new PassOptions(options.ShadowIterations, options.TieBreak, options.ShadowNeighbours ? shadowLayout : null, stop), progress);
+            new PassOptions(options.ShadowIterations, options.TieBreak, options.ShadowNeighbours ? shadowLayout : null, stop, lattice), progress);
 
         var radiance = new Vec3[primaryRays.Length];
         for (var k = 0; k < points.Count; k++)

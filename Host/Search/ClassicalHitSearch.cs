@@ -13,7 +13,7 @@ public sealed class ClassicalHitSearch : IHitSearch
         var outcomes = new HitOutcome[queries.Count];
         Parallel.For(0, queries.Count, k =>
         {
-            var (table, window) = queries[k];
+            var (table, window, _) = queries[k];
             var all = Enumerable.Range(0, table.Count);
             outcomes[k] = new HitOutcome(BestAccepted.Among(table, window, all), true,
                 new SearchCost(0, 0, table.Count, 0));

@@ -30,6 +30,8 @@ public static class FalseNegativeRate
     {
         var n = schedule.Count;
         var theta = Theta(t, n);
+        if (schedule.IsFixed)
+            return schedule.Bounds.Aggregate(1.0, (miss, r) => miss * Square(Math.Cos((2 * r + 1) * theta)));
         var miss = 1.0 - (double)t / n;
         foreach (var m in schedule.Bounds)
         {

@@ -33,6 +33,7 @@ public sealed class QSearch
         _schedule = schedule;
         _random = random;
         _oracle = oracle;
+        if (schedule.IsFixed) _stage = 1;
     }
 
     public MarkedSet Marked { get; }
@@ -51,7 +52,9 @@ public sealed class QSearch
     {
         if (IsDone) throw new InvalidOperationException("the search has ended");
         if (_pendingIterations < 0)
-            _pendingIterations = _stage == 0 ? 0 : _random.NextInt(1, _schedule.Bounds[_stage - 1]);
+            _pendingIterations = _stage == 0 ? 0
+                : _schedule.IsFixed ? _schedule.Bounds[_stage - 1]
+                : _random.NextInt(1, _schedule.Bounds[_stage - 1]);
         return new GroverRequest(Marked, _pendingIterations, _oracle);
     }
 

@@ -2,7 +2,8 @@ namespace QuantumRayTracing.Search;
 
 /// <summary>
 /// The sequence M_1, M_2, … of QSearch's iteration bounds for one N, computed once and shared by
-/// every search over N indices.
+/// every search over N indices. A <see cref="Fixed"/> schedule instead lists the iteration counts
+/// themselves, run in order without the initial sample: a confirmation tuned to the t a scene has.
 /// </summary>
 public sealed class QSearchSchedule
 {
@@ -26,12 +27,33 @@ public sealed class QSearchSchedule
         };
     }
 
+    private QSearchSchedule(int count, int[] iterations)
+    {
+        Count = count;
+        IsFixed = true;
+        _bounds = iterations;
+    }
+
+    /// <summary>A schedule that runs exactly <paramref name="iterations"/>, in order, with no initial sample.</summary>
+    public static QSearchSchedule Fixed(int count, IReadOnlyList<int> iterations)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(count, 1);
+        if (iterations.Count == 0 || iterations.Any(r => r < 1))
+            throw new ArgumentException("a fixed schedule lists at least one iteration count, each at least 1", nameof(iterations));
+        return new QSearchSchedule(count, [.. iterations]);
+    }
+
     public int Count { get; }
     public double Growth { get; }
     public MSetRule Rule { get; }
 
-    /// <summary>M_1, M_2, …: one Grover run per bound after the initial sample.</summary>
+    /// <summary>Whether <see cref="Bounds"/> are the iteration counts themselves (see <see cref="Fixed"/>).</summary>
+    public bool IsFixed { get; }
+
+    /// <summary>M_1, M_2, …: one Grover run per bound after the initial sample; for a fixed schedule, the runs' iteration counts.</summary>
     public IReadOnlyList<int> Bounds => _bounds;
+
+    public override string ToString() => IsFixed ? $"r = {string.Join(", ", _bounds)}" : $"M = {{{string.Join(", ", _bounds)}}}";
 
     /// <summary>Smallest k with k² ≥ n, in integers.</summary>
     public static int CeilSqrt(int n)

@@ -23,8 +23,8 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
         // Marked sets are O(N) each and independent; no randomness is drawn before the driver runs.
         Parallel.For(0, queries.Count, k =>
         {
-            var (table, window) = queries[k];
-            searches[k] = new QSearch(table.Marked(window), schedules[table.Count], random,
+            var (table, window, schedule) = queries[k];
+            searches[k] = new QSearch(table.Marked(window), schedule ?? schedules[table.Count], random,
                 gateLevel ? new Intersection.OracleInput(table.IsCompact ? Intersection.RayTable.Build(table.Geometry, table.Ray) : table, window) : null);
         });
         QSearchDriver.Run(searches, engine, onRound);

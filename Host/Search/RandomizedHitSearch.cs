@@ -16,7 +16,7 @@ public sealed class RandomizedHitSearch(SeededRandom random) : IHitSearch
         var outcomes = new HitOutcome[queries.Count];
         for (var k = 0; k < queries.Count; k++)
         {
-            var (table, window) = queries[k];
+            var (table, window, _) = queries[k];
             var tested = SampleSize(table.Count);
             outcomes[k] = new HitOutcome(BestAccepted.Among(table, window, Sample(table.Count, tested)), tested == table.Count,
                 new SearchCost(0, 0, tested, 0));

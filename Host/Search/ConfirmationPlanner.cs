@@ -1,0 +1,61 @@
+namespace QuantumRayTracing.Search;
+
+/// <summary>
+/// Chooses a fixed list of Grover iteration counts for confirming searches: where a ray most likely has
+/// nothing left to find, what matters is the cost of a search that finds nothing (its t = 0 cost), held
+/// to a miss probability for the t the scene actually has. The cheapest list of up to
+/// <see cref="MaxRuns"/> runs, each r in 1..ceil(sqrt N), whose exact miss probability is at most the
+/// bound for every t in 1..maxT, costed in the conservative count (Σ (r + 1) queries plus one classical
+/// test per run).
+/// </summary>
+public static class ConfirmationPlanner
+{
+    public const int MaxRuns = 4;
+
+    /// <summary>The cheapest list, smallest r first; null when no list of <see cref="MaxRuns"/> runs meets the bound.</summary>
+    public static QSearchSchedule? Cheapest(int count, int maxT, double maxMiss)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(maxT, 1);
+        maxT = Math.Min(maxT, count);
+        var cap = QSearchSchedule.CeilSqrt(count);
+        // miss[r][t] = cos²((2r + 1)θ_t): the chance one run with r iterations measures an unmarked index.
+        var miss = new double[cap + 1][];
+        for (var r = 1; r <= cap; r++)
+        {
+            miss[r] = new double[maxT + 1];
+            for (var t = 1; t <= maxT; t++)
+            {
+                var c = Math.Cos((2 * r + 1) * Math.Asin(Math.Sqrt((double)t / count)));
+                miss[r][t] = c * c;
+            }
+        }
+        int[]? best = null;
+        var bestCost = int.MaxValue;
+        var bestWorst = double.MaxValue;
+        var list = new List<int>();
+        var product = new double[maxT + 1];
+        void Extend(int from, double[] current)
+        {
+            if (list.Count > 0)
+            {
+                var cost = list.Sum(r => r + 2);
+                var worst = current.Skip(1).Max();
+                if (worst <= maxMiss && (cost < bestCost || (cost == bestCost && worst < bestWorst)))
+                    (best, bestCost, bestWorst) = ([.. list], cost, worst);
+            }
+            if (list.Count == MaxRuns) return;
+            for (var r = from; r <= cap; r++)
+            {
+                if (list.Sum(x => x + 2) + r + 2 > bestCost) break;
+                var next = new double[maxT + 1];
+                for (var t = 1; t <= maxT; t++) next[t] = current[t] * miss[r][t];
+                list.Add(r);
+                Extend(r, next);
+                list.RemoveAt(list.Count - 1);
+            }
+        }
+        Array.Fill(product, 1.0);
+        Extend(1, product);
+        return best is null ? null : QSearchSchedule.Fixed(count, best);
+    }
+}
