@@ -94,7 +94,13 @@ public sealed class RenderCommand : Command
     private readonly Option<double> _agreedMiss = new("--agreed-miss")
     {
         Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used).",
-        DefaultValueFactory = _ => RenderOptions.DefaultAgreedMiss,
+        DefaultValueFactory = _ => RenderDefaults.AgreedMiss,
+    };
+
+    private readonly Option<double?> _plannedMiss = new("--planned-miss")
+    {
+        Description = $"Replace Algorithm 1's random schedule in every search (but the cheap confirmations) by the cheapest fixed list of Grover runs that misses at most this share of rays with 1..{RenderOptions.ConfirmationMaxT} hits. Default: Algorithm 1.",
+        DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
     };
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
@@ -116,7 +122,12 @@ public sealed class RenderCommand : Command
         Options.Add(_stop);
         Options.Add(_lattice);
         Options.Add(_agreedMiss);
+        Options.Add(_plannedMiss);
         _engine.AddTo(this);
+        _plannedMiss.Validators.Add(r =>
+        {
+            if (r.GetValueOrDefault<double?>() is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
+        });
         _lattice.Between(0, 6);
         _agreedMiss.Validators.Add(r =>
         {
@@ -150,7 +161,7 @@ public sealed class RenderCommand : Command
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
         var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
             parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
-            parse.GetValue(_lattice), parse.GetValue(_agreedMiss));
+            parse.GetValue(_lattice), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss));
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {scene.Lights.Count} lights, {width}x{height} pixels, {scene.Grid}");
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");

@@ -36,7 +36,7 @@ public static class DirectPass
         if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
         {
             var metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress, gather,
-                settled: i => occluders[i] is not null);
+                settled: i => occluders[i] is not null, schedule: (_, _) => options.Schedule);
             return ([.. occluders.Select(o => o is not null)], metrics);
         }
 
@@ -47,7 +47,7 @@ public static class DirectPass
                 : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
             var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress,
                 level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i),
-                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : null);
+                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : options.Schedule);
             return (searched, tests, updated);
         });
         return ([.. occluders.Select(o => o is not null)], phased);

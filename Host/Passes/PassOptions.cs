@@ -7,14 +7,16 @@ namespace QuantumRayTracing.Passes;
 /// How a pass iterates: at most <see cref="Iterations"/> rounds (#IT); <see cref="Neighbours"/>, when
 /// set, the layout neighbour gathering uses after each round; <see cref="Stop"/>, when set, the sec. 6.2
 /// termination criterion deciding after each empty search whether a ray is searched again;
-/// <see cref="Lattice"/>, with a layout, traces the coarse lattice of pixels first (see <see cref="LatticePlan"/>).
+/// <see cref="Lattice"/>, with a layout, traces the coarse lattice of pixels first (see <see cref="LatticePlan"/>);
+/// <see cref="Schedule"/>, when set, replaces the engine's QSearch schedule for every search not given a cheaper one.
 /// </summary>
 public sealed record PassOptions(
     int Iterations,
     TieBreak TieBreak = TieBreak.Strict,
     PixelLayout? Neighbours = null,
     StopRule? Stop = null,
-    LatticePlan? Lattice = null);
+    LatticePlan? Lattice = null,
+    QSearchSchedule? Schedule = null);
 
 /// <summary>
 /// Lattice-first tracing over <see cref="Levels"/> levels: the rays whose pixel coordinates are both

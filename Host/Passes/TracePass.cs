@@ -33,7 +33,8 @@ public static class TracePass
             : null;
 
         if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
-            return (hits, IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather));
+            return (hits, IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
+                schedule: (_, _) => options.Schedule));
 
         var metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, (level, levelRays, agreed) =>
         {
@@ -42,7 +43,7 @@ public static class TracePass
                 : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
             var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress,
                 level == 0 ? gather : null, settled: i => !inLevel.Contains(i),
-                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : null);
+                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : options.Schedule);
             return (searched, tests, updated);
         });
         return (hits, metrics);

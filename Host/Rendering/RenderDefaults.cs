@@ -9,7 +9,9 @@ public static class RenderDefaults
     public const bool Neighbours = true;
     public const bool ShadowNeighbours = true;
     public const StopMode Stop = StopMode.Exact;
-    public const int LatticeLevels = 2;
+    public const int LatticeLevels = 4;
+    public const double AgreedMiss = 0.4;
+    public static readonly double? PlannedMiss = null;
 
     /// <summary>The classical render of the same image: strict ties, no pipeline tricks (it needs none: its answers are certain).</summary>
     public static RenderOptions Reference(RenderOptions options) =>

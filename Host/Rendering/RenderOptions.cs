@@ -8,7 +8,9 @@ namespace QuantumRayTracing.Rendering;
 /// specular rays, DirectPass rounds, tie-breaking, neighbour gathering (NeighOpt for primary and
 /// specular rays, occluder gathering for shadow rays), the termination criterion and the seed of its
 /// draws, and lattice-first tracing (levels of spacing 2, 4, …; 0 for none) with its cheap
-/// confirmation where neighbours agree.
+/// confirmation where neighbours agree; <see cref="PlannedMiss"/>, when set, replaces Algorithm 1's
+/// schedule in every other search by the cheapest fixed list missing at most that share of rays with
+/// 1..<see cref="ConfirmationMaxT"/> hits.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -21,7 +23,8 @@ public sealed record RenderOptions(
     StopMode Stop = StopMode.Off,
     ulong Seed = 1,
     int LatticeLevels = 0,
-    double AgreedMiss = RenderOptions.DefaultAgreedMiss)
+    double AgreedMiss = RenderOptions.DefaultAgreedMiss,
+    double? PlannedMiss = null)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;

@@ -22,11 +22,14 @@ public static class SceneRenderer
         var geometry = new SceneGeometry(scene);
         var primaryRays = CameraRays.For(scene.Camera, options.Width, options.Height);
         var passes = new List<PassMetrics>();
-        var stop = StopRuleFor(search, geometry, primaryRays, options, passes);
+        var planned = options.PlannedMiss is { } miss
+            ? ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, miss)
+            : null;
+        var stop = StopRuleFor(search, geometry, primaryRays, options, planned, passes);
         var lattice = options.LatticeLevels > 0
             ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss))
             : null;
-        PassOptions Trace(PixelLayout layout) => new(options.Iterations, options.TieBreak, options.Neighbours ? layout : null, stop, lattice);
+        PassOptions Trace(PixelLayout layout) => new(options.Iterations, options.TieBreak, options.Neighbours ? layout : null, stop, lattice, planned);
         var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, Trace(PixelLayout.Image(options.Width, options.Height)), progress);
 
         // Surface points: each primary hit carries 1 − mirror of its pixel, its reflection the mirror share.
@@ -74,7 +77,7 @@ public static class SceneRenderer
             }
         var shadowLayout = new PixelLayout(options.Width, options.Height, shadowPixels, shadowChannels);
         var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays,
-            new PassOptions(options.ShadowIterations, options.TieBreak, options.ShadowNeighbours ? shadowLayout : null, stop, lattice), progress);
+            new PassOptions(options.ShadowIterations, options.TieBreak, options.ShadowNeighbours ? shadowLayout : null, stop, lattice, planned), progress);
 
         var radiance = new Vec3[primaryRays.Length];
         for (var k = 0; k < points.Count; k++)
@@ -92,7 +95,8 @@ public static class SceneRenderer
     }
 
     // The termination criterion's rule, or null; Scene mode first measures t on a lattice of primary rays.
-    private static StopRule? StopRuleFor(IHitSearch search, SceneGeometry geometry, Ray[] primaryRays, RenderOptions options, List<PassMetrics> passes)
+    private static StopRule? StopRuleFor(IHitSearch search, SceneGeometry geometry, Ray[] primaryRays, RenderOptions options,
+        QSearchSchedule? planned, List<PassMetrics> passes)
     {
         if (options.Stop == StopMode.Off) return null;
         var pt = FalseNegativeRate.Uniform(geometry.Count, geometry.Count);
@@ -101,7 +105,7 @@ public static class SceneRenderer
             (pt, var calibration) = SceneTDistribution.Measure(geometry, primaryRays, options.Width, options.Height);
             passes.Add(calibration);
         }
-        var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper);
+        var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper, planned);
         return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop));
     }
 }

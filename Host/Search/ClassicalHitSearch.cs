@@ -23,7 +23,7 @@ public sealed class ClassicalHitSearch : IHitSearch
     }
 
     /// <summary>None: every primitive is tested.</summary>
-    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula) => 0;
+    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) => 0;
 
     public void Dispose() { }
 }

@@ -17,7 +17,8 @@ public interface IHitSearch : IDisposable
     /// The estimated probability that one search over <paramref name="count"/> primitives reports nothing
     /// although some are accepted, for t distributed as <paramref name="pt"/> (indexed by t): the p̄ of the
     /// termination criterion (sec. 6.2). <paramref name="paperFormula"/> asks for the paper's estimate
-    /// (eq. 10 at r = M_l, eq. 11) instead of the exact rate where they differ.
+    /// (eq. 10 at r = M_l, eq. 11) instead of the exact rate where they differ; <paramref name="schedule"/>,
+    /// when set, is the QSearch schedule the searches use instead of the engine's own.
     /// </summary>
-    double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula);
+    double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null);
 }

@@ -31,9 +31,10 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
         return searches.Select(s => new HitOutcome(s.Found, false, s.Cost)).ToArray();
     }
 
-    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula) => paperFormula
-        ? FalseNegativeRate.Eq10AtBound(Schedule(count), pt)
-        : FalseNegativeRate.QSearchExact(Schedule(count), pt);
+    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) =>
+        paperFormula && schedule is null
+            ? FalseNegativeRate.Eq10AtBound(Schedule(count), pt)
+            : FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt);
 
     private QSearchSchedule Schedule(int count)
     {

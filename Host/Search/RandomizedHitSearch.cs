@@ -44,7 +44,7 @@ public sealed class RandomizedHitSearch(SeededRandom random) : IHitSearch
     /// Eq. 11's product, exact for drawing without replacement. The paper averages it over t uniform on
     /// 1..N − floor(sqrt N) (the t that allow a miss); asked for the paper's formula, so do we.
     /// </summary>
-    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula) =>
+    public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) =>
         FalseNegativeRate.Randomized(count, SampleSize(count),
             paperFormula ? FalseNegativeRate.Uniform(count, Math.Max(1, count - SampleSize(count))) : pt);
 
