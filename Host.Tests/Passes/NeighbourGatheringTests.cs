@@ -75,21 +75,3 @@ public sealed class NeighbourGatheringTests
         Assert.Equal([Ray(2, 4), Ray(4, 4), Ray(2, 6), Ray(4, 6)], layout.CoarserNeighbours(Ray(3, 5), 2).Order());
     }
 }
-
-public sealed class PipelineOnClassicalEngineTests
-{
-    [Fact]
-    public void EveryPipelineTrickKeepsTheClassicalImage()
-    {
-        // The classical engine's answers are certain, so gathering, lattice order and stop rule may cost
-        // more or less but must not change a pixel.
-        var scene = Load("qornell-16.json");
-        var plain = new Rendering.RenderOptions(24, 24);
-        var tricks = plain with { Neighbours = true, ShadowNeighbours = true, Stop = Rendering.StopMode.Exact, LatticeLevels = 3 };
-        using var classical = new ClassicalHitSearch();
-        var a = Rendering.SceneRenderer.Render(scene, classical, plain);
-        var b = Rendering.SceneRenderer.Render(scene, classical, tricks);
-        Assert.Equal(a.Image.Pixels.ToArray(), b.Image.Pixels.ToArray());
-        Assert.True(b.Total.UpdatedPixels > 0);
-    }
-}
