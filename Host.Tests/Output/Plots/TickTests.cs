@@ -19,6 +19,16 @@ public class TickTests
         Assert.Equal(label, TickLabels.Compact(value));
 
     [Theory]
+    [InlineData(-3, "0.001")]
+    [InlineData(5, "100000")]
+    [InlineData(6, "1e6")]
+    [InlineData(-4, "1e-4")]
+    [InlineData(309, "1e309")]
+    [InlineData(-330, "1e-330")]
+    public void PowersOfTenAreLabelledFromTheirExponent(int exponent, string label) =>
+        Assert.Equal(label, TickLabels.PowerOfTen(exponent));
+
+    [Theory]
     [InlineData(0.5, 0.5, false, "0.5")]
     [InlineData(0.0, 0.5, false, "0.0")]
     [InlineData(0.30000000000000004, 0.1, false, "0.3")]

@@ -120,7 +120,7 @@ internal static class AxisTicks
             {
                 var major = Math.Abs(k) % every == 0;
                 // Unlabelled powers only where they stay a few pixels apart.
-                if (major) ticks.Add(new Tick(k, TickLabels.Compact(Math.Pow(10, k)), true));
+                if (major) ticks.Add(new Tick(k, TickLabels.PowerOfTen((int)k), true));
                 else if (pixelsPerDecade >= 4) ticks.Add(new Tick(k, null, false));
             }
             // 2 to 9 times each power, where a decade is wide enough for eight marks to read as a scale.

@@ -14,7 +14,7 @@ public sealed class PlotLayout
     public const int MinHeight = 150;
 
     /// <summary>The largest width or height accepted, which keeps a mistyped size from allocating gigabytes.</summary>
-    public const int MaxSide = 16384;
+    public const int MaxSide = 8192;
 
     private PlotLayout(PixelRect plotArea, PlotAxis x, PlotAxis y)
     {

@@ -40,6 +40,15 @@ internal static class TickLabels
         return Scientific(value, 11);
     }
 
+    /// <summary>
+    /// The label of 10^<paramref name="exponent"/>, written from the exponent so powers beyond the double range
+    /// (which a log axis padded past 1e308 can reach) still read 1e309 rather than infinity.
+    /// </summary>
+    public static string PowerOfTen(int exponent) =>
+        Math.Pow(10, exponent) is var value && value >= PlainMin && value < PlainMax
+            ? Compact(value)
+            : "1e" + exponent.ToString(CultureInfo.InvariantCulture);
+
     // Mantissa with at most `decimals` decimals, trailing zeros dropped: 1e6, 1.5e6, -2e-7.
     private static string Scientific(double value, int decimals)
     {
