@@ -18,6 +18,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new GroverBenchCommand());
         Subcommands.Add(new BenchRenderCommand());
         Subcommands.Add(new BenchOptimisedCommand());
+        Subcommands.Add(new BenchParetoCommand());
     }
 
     private sealed class GroverBenchCommand : Command

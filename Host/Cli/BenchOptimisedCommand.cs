@@ -167,16 +167,19 @@ public sealed class BenchOptimisedCommand : Command
             text.AppendLine("## Randomized classical against quantum at equal Int/Ray (the paper's table 8, Qornell 64)");
             text.AppendLine();
             text.AppendLine("For each version the quantum render uses 4 rounds (8 with termination); the randomized renderer gets the number of rounds that brings");
-            text.AppendLine("its Int/Ray closest to the quantum one (paper count, the paper's p̄ for termination: eq. 11 for the randomized engine).");
+            text.AppendLine("its Int/Ray closest to the quantum one (paper count, the paper's p̄ for termination: eq. 11 for the randomized engine). With termination the");
+            text.AppendLine("randomized renderer stops most rays after one miss (p̄_RC ≈ 0.12), so more rounds cannot raise its Int/Ray to the quantum one: the row");
+            text.AppendLine("then compares at the most it spends.");
             text.AppendLine();
             text.AppendLine("| version | quantum Int/Ray | quantum NRMSE | randomized #It | randomized Int/Ray | randomized NRMSE | NRMSE ratio | paper: Q NRMSE | paper: RC NRMSE |");
             text.AppendLine("|---|---|---|---|---|---|---|---|---|");
-            var t8 = progress.AddTask("table 8", maxValue: PaperNumbers.Randomized.Count);
+            var t8 = progress.AddTask("table 8", maxValue: PaperNumbers.Randomized.Count + 1);
             var versions = new[]
             {
                 plain,
                 plain with { Neighbours = true },
                 plain with { Iterations = 8, Neighbours = true, Stop = StopMode.Paper },
+                best with { Stop = StopMode.Paper },
             };
             for (var v = 0; v < versions.Length; v++)
             {
@@ -190,8 +193,12 @@ public sealed class BenchOptimisedCommand : Command
                         (closest, closestIt) = (r, it);
                     if (r.Result.Total.PerRayPaper > q.Result.Total.PerRayPaper * 1.2) break;
                 }
-                var row = PaperNumbers.Randomized[v];
-                text.AppendLine($"| {row.Version} | {F(q.Result.Total.PerRayPaper)} | {q.Error.Nrmse:P2} | {closestIt} | {F(closest!.Result.Total.PerRayPaper)} | {closest.Error.Nrmse:P2} | {closest.Error.Nrmse / Math.Max(q.Error.Nrmse, 1e-6):0}x | {row.QNrmse:P1} | {row.RcNrmse:P1} |");
+                var (version, paperQ, paperRc) = v < PaperNumbers.Randomized.Count
+                    ? (PaperNumbers.Randomized[v].Version, PaperNumbers.Randomized[v].QNrmse.ToString("P1", CultureInfo.InvariantCulture), PaperNumbers.Randomized[v].RcNrmse.ToString("P1", CultureInfo.InvariantCulture))
+                    : ("our default pipeline (paper's p̄)", "", "");
+                // An exact quantum render has NRMSE 0: the ratio is then shown as ∞.
+                var ratio = q.Error.Nrmse > 0 ? $"{closest!.Error.Nrmse / q.Error.Nrmse:0}x" : "∞";
+                text.AppendLine($"| {version} | {F(q.Result.Total.PerRayPaper)} | {q.Error.Nrmse:P2} | {closestIt} | {F(closest!.Result.Total.PerRayPaper)} | {closest.Error.Nrmse:P2} | {ratio} | {paperQ} | {paperRc} |");
                 t8.Increment(1);
             }
         });
