@@ -17,6 +17,7 @@ public sealed class BenchCommand : Command
     {
         Subcommands.Add(new GroverBenchCommand());
         Subcommands.Add(new BenchRenderCommand());
+        Subcommands.Add(new BenchSupersampleCommand());
     }
 
     private sealed class GroverBenchCommand : Command

@@ -11,5 +11,8 @@ public static class RandomStreams
 
     /// <summary>QSearch's iteration counts in a render, drawn in the fixed order the passes ask for them.</summary>
     public const ulong Search = 3;
+    /// <summary>Supersampling experiments: one analytic engine per estimator run, from this stream on.</summary>
+    public const ulong Supersampling = 1UL << 24;
+
     public const ulong FirstSearch = 1UL << 32;
 }
