@@ -14,5 +14,9 @@ public static class RandomStreams
 
     /// <summary>The termination criterion's draws in a render.</summary>
     public const ulong Stop = 4;
+
+    /// <summary>Supersampling experiments: one analytic engine per estimator run, from this stream on.</summary>
+    public const ulong Supersampling = 1UL << 24;
+
     public const ulong FirstSearch = 1UL << 32;
 }

@@ -1,0 +1,15 @@
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// Flip a coin <see cref="Flips"/> times, each flip prepared afresh and amplified by
+/// <see cref="Iterations"/> Grover operators; the engine returns the number of heads.
+/// </summary>
+/// <param name="Kind">Which coin.</param>
+/// <param name="Amplitudes">One amplitude a_i ∈ [−1, 1] per subpixel (at least one).</param>
+/// <param name="Iterations">Grover operators per flip, m ≥ 0.</param>
+/// <param name="Flips">Flips, ≥ 0.</param>
+public sealed record CoinRequest(CoinKind Kind, double[] Amplitudes, int Iterations, int Flips)
+{
+    /// <summary>DESIGN.md §5: the preparation is one query, each Grover operator two (oracle and inverse).</summary>
+    public long Queries => (long)Flips * (1 + 2L * Iterations);
+}

@@ -1,0 +1,134 @@
+using System.Globalization;
+using System.Text;
+using System.Text.Json;
+using QuantumRayTracing.Bridge;
+
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// Runs the supersampling circuits as Q# on the QDK full-state simulator: a batch is cut into chunks of
+/// bounded simulation work, each chunk is one call of <c>CountCoinHeadsBatch</c> or <c>MeasureQssBatch</c>
+/// on its own bridge, and the chunks run on all workers at once. Outcomes cannot be seeded.
+/// </summary>
+public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true) : ISupersamplingEngine
+{
+    public const string CoinOperation = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
+    public const string QssOperation = "QuantumRayTracing.Supersampling.MeasureQssBatch";
+
+    /// <summary>Oracle applications (each N controlled rotations) per call: a few seconds of simulation, far below the bridge's time limit.</summary>
+    public const double MaxOracleCallsPerChunk = 20_000;
+
+    public string Name => "fullstate";
+
+    public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
+    {
+        var heads = new int[requests.Count];
+        Run(requests, r => (double)r.Queries * r.Amplitudes.Length, CoinOperation, CoinExpression, (chunk, start, json) =>
+        {
+            var values = JsonSerializer.Deserialize<int[]>(json) ?? throw new BridgeException($"{CoinOperation} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{CoinOperation} returned {values.Length} counts for {chunk.Count} requests");
+            for (var k = 0; k < chunk.Count; k++)
+            {
+                if (values[k] < 0 || values[k] > chunk[k].Flips) throw new BridgeException($"{CoinOperation} returned {values[k]} heads of {chunk[k].Flips} flips");
+                heads[start + k] = values[k];
+            }
+        });
+        return heads;
+    }
+
+    public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests)
+    {
+        var readouts = new int[requests.Count][];
+        Run(requests, r => (double)r.Shots * QssRequest.QueriesPerRun(r.CounterBits) * r.Amplitudes.Length, QssOperation, QssExpression, (chunk, start, json) =>
+        {
+            var values = JsonSerializer.Deserialize<int[][]>(json) ?? throw new BridgeException($"{QssOperation} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{QssOperation} returned {values.Length} results for {chunk.Count} requests");
+            for (var k = 0; k < chunk.Count; k++)
+            {
+                if (values[k].Length != chunk[k].Shots || values[k].Any(y => y < 0 || y >= 1 << chunk[k].CounterBits))
+                    throw new BridgeException($"{QssOperation} returned readouts outside 0..{(1 << chunk[k].CounterBits) - 1} or the wrong number of them");
+                readouts[start + k] = values[k];
+            }
+        });
+        return readouts;
+    }
+
+    private void Run<T>(IReadOnlyList<T> requests, Func<T, double> cost, string operation, Func<IReadOnlyList<T>, string> expression,
+        Action<IReadOnlyList<T>, int, string> accept)
+    {
+        if (requests.Count == 0) return;
+        pool.ForEach(Chunks(requests, cost, pool.Workers), (chunk, bridge) =>
+        {
+            var slice = requests.Skip(chunk.Start).Take(chunk.Length).ToArray();
+            accept(slice, chunk.Start, bridge.Run(expression(slice))[0]);
+        });
+    }
+
+    /// <summary>Consecutive chunks of at most <see cref="MaxOracleCallsPerChunk"/> work (one request may exceed it alone), at least one per worker.</summary>
+    internal static List<(int Start, int Length)> Chunks<T>(IReadOnlyList<T> requests, Func<T, double> cost, int workers)
+    {
+        var total = requests.Sum(cost);
+        var budget = Math.Min(MaxOracleCallsPerChunk, Math.Max(1, total / workers));
+        var chunks = new List<(int Start, int Length)>();
+        var (start, sum) = (0, 0.0);
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var next = cost(requests[k]);
+            if (k > start && sum + next > budget)
+            {
+                chunks.Add((start, k - start));
+                (start, sum) = (k, 0.0);
+            }
+            sum += next;
+        }
+        chunks.Add((start, requests.Count - start));
+        return chunks;
+    }
+
+    public static string CoinExpression(IReadOnlyList<CoinRequest> requests)
+    {
+        var text = new StringBuilder(CoinOperation).Append("([");
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var r = requests[k];
+            if (k > 0) text.Append(", ");
+            text.Append('(').Append(r.Kind == CoinKind.Shifted ? "true" : "false").Append(", ");
+            AppendDoubles(text, r.Amplitudes);
+            text.Append(", ").Append(r.Iterations.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(r.Flips.ToString(CultureInfo.InvariantCulture)).Append(')');
+        }
+        return text.Append("])").ToString();
+    }
+
+    public static string QssExpression(IReadOnlyList<QssRequest> requests)
+    {
+        var text = new StringBuilder(QssOperation).Append("([");
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var r = requests[k];
+            if (k > 0) text.Append(", ");
+            text.Append('(');
+            AppendDoubles(text, r.Amplitudes);
+            text.Append(", ").Append(r.CounterBits.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(r.Shots.ToString(CultureInfo.InvariantCulture)).Append(')');
+        }
+        return text.Append("])").ToString();
+    }
+
+    /// <summary>A Q# Double[] literal; fixed notation with a decimal point, which Q# requires of a Double.</summary>
+    private static void AppendDoubles(StringBuilder text, double[] values)
+    {
+        text.Append('[');
+        for (var i = 0; i < values.Length; i++)
+        {
+            if (i > 0) text.Append(", ");
+            text.Append(Math.Clamp(values[i], -1, 1).ToString("0.0###################", CultureInfo.InvariantCulture));
+        }
+        text.Append(']');
+    }
+
+    public void Dispose()
+    {
+        if (ownsPool) pool.Dispose();
+    }
+}

@@ -1,0 +1,16 @@
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// The seam for mean-estimation circuits, beside <see cref="Engines.IGroverEngine"/> for search: batches of
+/// coin flips and QSS runs in, outcomes out, in request order. Estimators above it are shared by every engine.
+/// </summary>
+public interface ISupersamplingEngine : IDisposable
+{
+    string Name { get; }
+
+    /// <summary>The head count of each request.</summary>
+    IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests);
+
+    /// <summary>The counter readouts of each request, <see cref="QssRequest.Shots"/> of them.</summary>
+    IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests);
+}
