@@ -23,48 +23,28 @@ public sealed class BenchOptimisedCommand : Command
 {
     public const string CommandLine = "qrt bench optimised";
 
-    private readonly Option<DirectoryInfo> _scenes = new("--scenes")
-    {
-        Description = "Directory holding the qornell-N.json and depth-complexity-N.json scenes.",
-        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
-    };
-
     private readonly Option<int> _size = new("--size")
     {
         Description = "Square image size (the paper: 128).",
         DefaultValueFactory = _ => 128,
     };
 
-    private readonly Option<ulong> _seed = new("--seed")
-    {
-        Description = "Seed of every render and simulation.",
-        DefaultValueFactory = _ => 1UL,
-    };
-
-    private readonly Option<FileInfo?> _output = new("--output", "-o")
-    {
-        Description = "Write the Markdown report here (e.g. docs/optimised-tracing.md). It replaces only a report this command wrote before.",
-    };
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/optimised-tracing.md");
 
     public BenchOptimisedCommand() : base("optimised", "The paper's tables 5-8 (neighbour gathering, false-negative estimates, termination, randomized classical) and our default configuration, on the analytic engine.")
     {
-        Options.Add(_scenes);
         Options.Add(_size);
-        Options.Add(_seed);
-        Options.Add(_output);
+        _report.AddTo(this);
         _size.Between(1, 1024);
         SetAction(Execute);
     }
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_output);
-        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandLine));
-        report.EnsureWritable();
-        var directory = parse.GetValue(_scenes)!;
-        Scene Load(string stem) => SceneLoader.Load(Path.Combine(directory.FullName, stem + ".json"));
+        var report = _report.Report(parse);
+        Scene Load(string stem) => _report.Load(parse, stem);
         var size = parse.GetValue(_size);
-        var seed = parse.GetValue(_seed);
+        var seed = parse.GetValue(_report.Seed);
         var paper = new QSearchOptions(Rule: MSetRule.Round);
         var ours = new QSearchOptions();
         var plain = new RenderOptions(size, size, Seed: seed);
@@ -76,7 +56,7 @@ public sealed class BenchOptimisedCommand : Command
             LatticeLevels = RenderDefaults.LatticeLevels, AgreedMiss = RenderDefaults.AgreedMiss, PlannedMiss = RenderDefaults.PlannedMiss,
         };
         RenderMeasurement Measure(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch) =>
-            RenderMeasurement.Run(scene, kind, options, qsearch, seed, 1, RenderMeasurement.Reference(scene, options));
+            RenderMeasurement.Run(scene, kind, options, qsearch, seed, parse.GetValue(_report.Workers), RenderMeasurement.Reference(scene, options));
 
         var text = new StringBuilder();
         text.AppendLine("# Optimised tracing: neighbours, termination, lattice");
@@ -202,12 +182,7 @@ public sealed class BenchOptimisedCommand : Command
                 t8.Increment(1);
             }
         });
-        text.AppendLine();
-        text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
-        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
-        var body = text.ToString();
-        Console.WriteLine(body);
-        report.Write(body);
+        BenchReportOptions.Publish(report, text);
         return 0;
     }
 

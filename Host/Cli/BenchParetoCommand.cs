@@ -32,28 +32,14 @@ public sealed class BenchParetoCommand : Command
         DefaultValueFactory = _ => 32,
     };
 
-    private readonly Option<ulong> _seed = new("--seed") { Description = "Seed of every render.", DefaultValueFactory = _ => 1UL };
-
-    private readonly Option<int> _workers = new("--workers")
-    {
-        Description = "Node bridges for the fullstate engine. Default: the core count.",
-        DefaultValueFactory = _ => Bridge.BridgePool.DefaultWorkers,
-    };
-
-    private readonly Option<FileInfo?> _output = new("--output", "-o")
-    {
-        Description = "Markdown report (e.g. docs/speed-vs-error.md); the plots go beside it as <name>-*.png. Replaces only files this command wrote.",
-    };
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/speed-vs-error.md; the plots go beside it as <name>-intray.png and <name>-walltime.png");
 
     public BenchParetoCommand() : base("pareto", "Speed against error for every configuration of every engine (classical, randomized, analytic, fullstate), Pareto fronts marked, with PNG plots.")
     {
         Options.Add(_scene);
         Options.Add(_size);
-        Options.Add(_seed);
-        Options.Add(_workers);
-        Options.Add(_output);
+        _report.AddTo(this, scenes: false);
         _size.Between(1, 1024);
-        _workers.AtLeast(1);
         SetAction(Execute);
     }
 
@@ -61,15 +47,14 @@ public sealed class BenchParetoCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_output);
-        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandLine));
-        report.EnsureWritable();
-        var plotPaths = output is null ? [] : new[] { "intray", "walltime" }.Select(k => RenderCommand.Sibling(output.FullName, k)).ToArray();
+        var output = parse.GetValue(_report.Output);
+        var report = _report.Report(parse);
+        var plotPaths = output is null ? [] : new[] { "intray", "walltime" }.Select(k => Path.ChangeExtension(RenderCommand.Sibling(output.FullName, k), ".png")).ToArray();
         ImageFiles.EnsureWritable(plotPaths, []);
         var sceneFile = parse.GetValue(_scene)!;
         var scene = SceneLoader.Load(sceneFile.FullName);
         var size = parse.GetValue(_size);
-        var seed = parse.GetValue(_seed);
+        var seed = parse.GetValue(_report.Seed);
         var plain = new RenderOptions(size, size, Seed: seed);
         var configurations = new List<(string Name, RenderOptions Options)>();
         for (var it = 1; it <= 5; it++) configurations.Add(($"base, #IT {it}", plain with { Iterations = it }));
@@ -90,7 +75,7 @@ public sealed class BenchParetoCommand : Command
                 foreach (var (name, options) in configurations)
                 {
                     var reference = RenderMeasurement.Reference(scene, options);
-                    var m = RenderMeasurement.Run(scene, kind, options, new QSearchOptions(), seed, parse.GetValue(_workers), reference);
+                    var m = RenderMeasurement.Run(scene, kind, options, new QSearchOptions(), seed, parse.GetValue(_report.Workers), reference);
                     points.Add(new(EngineOptions.Name(kind), name, m.Result.Total.PerRayConservative, m.WallTime.TotalSeconds, m.Error.Nrmse, m.Error.DifferentPixels));
                     task.Increment(1);
                 }
@@ -119,19 +104,13 @@ public sealed class BenchParetoCommand : Command
             text.AppendLine();
             text.AppendLine($"![Wall time against error]({Path.GetFileName(plotPaths[1])})");
         }
-        text.AppendLine();
-        text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
-        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
-        var body = text.ToString();
-        Console.WriteLine(body);
-        if (output is null) return 0;
-
-        ImageFiles.Write(
-        [
-            (Plot("Int/Ray against NRMSE", "Int/Ray (conservative)", AxisScale.Linear, points, p => p.IntPerRay, intFront), plotPaths[0]),
-            (Plot("Wall time against NRMSE", "wall time (s)", AxisScale.Log10, points, p => p.Seconds, timeFront), plotPaths[1]),
-        ]);
-        report.Write(body);
+        if (output is not null)
+            ImageFiles.Write(
+            [
+                (Plot("Int/Ray against NRMSE", "Int/Ray (conservative)", AxisScale.Linear, points, p => p.IntPerRay, intFront), plotPaths[0]),
+                (Plot("Wall time against NRMSE", "wall time (s)", AxisScale.Log10, points, p => p.Seconds, timeFront), plotPaths[1]),
+            ]);
+        BenchReportOptions.Publish(report, text);
         return 0;
     }
 

@@ -19,12 +19,6 @@ public sealed class BenchRenderCommand : Command
 {
     public const string CommandLine = "qrt bench render";
 
-    private readonly Option<DirectoryInfo> _scenes = new("--scenes")
-    {
-        Description = "Directory holding the qornell-N.json and depth-complexity-N.json scenes.",
-        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
-    };
-
     private readonly Option<int> _size = new("--size")
     {
         Description = "Square image size of the table 2 and 3 renders (the paper: 128).",
@@ -37,47 +31,25 @@ public sealed class BenchRenderCommand : Command
         DefaultValueFactory = _ => 32,
     };
 
-    private readonly Option<ulong> _seed = new("--seed")
-    {
-        Description = "Seed of every render.",
-        DefaultValueFactory = _ => 1UL,
-    };
-
-    private readonly Option<int> _workers = new("--workers")
-    {
-        Description = "Node bridges for the fullstate engine. Default: the core count.",
-        DefaultValueFactory = _ => Bridge.BridgePool.DefaultWorkers,
-    };
-
-    private readonly Option<FileInfo?> _output = new("--output", "-o")
-    {
-        Description = "Write the Markdown report here (e.g. docs/rendering-results.md). It replaces only a report this command wrote before.",
-    };
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/rendering-results.md");
 
     public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
     {
-        Options.Add(_scenes);
         Options.Add(_size);
         Options.Add(_engineSize);
-        Options.Add(_seed);
-        Options.Add(_workers);
-        Options.Add(_output);
+        _report.AddTo(this);
         _size.Between(1, 1024);
         _engineSize.Between(1, 1024);
-        _workers.AtLeast(1);
         SetAction(Execute);
     }
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_output);
-        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandLine));
-        report.EnsureWritable();
-        var directory = parse.GetValue(_scenes)!;
-        Scene Load(string stem) => SceneLoader.Load(Path.Combine(directory.FullName, stem + ".json"));
+        var report = _report.Report(parse);
+        Scene Load(string stem) => _report.Load(parse, stem);
         var size = parse.GetValue(_size);
-        var seed = parse.GetValue(_seed);
-        var workers = parse.GetValue(_workers);
+        var seed = parse.GetValue(_report.Seed);
+        var workers = parse.GetValue(_report.Workers);
         var paperRule = new QSearchOptions(Rule: MSetRule.Round);
         var ourRule = new QSearchOptions();
         var text = new StringBuilder();
@@ -158,11 +130,7 @@ public sealed class BenchRenderCommand : Command
                 "The same searches with the oracle built from comparators (`gate`) and from the marked set (`fullstate`), both on the QDK simulator.",
                 Load("qornell-8"), new RenderOptions(8, 8), [EngineKind.Gate, EngineKind.FullState]);
         });
-        text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
-        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
-        var body = text.ToString();
-        Console.WriteLine(body);
-        report.Write(body);
+        BenchReportOptions.Publish(report, text);
         return 0;
     }
 

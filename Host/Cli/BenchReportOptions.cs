@@ -1,0 +1,69 @@
+using System.CommandLine;
+using System.Text;
+using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Scenes;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// What every `bench` command that writes a report to docs/ shares: the scene directory, the seed, the
+/// bridge count, the output file (replaced only if this command wrote it) and the footer naming the
+/// machine and the command that regenerates the report.
+/// </summary>
+public sealed class BenchReportOptions(string commandLine, string outputExample)
+{
+    public readonly Option<DirectoryInfo> Scenes = new("--scenes")
+    {
+        Description = "Directory holding the scene files.",
+        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
+    };
+
+    public readonly Option<ulong> Seed = new("--seed")
+    {
+        Description = "Seed of every render and simulation.",
+        DefaultValueFactory = _ => 1UL,
+    };
+
+    public readonly Option<int> Workers = new("--workers")
+    {
+        Description = "Node bridges for the Q# engines. Default: the core count.",
+        DefaultValueFactory = _ => Bridge.BridgePool.DefaultWorkers,
+    };
+
+    public readonly Option<FileInfo?> Output = new("--output", "-o")
+    {
+        Description = $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before.",
+    };
+
+    public void AddTo(Command command, bool scenes = true)
+    {
+        if (scenes) command.Options.Add(Scenes);
+        command.Options.Add(Seed);
+        command.Options.Add(Workers);
+        command.Options.Add(Output);
+        Workers.AtLeast(1);
+    }
+
+    /// <summary>The report file, checked writable before any work starts.</summary>
+    public GeneratedReport Report(ParseResult parse)
+    {
+        var report = new GeneratedReport(parse.GetValue(Output)?.FullName, GeneratedReport.MarkdownMarker(commandLine));
+        report.EnsureWritable();
+        return report;
+    }
+
+    /// <summary>The scene <paramref name="stem"/>.json from the scene directory.</summary>
+    public Scene Load(ParseResult parse, string stem) => SceneLoader.Load(Path.Combine(parse.GetValue(Scenes)!.FullName, stem + ".json"));
+
+    /// <summary>Appends the machine and command lines, prints the report and writes it.</summary>
+    public static void Publish(GeneratedReport report, StringBuilder text)
+    {
+        text.AppendLine();
+        text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
+        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
+        var body = text.ToString();
+        Console.WriteLine(body);
+        report.Write(body);
+    }
+}
