@@ -115,7 +115,7 @@ public sealed class RenderCommand : Command
             // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
             var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
             var registers = OracleRegisters.For(new OracleInput(centre, centre.FullRange));
-            AnsiConsole.WriteLine($"gate-level oracle, centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, 2 x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, 7 flags), {registers.PeakQubits} at peak with library auxiliaries");
+            AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
         }
 
         var progress = new ConsoleProgress(engineName);

@@ -34,6 +34,8 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
 
     public const string InputType = "QuantumRayTracing.Intersection.IntersectionInput";
 
+    public const string ConstructionType = "QuantumRayTracing.Intersection.OracleConstruction";
+
     public string Name => "gate";
 
     public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
@@ -64,8 +66,9 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
 
     /// <summary>
     /// The Q# value of one search's oracle input, an <c>IntersectionInput</c>: widths, bounds
-    /// [minX, maxX, minY, maxY, minZ, maxZ] and point [x, y, z] per row, validity, depths, and the
-    /// clamped comparator constants (<see cref="OracleConstants"/>).
+    /// [minX, maxX, minY, maxY, minZ, maxZ] and point [x, y, z] per row, validity, depths, the
+    /// clamped comparator constants (<see cref="OracleConstants"/>), each primitive's flat axis and the
+    /// construction.
     /// </summary>
     public static string OracleArgument(OracleInput input)
     {
@@ -93,9 +96,18 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         text.Append("], Depths = [");
         for (var p = 0; p < n; p++)
             text.Append(p > 0 ? ", " : "").Append(Int(table.Depth(p)));
-        return text.Append("], Near = ").Append(constants.Near.ToString(CultureInfo.InvariantCulture))
-            .Append(", Limit = ").Append(constants.Limit.ToString(CultureInfo.InvariantCulture)).Append(" }").ToString();
+        text.Append("], Near = ").Append(constants.Near.ToString(CultureInfo.InvariantCulture))
+            .Append(", Limit = ").Append(constants.Limit.ToString(CultureInfo.InvariantCulture)).Append(", FlatAxes = [");
+        for (var p = 0; p < n; p++)
+            text.Append(p > 0 ? ", " : "").Append(Int(geometry.Rectangles[p].FlatAxis));
+        var construction = input.Construction;
+        return text.Append("], Construction = new ").Append(ConstructionType)
+            .Append(" { InPlaneAxes = ").Append(Bool(construction.InPlaneAxes))
+            .Append(", BothBounds = ").Append(Bool(construction.BothBounds))
+            .Append(", MeasuredUnload = ").Append(Bool(construction.MeasuredUnload)).Append(" } }").ToString();
     }
+
+    private static string Bool(bool value) => value ? "true" : "false";
 
     private static string Int(int value) => value.ToString(CultureInfo.InvariantCulture);
 
