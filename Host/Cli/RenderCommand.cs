@@ -94,9 +94,7 @@ public sealed class RenderCommand : Command
     private int Execute(ParseResult parse)
     {
         var sceneFile = parse.GetValue(_scene);
-        var scene = sceneFile is null
-            ? SceneLoader.Parse(QornellBox.Build(DefaultQornellPrimitives).ToJson(), $"built-in qornell-{DefaultQornellPrimitives}")
-            : SceneLoader.Load(sceneFile.FullName);
+        var scene = LoadScene(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
         var engineName = EngineOptions.Name(kind);
         var stem = sceneFile is null ? $"qornell-{DefaultQornellPrimitives}" : Path.GetFileNameWithoutExtension(sceneFile.Name);
@@ -172,6 +170,11 @@ public sealed class RenderCommand : Command
     }
 
     private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
+
+    /// <summary>The scene file, or the built-in Qornell box with <see cref="DefaultQornellPrimitives"/> primitives when none is named.</summary>
+    public static Scene LoadScene(FileInfo? file) => file is null
+        ? SceneLoader.Parse(QornellBox.Build(DefaultQornellPrimitives).ToJson(), $"built-in qornell-{DefaultQornellPrimitives}")
+        : SceneLoader.Load(file.FullName);
 
     /// <summary>out.png → out-reference.png.</summary>
     public static string Sibling(string output, string suffix)
