@@ -32,6 +32,7 @@ public sealed class EstimateCommandTests : IDisposable
     [InlineData("--models", "qubit_gate_ns_e3:floquet_code")]
     [InlineData("--models", "qubit_gate_xx")]
     [InlineData("--iterations", "-1")]
+    [InlineData("--iterations", "many")]
     public void UsageErrors(params string[] options) =>
         Assert.Equal(1, CommandLine.Run(["estimate", Scene, .. options]));
 

@@ -64,7 +64,7 @@ public sealed class EstimateCommand : Command
         });
         _iterations.Validators.Add(r =>
         {
-            if (r.GetValueOrDefault<int?>() is < 0 or > 100_000) r.AddError("--iterations must be between 0 and 100000");
+            if (r.TryGetValue<int?>(out var value) && value is < 0 or > 100_000) r.AddError("--iterations must be between 0 and 100000");
         });
         Validators.Add(r =>
         {

@@ -51,11 +51,11 @@ public sealed class EstimateSweepCommand : Command
         foreach (var option in new[] { _primitives, _ablation })
             option.Validators.Add(r =>
             {
-                if ((r.GetValueOrDefault<int[]>() ?? []).Any(n => n is < 1 or > 4096)) r.AddError($"{option.Name}: each N must be between 1 and 4096");
+                if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(n => n is < 1 or > 4096)) r.AddError($"{option.Name}: each N must be between 1 and 4096");
             });
         _bits.Validators.Add(r =>
         {
-            if ((r.GetValueOrDefault<int[]>() ?? []).Any(c => c is < 2 or > 16)) r.AddError("--bits: each count must be between 2 and 16");
+            if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(c => c is < 2 or > 16)) r.AddError("--bits: each count must be between 2 and 16");
         });
         SetAction(Execute);
     }

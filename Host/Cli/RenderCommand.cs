@@ -66,6 +66,12 @@ public sealed class RenderCommand : Command
         Description = "Also write the classical reference (<output>-reference.png) and a difference image (<output>-difference.png: differing pixels red).",
     };
 
+    private readonly Option<int> _maxQubits = new("--max-qubits")
+    {
+        Description = "Engine gate: refuse, before simulating anything, a search whose oracle needs more qubits at peak than this (registers and library auxiliaries; `qrt estimate` shows them). The QDK simulator is sparse, so width itself costs little; the default covers every shipped scene.",
+        DefaultValueFactory = _ => GateEngine.DefaultMaxQubits,
+    };
+
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
         EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
 
@@ -80,10 +86,12 @@ public sealed class RenderCommand : Command
         Options.Add(_size);
         Options.Add(_tieBreak);
         Options.Add(_reference);
+        Options.Add(_maxQubits);
         _engine.AddTo(this);
         _qsearch.AddTo(this);
         _passes.Between(1, 64);
         _shadowPasses.Between(1, 64);
+        _maxQubits.Between(1, 100_000);
         _size.Validators.Add(r =>
         {
             if (ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
@@ -119,8 +127,18 @@ public sealed class RenderCommand : Command
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse)))
-            result = SceneRenderer.Render(scene, search, options, progress);
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_maxQubits)))
+        {
+            try
+            {
+                result = SceneRenderer.Render(scene, search, options, progress);
+            }
+            catch (QubitLimitException e)
+            {
+                progress.Finish();
+                throw new UserError($"{scene.Name}: {e.Message}");
+            }
+        }
         var renderTime = clock.Elapsed;
         clock.Restart();
         var referenceProgress = new ConsoleProgress("classical reference");
