@@ -56,7 +56,7 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
         text.AppendLine("whose search needs the most qubits, then the most depth bits; its first search, every depth and id accepted). `qrt estimate` gives the");
         text.AppendLine("same figures, and those of a Grover iteration and a QSearch run, for any scene and pixel.");
         text.AppendLine();
-        text.AppendLine($"Regenerate: `{command}` (a few minutes on 2 cores). Machine: {machine}.");
+        text.AppendLine($"Regenerate: `{command}` (under a minute on 2 cores). Machine: {machine}.");
         text.AppendLine();
 
         text.AppendLine("## The paper's table 9 beside ours (N = 4)");
@@ -87,9 +87,11 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
 
         text.AppendLine($"## The oracle against the number of primitives ({c4}-bit grid), before → after");
         text.AppendLine();
-        text.AppendLine($"Before: `{OracleConstruction.Baseline}` (x, y and z tested for every primitive, minimum then maximum in one register: 6 lookups and an unlookup");
-        text.AppendLine($"per computation). After: `{OracleConstruction.Compact}` (only the two axes in each primitive's plane, both bounds loaded at once: 2 lookups and");
-        text.AppendLine("an unlookup). Both are checked against verify-rpc on every basis state (`GateOracleTests`).");
+        text.AppendLine($"Before: `{OracleConstruction.Baseline}`, the oracle as first built (commit 97cb017; the same circuit, kept as `--oracle baseline`): x, y and z");
+        text.AppendLine("tested for every primitive, minimum then maximum in one register, so 6 lookups and an unlookup per computation. After:");
+        text.AppendLine($"`{OracleConstruction.Compact}`, the default: only the two axes in each primitive's plane (on the flat axis the point is the plane and");
+        text.AppendLine("min = max, so that test always passes) and both bounds loaded at once, so 2 lookups and an unlookup, for one more coordinate");
+        text.AppendLine("register and one flag fewer. Every construction is checked against verify-rpc on every basis state (`GateOracleTests`).");
         text.AppendLine();
         SweepTable(text, "N", primitives.Select(n => (n.ToString(CultureInfo.InvariantCulture), (n, c4))), withCircuits);
 
