@@ -66,6 +66,24 @@ public sealed class ResourceEstimatorTests(FullStateFixture fixture)
     }
 
     [Fact]
+    public void ExtrapolatedRunMatchesTheTracedRun()
+    {
+        // A run of r = 5 traced whole against the extrapolation from r = 1 and r = 2.
+        var bridge = fixture.Engine.Pool.Bridges[0];
+        CircuitCounts Trace(int r) => CircuitCounts.Parse(bridge.Circuit(EstimatedCircuits.SearchRun.Expression(Small.Value with { Iterations = r })));
+        var traced = Trace(5);
+        var extrapolated = CircuitCounts.Extrapolate(Trace(1), Trace(2), 5);
+        Assert.True(extrapolated.Extrapolated);
+        Assert.Equal(traced.Qubits, extrapolated.Qubits);
+        Assert.Equal((traced.Native.Measurements, traced.Native.Resets), (extrapolated.Native.Measurements, extrapolated.Native.Resets));
+        foreach (var kind in traced.Native.Gates.Keys.Except(CircuitCounts.OutcomeDependentKinds))
+            Assert.True(traced.Native.Gate(kind) == extrapolated.Native.Gate(kind), $"{kind}: traced {traced.Native.Gate(kind)}, extrapolated {extrapolated.Native.Gate(kind)}");
+        // The depth moves only with the random corrections (a few percent).
+        Assert.InRange(extrapolated.Native.Depth, 0.95 * traced.Native.Depth, 1.05 * traced.Native.Depth);
+        Assert.InRange(extrapolated.QiskitCcx.Depth, 0.95 * traced.QiskitCcx.Depth, 1.05 * traced.QiskitCcx.Depth);
+    }
+
+    [Fact]
     public void WidthIsTheSceneRegistersAndGrowsWithLog2N()
     {
         int[] sizes = [4, 16, 64, 256];

@@ -15,6 +15,20 @@ namespace QuantumRayTracing.Estimates;
 /// </remarks>
 public sealed record CircuitCounts(int Qubits, long Operations, GateTally Native, GateTally QiskitCcx)
 {
+    /// <summary>Whether the counts were extrapolated from shorter runs (<see cref="Extrapolate"/>) rather than traced.</summary>
+    public bool Extrapolated { get; init; }
+
+    /// <summary>
+    /// The counts of a circuit that applies one body <paramref name="repeats"/> times (a QSearch run's r
+    /// iterations), from the traced circuits with the body once and twice. Exact for every count but the
+    /// outcome-dependent corrections, since each repetition is the same circuit; the depth is exact when
+    /// each repetition adds the same depth, as serial iterations on the same registers do.
+    /// </summary>
+    public static CircuitCounts Extrapolate(CircuitCounts one, CircuitCounts two, int repeats) =>
+        new(Math.Max(one.Qubits, two.Qubits), one.Operations + (repeats - 1) * (two.Operations - one.Operations),
+            GateTally.Extrapolate(one.Native, two.Native, repeats), GateTally.Extrapolate(one.QiskitCcx, two.QiskitCcx, repeats))
+        { Extrapolated = true };
+
     /// <summary>Gate kinds whose count depends on measurement outcomes (the uncomputations' phase corrections).</summary>
     public static readonly IReadOnlySet<string> OutcomeDependentKinds = new HashSet<string> { "Z", "CZ" };
 

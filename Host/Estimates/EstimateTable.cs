@@ -31,10 +31,11 @@ public static class EstimateTable
         var counted = estimates.Where(e => e.Counts is not null).ToArray();
         if (counted.Length > 0)
         {
-            Row("gates, QDK basis (getCircuit)", e => e.Counts is { } c ? N(c.Native.GateCount) : "–");
+            Row("circuit (getCircuit)", e => e.Counts is { } c ? c.Extrapolated ? $"r = 1, 2 traced, r = {e.Subject.Iterations} extrapolated" : "traced" : "–");
+            Row("gates, QDK basis", e => e.Counts is { } c ? N(c.Native.GateCount) : "–");
             foreach (var kind in Kinds(counted))
                 Row($"  {kind}{(CircuitCounts.OutcomeDependentKinds.Contains(kind) ? " *" : "")}", e => e.Counts is { } c ? N(c.Native.Gate(kind)) : "–");
-            Row("measurements / resets (getCircuit)", e => e.Counts is { } c ? $"{N(c.Native.Measurements)} / {N(c.Native.Resets)}" : "–");
+            Row("measurements / resets", e => e.Counts is { } c ? $"{N(c.Native.Measurements)} / {N(c.Native.Resets)}" : "–");
             Row("depth, QDK basis *", e => e.Counts is { } c ? N(c.Native.Depth) : "–");
             Row("gates, CCX as Qiskit's 15 (Clifford+T)", e => e.Counts is { } c ? N(c.QiskitCcx.GateCount) : "–");
             Row("depth, CCX as Qiskit's 15 *", e => e.Counts is { } c ? N(c.QiskitCcx.Depth) : "–");
@@ -48,12 +49,12 @@ public static class EstimateTable
             Row($"{models[k]}: code distance", e => N(e.Physical[k].CodeDistance));
         }
 
-        foreach (var note in Conventions(counted.Length > 0)) table.Note(note);
+        foreach (var note in Conventions(counted.Length > 0, counted.Any(e => e.Counts!.Extrapolated))) table.Note(note);
         return table;
     }
 
     /// <summary>How every figure is counted, printed under each table.</summary>
-    public static IEnumerable<string> Conventions(bool withCircuits)
+    public static IEnumerable<string> Conventions(bool withCircuits, bool extrapolated = false)
     {
         yield return "Logical counts: the Microsoft Resource Estimator (qsharp-lang 1.32.5-dev). Qubits = peak in use, library auxiliaries included; an AND into a fresh qubit counts as one CCZ and its measurement-based uncomputation as one measurement; T and rotations are single-qubit gates.";
         yield return "Modelled (OracleRegisters): index ceil(log2 N) + work (rpc, bound registers, depth, flags) + output + the widest library step's auxiliaries; ancillas = work + auxiliaries, all back in |0> after each oracle call.";
@@ -62,6 +63,7 @@ public static class EstimateTable
             yield return "Gates: getCircuit's trace of one simulated run, in the QDK's intrinsic gate set (X, H, S, T, rotations, CX, CZ, CCX, SWAP); measurements and resets are listed apart, not counted as gates. Not Qiskit's basis: a CCX is one gate here.";
             yield return "Depth: every operation (measurements and resets too) takes one step on each qubit it touches and starts when they are all free: Qiskit's QuantumCircuit.depth() on the same list.";
             yield return "CCX as Qiskit's 15: every CCX replaced by Qiskit's ccx definition (2 H, 6 CX, 4 T, 3 T†), other gates kept: comparable with gate counts Qiskit reports for Toffoli circuits.";
+            if (extrapolated) yield return $"Extrapolated: a QSearch run with r > {ResourceEstimator.TracedRepeats} is traced with r = 1 and r = 2 and counted as run(1) + (r − 1) · (run(2) − run(1)), every figure (each iteration is the same circuit; the QDK's extraction slows down more than linearly with length).";
             yield return "* Z and CZ (and so the depth) include the phase corrections the uncomputations apply after measuring, which depend on that run's random outcomes and vary a little between runs.";
         }
         yield return $"Physical: the estimator's predefined qubit models, error budget {QubitModel.ErrorBudget.ToString(CultureInfo.InvariantCulture)}, other parameters at their defaults; runtime of one execution of the circuit.";

@@ -31,7 +31,8 @@ public static class EstimatedCircuits
         "QSearch run",
         "one run of QSearch: prepare the uniform superposition over N, r Grover iterations, measure the index",
         s => $"{Intersection}MeasureGateGroverSearch({GateEngine.OracleArgument(s.Oracle)}, {s.Iterations.ToString(CultureInfo.InvariantCulture)})",
-        s => OracleRegisters.For(s.Oracle));
+        s => OracleRegisters.For(s.Oracle),
+        RepeatsIterations: true);
 
     public static IReadOnlyList<EstimatedCircuit> All { get; } = [Oracle, GroverIteration, SearchRun];
 }
