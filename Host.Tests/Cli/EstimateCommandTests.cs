@@ -47,6 +47,9 @@ public sealed class EstimateCommandTests : IDisposable
         // One row per requested N and bit count in the before → after tables.
         Assert.Equal(["4", "8"], DataRows(lines, "## The oracle against the number of primitives"));
         Assert.Equal(["2"], DataRows(lines, "## The oracle against the coordinate bits"));
+        // Every plot the report shows is a PNG beside it (none when the build has no plot writer).
+        foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
+            Assert.Equal(800, Output.PngTestDecoder.Decode(File.ReadAllBytes(Path.Combine(_scratch, png))).Image.Width);
         // Regenerating replaces the file this command wrote.
         Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
         Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));

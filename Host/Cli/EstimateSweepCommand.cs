@@ -69,7 +69,7 @@ public sealed class EstimateSweepCommand : Command
         var bits = parse.GetValue(_bits)!;
         var ablation = parse.GetValue(_ablation)!;
 
-        var wanted = SweepReport.Points(primitives, bits, ablation).ToArray();
+        var wanted = SweepReport.Wanted(primitives, bits, ablation).ToArray();
         var subjects = wanted.Select(p => (p.Primitives, p.Bits)).Distinct().ToDictionary(p => p, p => EstimateSweep.Subject(p.Primitives, p.Bits));
         var jobs = wanted.Select(p => (EstimatedCircuits.Oracle, subjects[(p.Primitives, p.Bits)].With(p.Construction))).ToArray();
 
@@ -84,10 +84,18 @@ public sealed class EstimateSweepCommand : Command
         }
 
         var points = wanted.Zip(estimates).ToDictionary(p => (p.First.Primitives, p.First.Bits, p.First.Construction.Name), p => p.Second);
+        var sweep = new SweepReport(points, estimator.Models);
+        // Plots go beside the report as <report>-<suffix>.png; without a report file there is nowhere to put them.
+        var plots = output is null ? [] : SweepPlots.Draw(sweep, primitives, bits)
+            .Select(p => (p.Image, Path: Path.Combine(output.DirectoryName!, $"{Path.GetFileNameWithoutExtension(output.Name)}-{p.Suffix}.png"), p.Caption))
+            .ToArray();
+        ImageFiles.EnsureWritable(plots.Select(p => p.Path).ToArray(), []);
         var arguments = string.Join(' ', Environment.GetCommandLineArgs().Skip(1));
-        var text = new SweepReport(points, estimator.Models).Markdown(primitives, bits, ablation, $"dotnet run --project Host -c Release -- {arguments}", machine);
+        var text = sweep.Markdown(primitives, bits, ablation, $"dotnet run --project Host -c Release -- {arguments}", machine,
+            plots.Select(p => (Path.GetFileName(p.Path), p.Caption)).ToArray());
         Console.WriteLine(text);
         report.Write(text);
+        ImageFiles.Write(plots.Select(p => (p.Image, p.Path)));
         return 0;
     }
 }

@@ -11,6 +11,9 @@ namespace QuantumRayTracing.Estimates;
 /// </summary>
 public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, string Construction), CircuitEstimate> points, IReadOnlyList<QubitModel> models)
 {
+    /// <summary>Every estimate, by (N, coordinate bits, construction name).</summary>
+    public IReadOnlyDictionary<(int Primitives, int Bits, string Construction), CircuitEstimate> Points => points;
+
     /// <summary>The paper's table 9: the oracle for 4 primitives in Qiskit.</summary>
     public const int PaperQubits = 19, PaperGates = 2165, PaperDepth = 1185;
 
@@ -30,7 +33,7 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
         [(OracleConstruction.Baseline, BaselineByLookup), (OracleConstruction.Compact, OracleConstruction.Narrow)];
 
     /// <summary>Every (N, bits, construction) point the report needs for the given sweeps.</summary>
-    public static IEnumerable<(int Primitives, int Bits, OracleConstruction Construction)> Points(IReadOnlyList<int> primitives, IReadOnlyList<int> bits, IReadOnlyList<int> ablation)
+    public static IEnumerable<(int Primitives, int Bits, OracleConstruction Construction)> Wanted(IReadOnlyList<int> primitives, IReadOnlyList<int> bits, IReadOnlyList<int> ablation)
     {
         var before = OracleConstruction.Baseline;
         var after = OracleConstruction.Compact;
@@ -42,7 +45,15 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
         return wanted.DistinctBy(p => (p.Item1, p.Item2, p.Item3.Name));
     }
 
-    public string Markdown(IReadOnlyList<int> primitives, IReadOnlyList<int> bits, IReadOnlyList<int> ablation, string command, string machine)
+    /// <summary>The report's Markdown.</summary>
+    /// <param name="primitives">N of the sweep over primitives.</param>
+    /// <param name="bits">Coordinate bits of the sweep over the grid.</param>
+    /// <param name="ablation">N at which each change is measured alone.</param>
+    /// <param name="command">The command line that regenerates the report.</param>
+    /// <param name="machine">What the estimates ran on.</param>
+    /// <param name="plots">PNG files written beside the report (relative paths) with their captions, shown at the end.</param>
+    public string Markdown(IReadOnlyList<int> primitives, IReadOnlyList<int> bits, IReadOnlyList<int> ablation, string command, string machine,
+        IReadOnlyList<(string File, string Caption)> plots)
     {
         var withCircuits = points.Values.All(p => p.Counts is not null);
         var c4 = EstimateSweep.DefaultCoordinateBits;
@@ -148,6 +159,13 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
             text.AppendLine($"| {n} | " + string.Join(" | ", p.Physical.Select(e => $"{e.PhysicalQubits} | {EstimateTable.Duration(e.RuntimeNanoseconds)} | {e.CodeDistance}")) + " |");
         }
         text.AppendLine();
+
+        if (plots.Count > 0)
+        {
+            text.AppendLine("## Plots");
+            text.AppendLine();
+            foreach (var (file, caption) in plots) text.AppendLine($"{caption}:").AppendLine().AppendLine($"![{caption}]({file})").AppendLine();
+        }
 
         text.AppendLine("## Conventions");
         text.AppendLine();
