@@ -9,6 +9,8 @@
 //   {"id":1,"method":"version"}                               -> {"id":1,"ok":true,"result":{"qsharp":"1.32.5-dev","node":"v20..."}}
 //   {"id":2,"method":"run","expr":"Ns.Op(1, [2])","shots":1}  -> {"id":2,"ok":true,"result":["<Q# value of shot 1>", ...]}
 //   {"id":3,"method":"estimate","expr":"Ns.Op(8)","params":[{}]} -> {"id":3,"ok":true,"result":[<estimator result per params item>]}
+//   {"id":4,"method":"circuit","expr":"Ns.Op(8)","maxOperations":1000000}
+//                                                             -> {"id":4,"ok":true,"result":<circuit summary, see circuit-summary.mjs>}
 // A failure replies {"id":N,"ok":false,"error":{"kind":"qsharp"|"request","message":"...","location":"file:line:col","stack":"..."}}.
 // Requests are answered one at a time, in order; simulation runs synchronously inside WebAssembly,
 // so the host enforces time limits by killing this process.
@@ -18,6 +20,7 @@ import path from "node:path";
 import readline from "node:readline";
 import { fileURLToPath } from "node:url";
 import { getCompiler, loadWasmModule, QscEventTarget } from "qsharp-lang";
+import { summariseCircuit } from "./circuit-summary.mjs";
 
 const projectDir = path.dirname(fileURLToPath(import.meta.url));
 const sourceDir = path.join(projectDir, "src");
@@ -88,6 +91,18 @@ function qsharpError(value) {
   };
 }
 
+/** The bridge's error object for an exception the QDK threw (diagnostics with locations, or a message). */
+function thrownError(e) {
+  if (Array.isArray(e?.diagnostics) && e.diagnostics.length > 0) return qsharpError({ errors: e.diagnostics, message: e.message });
+  return qsharpError(e?.message ?? String(e));
+}
+
+/** Operations a circuit may hold before the bridge refuses it (each costs memory in the QDK's JS object). */
+const defaultMaxOperations = 2_000_000;
+
+/** The namespace of the entry point the bridge adds for getCircuit, which takes no expression. */
+const circuitEntryNamespace = "QuantumRayTracingCircuitEntry";
+
 class RequestError extends Error {}
 
 function requireString(request, field) {
@@ -124,11 +139,33 @@ async function answer(compiler, program, versions, request) {
       try {
         return JSON.parse(await compiler.getEstimates(program, expr, JSON.stringify(params)));
       } catch (e) {
-        return { error: qsharpError(e?.message ?? e) };
+        return { error: thrownError(e) };
       }
     }
+    case "circuit": {
+      // getCircuit runs the program's @EntryPoint, so the expression becomes the body of one. Only
+      // "simulate" synthesises programs that branch on measurements (the standard library's
+      // measurement-based uncomputation does), so the circuit is the trace of one simulated run.
+      const expr = requireString(request, "expr");
+      const limit = request.maxOperations ?? defaultMaxOperations;
+      if (!Number.isInteger(limit) || limit < 1) throw new RequestError(`request field "maxOperations" must be a positive integer`);
+      const entry = `namespace ${circuitEntryNamespace} { @EntryPoint() operation Main() : Unit { let _ = ${expr}; } }`;
+      const withEntry = { ...program, sources: [...program.sources, ["circuit-entry.qs", entry]] };
+      let group;
+      try {
+        // One operation past the limit shows truncation: getCircuit stops there without saying so.
+        group = await compiler.getCircuit(withEntry, { generationMethod: "simulate", maxOperations: limit + 1, sourceLocations: false, groupByScope: false });
+      } catch (e) {
+        return { error: thrownError(e) };
+      }
+      const summary = summariseCircuit(group);
+      if (summary.operations > limit) {
+        return { error: { kind: "qsharp", message: `the circuit has more than ${limit} operations (maxOperations); ask for a smaller circuit or raise the limit` } };
+      }
+      return summary;
+    }
     default:
-      throw new RequestError(`unknown method ${JSON.stringify(request.method)}; expected version, run or estimate`);
+      throw new RequestError(`unknown method ${JSON.stringify(request.method)}; expected version, run, estimate or circuit`);
   }
 }
 

@@ -90,8 +90,11 @@ public partial class GateOracleTests(FullStateFixture fixture)
     /// <summary>A gate engine on the fixture's bridges; the fixture owns and stops them.</summary>
     private GateEngine Engine => new(fixture.Engine.Pool);
 
-    [Fact]
-    public void OracleMatchesVerifyRpcOnEveryBasisState()
+    [Theory]
+    [InlineData("baseline")]
+    [InlineData("compact")]
+    [InlineData("narrow")]
+    public void OracleMatchesVerifyRpcOnEveryBasisState(string construction)
     {
         var random = new SeededRandom(20261122);
         var cases = new List<OracleCase>();
@@ -99,6 +102,7 @@ public partial class GateOracleTests(FullStateFixture fixture)
         cases.AddRange(RandomCases("fixed-point", FixedPointScene.Value, random, rays: 16));
         cases.AddRange(RandomCases("qornell-8", QornellScene.Value, random, rays: 12));
         cases.AddRange(StackCases());
+        cases = cases.Select(c => c with { Input = c.Input with { Construction = Construction(construction) } }).ToList();
 
         var rows = Evaluate(cases);
         int marked = 0, unmarked = 0, allMarked = 0, noneMarked = 0;
@@ -165,12 +169,14 @@ public partial class GateOracleTests(FullStateFixture fixture)
         // Each variant ends in a basis state, so every shot must match exactly; several shots draw
         // different outcomes of the unlookups' measurements.
         var random = new SeededRandom(31);
-        var inputs = new[]
+        var cases = new[]
         {
             RandomCases("mixed", MixedScene.Value, random, rays: 3).First(c => Marked(c).MarkedCount is > 0 and < 5),
             RandomCases("fixed-point", FixedPointScene.Value, random, rays: 3).First(c => Marked(c).MarkedCount > 0),
             RandomCases("qornell-8", QornellScene.Value, random, rays: 3).First(c => Marked(c).MarkedCount > 0),
         };
+        var inputs = OracleConstruction.Named.SelectMany(construction => cases.Select(c =>
+            new OracleCase($"{c.Name}, {construction}", c.Input with { Construction = construction }))).ToArray();
         var calls = inputs.SelectMany(c => Enumerable.Range(0, 3).Select(v => (Case: c, Variant: v))).ToArray();
         var expression = "[" + string.Join(", ", calls.Select(call =>
             $"QuantumRayTracing.Intersection.MeasureUndoneGateGroverIteration({GateEngine.OracleArgument(call.Case.Input)}, {call.Variant})")) + "]";
@@ -226,8 +232,9 @@ public partial class GateOracleTests(FullStateFixture fixture)
             "new QuantumRayTracing.Intersection.IntersectionInput { CoordinateBits = 4, DepthBits = 4, "
             + "Bounds = [[0, 14, 0, 14, 2, 2], [0, 14, 0, 14, 4, 4], [0, 14, 0, 14, 6, 6], [0, 14, 0, 14, 8, 8], [0, 14, 0, 14, 10, 10], [0, 14, 0, 14, 12, 12]], "
             + "Points = [[7, 7, 2], [7, 7, 4], [7, 7, 6], [7, 7, 8], [7, 7, 10], [7, 7, 12]], "
-            + "Valid = [true, true, true, true, true, true], Depths = [2, 4, 6, 8, 10, 12], Near = 3, Limit = 128 }",
-            GateEngine.OracleArgument(input));
+            + "Valid = [true, true, true, true, true, true], Depths = [2, 4, 6, 8, 10, 12], Near = 3, Limit = 128, "
+            + "FlatAxes = [2, 2, 2, 2, 2, 2], Construction = new QuantumRayTracing.Intersection.OracleConstruction { InPlaneAxes = false, BothBounds = true, MeasuredUnload = false } }",
+            GateEngine.OracleArgument(input with { Construction = new OracleConstruction("test", InPlaneAxes: false, BothBounds: true, MeasuredUnload: false) }));
     }
 
     [Theory]
@@ -285,13 +292,22 @@ public partial class GateOracleTests(FullStateFixture fixture)
             CameraRayInput("qornell-512.json", null),
         };
         var bridge = fixture.Engine.Pool.Bridges[0];
-        foreach (var input in inputs)
+        foreach (var construction in OracleConstruction.Named)
         {
-            var registers = OracleRegisters.For(input);
-            var counts = bridge.Estimate($"QuantumRayTracing.Intersection.ApplyGateGroverIterationOnNewRegisters({GateEngine.OracleArgument(input)})")[0]!["logicalCounts"]!;
-            Assert.True(registers.PeakQubits == counts["numQubits"]!.GetValue<int>(), $"{registers}: estimator {counts.ToJsonString()}");
+            foreach (var input in inputs.Select(i => i with { Construction = construction }))
+            {
+                var registers = OracleRegisters.For(input);
+                var argument = GateEngine.OracleArgument(input);
+                var counts = bridge.Estimate($"QuantumRayTracing.Intersection.ApplyGateGroverIterationOnNewRegisters({argument})")[0]!["logicalCounts"]!;
+                Assert.True(registers.PeakQubits == counts["numQubits"]!.GetValue<int>(), $"{construction}, {registers}: estimator {counts.ToJsonString()}");
+                var oracle = OracleRegisters.ForOracle(input);
+                var oracleCounts = bridge.Estimate($"QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters({argument})")[0]!["logicalCounts"]!;
+                Assert.True(oracle.PeakQubits == oracleCounts["numQubits"]!.GetValue<int>(), $"{construction}, oracle alone, {oracle}: estimator {oracleCounts.ToJsonString()}");
+            }
         }
     }
+
+    private static OracleConstruction Construction(string name) => OracleConstruction.Named.Single(c => c.Name == name);
 
     /// <summary>The camera ray through pixel (80, 80) of a shipped scene, with a window (null: its full range).</summary>
     private static OracleInput CameraRayInput(string file, HitWindow? window)

@@ -44,6 +44,18 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     public JsonArray Estimate(string expression, JsonArray? parameters = null, TimeSpan? timeout = null) =>
         Send(new JsonObject { ["method"] = "estimate", ["expr"] = expression, ["params"] = parameters ?? [new JsonObject()] }, timeout).AsArray();
 
+    /// <summary>
+    /// The circuit the QDK extracts from a Q# expression (getCircuit, by simulating it once), summarised
+    /// by the bridge: qubits, gates by kind, measurements, resets and depth (Quantum/circuit-summary.mjs).
+    /// A circuit of more than <paramref name="maxOperations"/> operations is refused, not truncated.
+    /// </summary>
+    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null)
+    {
+        var request = new JsonObject { ["method"] = "circuit", ["expr"] = expression };
+        if (maxOperations is { } limit) request["maxOperations"] = limit;
+        return Send(request, timeout).AsObject();
+    }
+
     /// <summary>The bridge's qsharp-lang and Node versions.</summary>
     public JsonObject Version() => Send(new JsonObject { ["method"] = "version" }).AsObject();
 

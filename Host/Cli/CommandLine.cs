@@ -21,6 +21,7 @@ public static class CommandLine
         root.Subcommands.Add(new SearchCommand());
         root.Subcommands.Add(new ScenesCommand());
         root.Subcommands.Add(new BenchCommand());
+        root.Subcommands.Add(new EstimateCommand());
         return root;
     }
 

@@ -76,12 +76,12 @@ public sealed class EngineOptions
     };
 
     /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>
-    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options) => kind switch
+    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int maxQubits = GateEngine.DefaultMaxQubits) => kind switch
     {
         EngineKind.FullState or EngineKind.Analytic =>
             new QuantumHitSearch(Create(kind, root, workers), root.Fork(RandomStreams.Search), options),
         EngineKind.Gate =>
-            new QuantumHitSearch(Create(kind, root, workers), root.Fork(RandomStreams.Search), options, gateLevel: true),
+            new QuantumHitSearch(new GateEngine(new BridgePool(workers), maxQubits: maxQubits), root.Fork(RandomStreams.Search), options, gateLevel: true),
         EngineKind.Classical => new ClassicalHitSearch(),
         EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),

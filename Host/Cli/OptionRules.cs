@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.CommandLine.Parsing;
 
 namespace QuantumRayTracing.Cli;
 
@@ -11,10 +12,28 @@ public static class OptionRules
     {
         option.Validators.Add(result =>
         {
-            var value = result.GetValueOrDefault<int>();
+            if (!result.TryGetValue<int>(out var value)) return;
             if (value < min) result.AddError($"{option.Name} must be at least {min}, got {value}");
             else if (value > max) result.AddError($"{option.Name} must be at most {max}, got {value}");
         });
         return option;
+    }
+
+    /// <summary>
+    /// The option's value for a validator, or false when its text does not convert: the parser reports
+    /// that itself, and reading the value would throw.
+    /// </summary>
+    public static bool TryGetValue<T>(this OptionResult result, out T? value)
+    {
+        try
+        {
+            value = result.GetValueOrDefault<T>();
+            return true;
+        }
+        catch (InvalidOperationException)
+        {
+            value = default;
+            return false;
+        }
     }
 }

@@ -103,6 +103,12 @@ public sealed class RenderCommand : Command
         DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
     };
 
+    private readonly Option<int> _maxQubits = new("--max-qubits")
+    {
+        Description = "Engine gate: refuse, before simulating anything, a search whose oracle needs more qubits at peak than this (registers and library auxiliaries; `qrt estimate` shows them). The QDK simulator is sparse, so width itself costs little; the default covers every shipped scene.",
+        DefaultValueFactory = _ => GateEngine.DefaultMaxQubits,
+    };
+
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
         EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
 
@@ -123,6 +129,7 @@ public sealed class RenderCommand : Command
         Options.Add(_lattice);
         Options.Add(_agreedMiss);
         Options.Add(_plannedMiss);
+        Options.Add(_maxQubits);
         _engine.AddTo(this);
         _plannedMiss.Validators.Add(r =>
         {
@@ -137,6 +144,7 @@ public sealed class RenderCommand : Command
         _qsearch.AddTo(this);
         _passes.Between(1, 64);
         _shadowPasses.Between(1, 64);
+        _maxQubits.Between(1, 100_000);
         _size.Validators.Add(r =>
         {
             if (ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
@@ -147,9 +155,7 @@ public sealed class RenderCommand : Command
     private int Execute(ParseResult parse)
     {
         var sceneFile = parse.GetValue(_scene);
-        var scene = sceneFile is null
-            ? SceneLoader.Parse(QornellBox.Build(DefaultQornellPrimitives).ToJson(), $"built-in qornell-{DefaultQornellPrimitives}")
-            : SceneLoader.Load(sceneFile.FullName);
+        var scene = LoadScene(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
         var engineName = EngineOptions.Name(kind);
         var stem = sceneFile is null ? $"qornell-{DefaultQornellPrimitives}" : Path.GetFileNameWithoutExtension(sceneFile.Name);
@@ -170,14 +176,24 @@ public sealed class RenderCommand : Command
             // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
             var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
             var registers = OracleRegisters.For(new OracleInput(centre, centre.FullRange));
-            AnsiConsole.WriteLine($"gate-level oracle, centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, 2 x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, 7 flags), {registers.PeakQubits} at peak with library auxiliaries");
+            AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
         }
 
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse)))
-            result = SceneRenderer.Render(scene, search, options, progress);
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_maxQubits)))
+        {
+            try
+            {
+                result = SceneRenderer.Render(scene, search, options, progress);
+            }
+            catch (QubitLimitException e)
+            {
+                progress.Finish();
+                throw new UserError($"{scene.Name}: {e.Message}");
+            }
+        }
         var renderTime = clock.Elapsed;
         clock.Restart();
         var referenceProgress = new ConsoleProgress("classical reference");
@@ -228,6 +244,11 @@ public sealed class RenderCommand : Command
     }
 
     private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
+
+    /// <summary>The scene file, or the built-in Qornell box with <see cref="DefaultQornellPrimitives"/> primitives when none is named.</summary>
+    public static Scene LoadScene(FileInfo? file) => file is null
+        ? SceneLoader.Parse(QornellBox.Build(DefaultQornellPrimitives).ToJson(), $"built-in qornell-{DefaultQornellPrimitives}")
+        : SceneLoader.Load(file.FullName);
 
     /// <summary>out.png → out-reference.png.</summary>
     public static string Sibling(string output, string suffix)

@@ -14,8 +14,20 @@ namespace QuantumRayTracing.Engines;
 /// input. Batches are cut and spread over the workers as in <see cref="FullStateEngine"/>, with each
 /// call also held to a simulation budget (<see cref="MaxCostPerCall"/>).
 /// </summary>
-public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall) : IGroverEngine
+public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall, int maxQubits = GateEngine.DefaultMaxQubits) : IGroverEngine
 {
+    /// <summary>
+    /// Default of <see cref="MaxQubits"/>. The QDK's simulator is sparse: it stores only the nonzero
+    /// amplitudes (at most N here, as every work register is a function of the index), so width alone
+    /// costs little. The limit keeps the engine to the searches it is for: the widest of the shipped
+    /// scenes (qornell-512, 72 qubits with the compact oracle) with room for secondary rays' extra
+    /// depth bits; wider requests come from scenes the engine would simulate for hours.
+    /// </summary>
+    public const int DefaultMaxQubits = 80;
+
+    /// <summary>Peak qubits (<see cref="OracleRegisters.PeakQubits"/>) a request may need; a wider one fails the whole batch before any simulation.</summary>
+    public int MaxQubits => maxQubits;
+
     /// <summary>At N = 8 a run costs a few milliseconds, so a hundred of them outweigh the ~60 ms compile of a call.</summary>
     public const int DefaultMaxRequestsPerCall = 100;
 
@@ -34,17 +46,25 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
 
     public const string InputType = "QuantumRayTracing.Intersection.IntersectionInput";
 
+    public const string ConstructionType = "QuantumRayTracing.Intersection.OracleConstruction";
+
     public string Name => "gate";
 
     public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
     {
+        (OracleInput Input, OracleRegisters Registers)? widest = null;
         for (var k = 0; k < requests.Count; k++)
         {
             var oracle = requests[k].Oracle
                 ?? throw new ArgumentException($"request {k} has no oracle input: the gate engine searches rays, not bare marked sets", nameof(requests));
             if (oracle.Table.Count != requests[k].Marked.Count)
                 throw new ArgumentException($"request {k} searches {requests[k].Marked.Count} indices but its ray table has {oracle.Table.Count} rows", nameof(requests));
+            var registers = OracleRegisters.For(oracle);
+            if (widest is not { } w || registers.PeakQubits > w.Registers.PeakQubits) widest = (oracle, registers);
         }
+        // The whole batch is checked before any of it is sent, so a refused render allocates nothing.
+        if (widest is { } wide && wide.Registers.PeakQubits > maxQubits)
+            throw new QubitLimitException(wide.Input, wide.Registers, maxQubits);
         return BridgeBatches.Measure(pool, requests, new ChunkLimits(maxRequestsPerCall, Cost, MaxCostPerCall), BatchOperation, BatchExpression);
     }
 
@@ -64,8 +84,9 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
 
     /// <summary>
     /// The Q# value of one search's oracle input, an <c>IntersectionInput</c>: widths, bounds
-    /// [minX, maxX, minY, maxY, minZ, maxZ] and point [x, y, z] per row, validity, depths, and the
-    /// clamped comparator constants (<see cref="OracleConstants"/>).
+    /// [minX, maxX, minY, maxY, minZ, maxZ] and point [x, y, z] per row, validity, depths, the
+    /// clamped comparator constants (<see cref="OracleConstants"/>), each primitive's flat axis and the
+    /// construction.
     /// </summary>
     public static string OracleArgument(OracleInput input)
     {
@@ -93,9 +114,18 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         text.Append("], Depths = [");
         for (var p = 0; p < n; p++)
             text.Append(p > 0 ? ", " : "").Append(Int(table.Depth(p)));
-        return text.Append("], Near = ").Append(constants.Near.ToString(CultureInfo.InvariantCulture))
-            .Append(", Limit = ").Append(constants.Limit.ToString(CultureInfo.InvariantCulture)).Append(" }").ToString();
+        text.Append("], Near = ").Append(constants.Near.ToString(CultureInfo.InvariantCulture))
+            .Append(", Limit = ").Append(constants.Limit.ToString(CultureInfo.InvariantCulture)).Append(", FlatAxes = [");
+        for (var p = 0; p < n; p++)
+            text.Append(p > 0 ? ", " : "").Append(Int(geometry.Rectangles[p].FlatAxis));
+        var construction = input.Construction;
+        return text.Append("], Construction = new ").Append(ConstructionType)
+            .Append(" { InPlaneAxes = ").Append(Bool(construction.InPlaneAxes))
+            .Append(", BothBounds = ").Append(Bool(construction.BothBounds))
+            .Append(", MeasuredUnload = ").Append(Bool(construction.MeasuredUnload)).Append(" } }").ToString();
     }
+
+    private static string Bool(bool value) => value ? "true" : "false";
 
     private static string Int(int value) => value.ToString(CultureInfo.InvariantCulture);
 

@@ -3,54 +3,75 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Intersection;
 
 /// <summary>
-/// The qubits one gate-level Grover search holds (paper figs. 3-5): the index register, the rpc and
-/// coord registers (one coordinate each, reused axis by axis), the depth register, six flags (valid,
-/// i_X, i_Y, i_Z, near, limit) and the phase qubit held in |1⟩; plus the auxiliary qubits the
-/// standard library allocates inside its gates and releases clean, of which the widest moment counts.
+/// The qubits one gate-level search holds (paper figs. 3-5): the index register; the work registers
+/// rpc and coord (reused axis by axis; coord holds one or two bounds), depth, and the flags (valid, one
+/// per tested axis, near, limit); the output qubit (the phase qubit held in |1⟩ in a Grover search);
+/// plus the auxiliary qubits the standard library allocates inside its gates and releases clean, of
+/// which the widest moment counts.
 /// </summary>
 /// <param name="IndexQubits">ceil(log2 N).</param>
-/// <param name="CoordinateQubits">The grid's bits; rpc and coord take this many each.</param>
+/// <param name="CoordinateQubits">The grid's bits; rpc and each bound register take this many.</param>
+/// <param name="BoundRegisters">Coordinate registers holding bounds: 1 or 2 (<see cref="OracleConstruction.BoundRegisters"/>).</param>
 /// <param name="DepthQubits">The table's depth bits.</param>
+/// <param name="FlagQubits">valid, one per tested axis, near, limit.</param>
 /// <param name="AuxiliaryQubits">Peak auxiliaries inside library gates (see <see cref="For"/>).</param>
-public readonly record struct OracleRegisters(int IndexQubits, int CoordinateQubits, int DepthQubits, int AuxiliaryQubits)
+public readonly record struct OracleRegisters(
+    int IndexQubits, int CoordinateQubits, int BoundRegisters, int DepthQubits, int FlagQubits, int AuxiliaryQubits)
 {
-    /// <summary>valid, i_X, i_Y, i_Z, near, limit.</summary>
-    public const int FlagQubits = 6;
+    /// <summary>The qubit i_r(p) is XORed into, or the Grover search's phase qubit.</summary>
+    public const int OutputQubits = 1;
 
-    /// <summary>The qubit the flags' AND kicks its phase back from.</summary>
-    public const int PhaseQubits = 1;
+    /// <summary>rpc and the bound registers.</summary>
+    public int CoordinateRegisterQubits => (1 + BoundRegisters) * CoordinateQubits;
 
-    /// <summary>Qubits allocated by the search's own registers: n + 2c + d + 7.</summary>
-    public int RegisterQubits => IndexQubits + 2 * CoordinateQubits + DepthQubits + FlagQubits + PhaseQubits;
+    /// <summary>The oracle's own ancilla registers, all back in |0⟩ after each call: Q#'s IntersectionWorkQubits.</summary>
+    public int WorkQubits => CoordinateRegisterQubits + DepthQubits + FlagQubits;
+
+    /// <summary>Qubits allocated by the search's own registers: index, work and output.</summary>
+    public int RegisterQubits => IndexQubits + WorkQubits + OutputQubits;
 
     /// <summary>Peak qubits in use, auxiliaries included: what the Resource Estimator reports.</summary>
     public int PeakQubits => RegisterQubits + AuxiliaryQubits;
 
+    /// <summary>Every qubit that starts and ends in |0⟩ around an oracle call: work registers and library auxiliaries.</summary>
+    public int AncillaQubits => WorkQubits + AuxiliaryQubits;
+
+    /// <summary>The registers of a Grover search with the oracle: the reflection's auxiliaries count too.</summary>
+    public static OracleRegisters For(OracleInput input) => Model(input, withReflection: true);
+
+    /// <summary>The registers of the oracle Int_r applied once on its own (no reflection).</summary>
+    public static OracleRegisters ForOracle(OracleInput input) => Model(input, withReflection: false);
+
     /// <remarks>
     /// The auxiliaries are those of the widest step, one step at a time: a lookup (n − 1 nested
-    /// helpers), its measurement-based unlookup (the phase lookup's power products,
-    /// 2^⌊n/2⌋ − ⌊n/2⌋ − 1 + 2^⌈n/2⌉ − ⌈n/2⌉ − 1), a register comparator (c carries), a comparator with
-    /// a constant k on w qubits (w − 1 − trailing zeros of k, none when k is 0 or 2^w), the
-    /// six-controlled Z (4) and the reflection's multi-controlled Z (n − 2).
+    /// helpers), the measurement-based unlookup when the construction uses it (the phase lookup's
+    /// power products, 2^⌊n/2⌋ − ⌊n/2⌋ − 1 + 2^⌈n/2⌉ − ⌈n/2⌉ − 1), a register comparator (c carries), a
+    /// comparator with a constant k on w qubits (w − 1 − trailing zeros of k, none when k is 0 or 2^w),
+    /// the flags' multi-controlled gate (flags − 2) and, in a search, the reflection's multi-controlled
+    /// Z (n − 2).
     /// </remarks>
-    public static OracleRegisters For(OracleInput input)
+    private static OracleRegisters Model(OracleInput input, bool withReflection)
     {
         ArgumentNullException.ThrowIfNull(input);
         var n = input.Geometry.IndexBits;
         var c = input.Table.CoordinateBits;
         var d = input.Table.DepthBits;
+        var construction = input.Construction;
+        var flags = construction.Axes + 3;
         var constants = OracleConstants.For(input);
-        var lookups = input.Geometry.Count > 1 ? Math.Max(n - 1, PowerProducts(n / 2) + PowerProducts(n - n / 2)) : 0;
+        var lookups = input.Geometry.Count <= 1 ? 0
+            : construction.MeasuredUnload ? Math.Max(n - 1, PowerProducts(n / 2) + PowerProducts(n - n / 2))
+            : n - 1;
         var auxiliary = new[]
         {
             lookups,
             c,
             ConstantComparator(constants.Near, d),
             ConstantComparator(constants.Limit, n + d),
-            FlagQubits - 2,
-            SearchRegisters.For(input.Geometry.Count).AuxiliaryQubits,
+            flags - 2,
+            withReflection ? SearchRegisters.For(input.Geometry.Count).AuxiliaryQubits : 0,
         }.Max();
-        return new OracleRegisters(n, c, d, auxiliary);
+        return new OracleRegisters(n, c, construction.BoundRegisters, d, flags, auxiliary);
     }
 
     private static int PowerProducts(int bits) => (1 << bits) - bits - 1;

@@ -6,8 +6,8 @@ namespace QuantumRayTracing.Intersection {
     import Std.TableLookup.Select;
 
     /// # Summary
-    /// Computes the six flags whose AND is i_r(p) for every primitive p in the index register:
-    /// valid, i_X, i_Y, i_Z (paper fig. 4, one axis after another), near and limit (fig. 5).
+    /// Computes the flags whose AND is i_r(p) for every primitive p in the index register: valid,
+    /// one flag per tested axis (paper fig. 4, one axis after another), near and limit (fig. 5).
     /// Every other register is back in |0⟩ afterwards.
     ///
     /// # Input
@@ -25,29 +25,45 @@ namespace QuantumRayTracing.Intersection {
     /// controlled comparators; the trick needs neither.
     ///
     /// The lookups dominate the cost (each touches every row), so the figure's load/unload pairs
-    /// are fused: one lookup loads X's point and minimum with the depth and validity, each later
-    /// step XORs the change into the loaded registers (minimum to maximum, then on to the next
-    /// axis), and one measurement-based unlookup clears them: 6 lookups and 1 unlookup instead of
-    /// a load and an unload per value (11 and 10), on the same registers.
+    /// are fused: one lookup loads the first axis's point and bounds with the depth and validity,
+    /// each later step XORs the change into the loaded registers (minimum to maximum, then on to
+    /// the next axis), and one unlookup clears them. With all three axes and one bound register
+    /// that is 6 lookups and 1 unlookup instead of a load and an unload per value (11 and 10);
+    /// testing only the two in-plane axes with both bounds loaded at once needs 2 lookups and
+    /// 1 unlookup (`OracleConstruction`).
     ///
     /// The limit comparator reads the index register as the low bits and the depth register as
     /// the high bits of one number, so one comparison against a constant gives the lexicographic
     /// (depth, id) order.
     operation ComputeIntersectionFlags(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters) : Unit is Adj {
         let (rpc, coord) = (registers.Rpc, registers.Coord);
-        Select(tables.Load, index, rpc + coord + registers.Depth + [registers.Valid]);
+        let c = tables.CoordinateBits;
+        let (low, high) = tables.BoundRegisters == 2 ? (coord[...c - 1], coord[c...]) | (coord, coord);
+        // With measured unloads the load is a plain Select, so that the oracle's uncomputation clears
+        // it with the unlookup as well; otherwise it is the self-inverse XOR lookup and nothing measures.
+        if tables.MeasuredUnload {
+            Select(tables.Load, index, rpc + coord + registers.Depth + [registers.Valid]);
+        } else {
+            ApplyXorLookup(tables.Load, index, rpc + coord + registers.Depth + [registers.Valid]);
+        }
         ApplyIfLessOrEqualL(X, tables.Near, registers.Depth, registers.DepthFlags[0]);
         ApplyIfGreaterL(X, tables.Limit, index + registers.Depth, registers.DepthFlags[1]);
-        for axis in 0..2 {
-            let flag = registers.AxisFlags[axis];
-            if axis > 0 {
-                ApplyXorLookup(tables.NextAxis[axis - 1], index, rpc + coord);
+        for s in 0..tables.Axes - 1 {
+            let flag = registers.AxisFlags[s];
+            if s > 0 {
+                ApplyXorLookup(tables.NextAxis[s - 1], index, rpc + coord);
             }
             X(flag);
-            ApplyIfLessOrEqualLE(X, coord, rpc, flag);
-            ApplyXorLookup(tables.MinsToMaxes[axis], index, coord);
-            ApplyIfGreaterOrEqualLE(X, coord, rpc, flag);
+            ApplyIfLessOrEqualLE(X, low, rpc, flag);
+            if tables.BoundRegisters == 1 {
+                ApplyXorLookup(tables.MinsToMaxes[s], index, coord);
+            }
+            ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
         }
-        Adjoint Select(tables.Unload, index, rpc + coord + registers.Depth);
+        if tables.MeasuredUnload {
+            Adjoint Select(tables.Unload, index, rpc + coord + registers.Depth);
+        } else {
+            ApplyXorLookup(tables.Unload, index, rpc + coord + registers.Depth);
+        }
     }
 }

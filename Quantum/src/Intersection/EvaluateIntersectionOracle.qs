@@ -14,7 +14,7 @@ namespace QuantumRayTracing.Intersection {
     ///
     /// # Output
     /// The measured output i_r(p), and the measured values of the registers [index, rpc, coord,
-    /// i_X i_Y i_Z, valid, depth, near limit]: p if the oracle left the index alone, then all 0 if
+    /// axis flags, valid, depth, near limit]: p if the oracle left the index alone, then all 0 if
     /// it uncomputed every work register.
     operation EvaluateIntersectionOracle(input : IntersectionInput, p : Int) : (Bool, Int[]) {
         let tables = PrepareIntersectionTables(input);

@@ -1,13 +1,14 @@
 namespace QuantumRayTracing.Intersection {
     /// # Summary
-    /// The six qubits whose AND is i_r(p) once `ComputeIntersectionFlags` has run.
+    /// The qubits whose AND is i_r(p) once `ComputeIntersectionFlags` has run: six, or five when only
+    /// the two in-plane axes are tested.
     ///
     /// # Input
     /// ## registers
     /// The oracle's work registers.
     ///
     /// # Output
-    /// [valid, i_X, i_Y, i_Z, near, limit].
+    /// [valid, the axis flags, near, limit].
     function IntersectionFlags(registers : IntersectionRegisters) : Qubit[] {
         [registers.Valid] + registers.AxisFlags + registers.DepthFlags
     }

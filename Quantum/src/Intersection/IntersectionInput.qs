@@ -22,6 +22,11 @@ namespace QuantumRayTracing.Intersection {
     /// ## Limit
     /// LimitDepth · 2^IndexBits + LimitId, clamped by the host to 0..2^(DepthBits + IndexBits): a row
     /// is accepted when Depth · 2^IndexBits + p is below it.
+    /// ## FlatAxes
+    /// Each primitive's flat axis (0, 1 or 2): its minimum and maximum there are its plane, and a
+    /// valid row's point lies on that plane.
+    /// ## Construction
+    /// How the oracle is built; every construction marks the same rows.
     struct IntersectionInput {
         CoordinateBits : Int,
         DepthBits : Int,
@@ -31,5 +36,7 @@ namespace QuantumRayTracing.Intersection {
         Depths : Int[],
         Near : Int,
         Limit : Int,
+        FlatAxes : Int[],
+        Construction : OracleConstruction,
     }
 }

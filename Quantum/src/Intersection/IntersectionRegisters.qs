@@ -7,9 +7,11 @@ namespace QuantumRayTracing.Intersection {
     /// ## Rpc
     /// The ray/plane point's coordinate on the axis being tested (CoordinateBits qubits).
     /// ## Coord
-    /// The primitive's minimum, then maximum, on that axis (CoordinateBits qubits).
+    /// The primitive's bounds on that axis: its minimum, then its maximum (CoordinateBits qubits),
+    /// or both at once (minimum, then maximum: 2 · CoordinateBits qubits).
     /// ## AxisFlags
-    /// i_X, i_Y, i_Z: the point lies within the bounds on that axis.
+    /// One per tested axis (i_X, i_Y, i_Z, or the two axes in the primitive's plane): the point
+    /// lies within the bounds on that axis.
     /// ## Valid
     /// The row holds a ray/plane point.
     /// ## Depth

@@ -12,13 +12,13 @@ namespace QuantumRayTracing.Intersection {
     /// The block of qubits.
     ///
     /// # Output
-    /// The registers, in the order rpc, coord, i_X i_Y i_Z, valid, depth, near limit.
+    /// The registers, in the order rpc, coord, axis flags, valid, depth, near limit.
     function IntersectionRegistersOf(tables : IntersectionTables, work : Qubit[]) : IntersectionRegisters {
         if Length(work) != IntersectionWorkQubits(tables) {
             fail $"expected {IntersectionWorkQubits(tables)} work qubits, got {Length(work)}";
         }
         let c = tables.CoordinateBits;
-        let parts = Partitioned([c, c, 3, 1, tables.DepthBits], work);
+        let parts = Partitioned([c, tables.BoundRegisters * c, tables.Axes, 1, tables.DepthBits], work);
         new IntersectionRegisters {
             Rpc = parts[0],
             Coord = parts[1],

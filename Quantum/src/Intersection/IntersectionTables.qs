@@ -1,26 +1,35 @@
 namespace QuantumRayTracing.Intersection {
     /// # Summary
     /// The bit tables `Std.TableLookup.Select` loads for one ray, one entry per primitive, built
-    /// once per search by `PrepareIntersectionTables`. The rpc and coord registers go through the
-    /// contents (x, minX), (x, maxX), (y, minY), (y, maxY), (z, minZ), (z, maxZ) and back to zero;
-    /// each table is what one step XORs into them.
+    /// once per search by `PrepareIntersectionTables`. Each primitive's tested axes are visited in
+    /// order (x, y, z, or only the two in its plane); the rpc and coord registers hold the point
+    /// and the bounds on the axis being tested, and each table is what one step XORs into them.
     ///
     /// # Input
     /// ## IndexBits
     /// Qubits of the index register, ceil(log2 N).
     /// ## CoordinateBits
-    /// Qubits of the rpc and coord registers.
+    /// Qubits of the rpc register and of each bound register.
     /// ## DepthBits
     /// Qubits of the depth register.
+    /// ## Axes
+    /// Axes tested per primitive: 3, or 2 when the flat axis is skipped.
+    /// ## BoundRegisters
+    /// 1: coord holds the minimum, then the maximum. 2: coord holds both.
+    /// ## MeasuredUnload
+    /// Whether `Load` is cleared by measurement (`Adjoint Select`) or by a second lookup.
     /// ## Load
-    /// x, minX, depth, valid: loaded into rpc + coord + depth + [valid] from |0⟩.
+    /// The first tested axis's point and bound(s), the depth and the validity bit, loaded into
+    /// rpc + coord + depth + [valid] from |0⟩.
     /// ## MinsToMaxes
-    /// Per axis, min XOR max: turns coord's minimum into the maximum.
+    /// Per tested axis, min XOR max: turns coord's minimum into the maximum (one bound register
+    /// only; empty otherwise).
     /// ## NextAxis
-    /// For X→Y and Y→Z: the point XOR the next axis's point, then the maximum XOR the next
-    /// axis's minimum, for rpc + coord.
+    /// Per step to the next tested axis: the point XOR the next point for rpc, then the bound(s)
+    /// held XOR the next axis's minimum (and maximum) for coord.
     /// ## Unload
-    /// z, maxZ, depth: unloaded from rpc + coord + depth (valid stays).
+    /// The last tested axis's point and bound(s) and the depth, cleared from rpc + coord + depth
+    /// (valid stays).
     /// ## Near
     /// The near comparator's constant.
     /// ## Limit
@@ -29,6 +38,9 @@ namespace QuantumRayTracing.Intersection {
         IndexBits : Int,
         CoordinateBits : Int,
         DepthBits : Int,
+        Axes : Int,
+        BoundRegisters : Int,
+        MeasuredUnload : Bool,
         Load : Bool[][],
         MinsToMaxes : Bool[][][],
         NextAxis : Bool[][][],

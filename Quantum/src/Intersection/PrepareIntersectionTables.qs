@@ -1,28 +1,32 @@
 namespace QuantumRayTracing.Intersection {
     import Std.Convert.IntAsBoolArray;
     import Std.Convert.IntAsBigInt;
+    import Std.Arrays.Mapped;
+    import Std.Arrays.Zipped;
     import Std.Math.BitSizeI;
 
     /// # Summary
-    /// Checks one ray's input and turns it into the bit tables the oracle loads.
+    /// Checks one ray's input and turns it into the bit tables the oracle loads, for the input's
+    /// construction.
     ///
     /// # Input
     /// ## input
-    /// The ray's bounds, points, validity, depths and window constants.
+    /// The ray's bounds, points, validity, depths, window constants, flat axes and construction.
     ///
     /// # Output
     /// The tables, one entry per primitive, and the comparator constants as BigInt.
     function PrepareIntersectionTables(input : IntersectionInput) : IntersectionTables {
         let count = Length(input.Bounds);
         let (c, d) = (input.CoordinateBits, input.DepthBits);
+        let construction = input.Construction;
         if count < 1 {
             fail "the oracle needs at least one primitive";
         }
         if c < 1 or c > 30 or d < 1 or d > 30 {
             fail $"register widths out of range: {c} coordinate bits, {d} depth bits";
         }
-        if Length(input.Points) != count or Length(input.Valid) != count or Length(input.Depths) != count {
-            fail $"the table has {Length(input.Points)} points, {Length(input.Valid)} validity bits and {Length(input.Depths)} depths for {count} primitives";
+        if Length(input.Points) != count or Length(input.Valid) != count or Length(input.Depths) != count or Length(input.FlatAxes) != count {
+            fail $"the table has {Length(input.Points)} points, {Length(input.Valid)} validity bits, {Length(input.Depths)} depths and {Length(input.FlatAxes)} flat axes for {count} primitives";
         }
         let indexBits = BitSizeI(count - 1);
         if input.Near < 0 or input.Near > 1 <<< d {
@@ -31,12 +35,14 @@ namespace QuantumRayTracing.Intersection {
         if input.Limit < 0 or input.Limit > 1 <<< (d + indexBits) {
             fail $"limit {input.Limit} is outside 0..2^{d + indexBits}";
         }
+        let axes = construction.InPlaneAxes ? 2 | 3;
+        let boundRegisters = construction.BothBounds ? 2 | 1;
         mutable load = [];
-        mutable minsToMaxes = [[], size = 3];
-        mutable nextAxis = [[], size = 2];
+        mutable minsToMaxes = [[], size = boundRegisters == 1 ? axes | 0];
+        mutable nextAxis = [[], size = axes - 1];
         mutable unload = [];
         for p in 0..count - 1 {
-            let (bounds, point, depth) = (input.Bounds[p], input.Points[p], input.Depths[p]);
+            let (bounds, point, depth, flat) = (input.Bounds[p], input.Points[p], input.Depths[p], input.FlatAxes[p]);
             if Length(bounds) != 6 or Length(point) != 3 {
                 fail $"row {p}: expected 6 bounds and 3 coordinates, got {Length(bounds)} and {Length(point)}";
             }
@@ -46,24 +52,46 @@ namespace QuantumRayTracing.Intersection {
                     fail $"row {p}, axis {axis}: point {at} and bounds {low}..{high} must lie in 0..2^{c} - 1 with min ≤ max";
                 }
             }
+            if flat < 0 or flat > 2 or bounds[2 * flat] != bounds[2 * flat + 1] {
+                fail $"row {p}: flat axis {flat} must be 0, 1 or 2 with min = max there";
+            }
+            // Skipping the flat axis is exact only because a valid point lies on the plane.
+            if input.Valid[p] and point[flat] != bounds[2 * flat] {
+                fail $"row {p}: the point {point[flat]} on flat axis {flat} is off the plane {bounds[2 * flat]}";
+            }
             if depth < 0 or depth >= 1 <<< d {
                 fail $"row {p}: depth {depth} does not fit {d} bits";
             }
+            let tested = construction.InPlaneAxes ? (flat == 0 ? [1, 2] | (flat == 1 ? [0, 2] | [0, 1])) | [0, 1, 2];
             let bits = value -> IntAsBoolArray(value, c);
-            set load += [bits(point[0]) + bits(bounds[0]) + IntAsBoolArray(depth, d) + [input.Valid[p]]];
-            for axis in 0..2 {
-                set minsToMaxes w/= axis <- minsToMaxes[axis] + [bits(bounds[2 * axis] ^^^ bounds[2 * axis + 1])];
+            let xor = (a, b) -> Mapped((x, y) -> x != y, Zipped(a, b));
+            let low = axis -> bits(bounds[2 * axis]);
+            let high = axis -> bits(bounds[2 * axis + 1]);
+            // What coord holds while an axis is tested: its minimum (then its maximum), or both.
+            let held = axis -> boundRegisters == 2 ? low(axis) + high(axis) | low(axis);
+            let left = axis -> boundRegisters == 2 ? low(axis) + high(axis) | high(axis);
+            let first = tested[0];
+            let last = tested[axes - 1];
+            set load += [bits(point[first]) + held(first) + IntAsBoolArray(depth, d) + [input.Valid[p]]];
+            if boundRegisters == 1 {
+                for s in 0..axes - 1 {
+                    set minsToMaxes w/= s <- minsToMaxes[s] + [bits(bounds[2 * tested[s]] ^^^ bounds[2 * tested[s] + 1])];
+                }
             }
-            for axis in 0..1 {
-                let step = bits(point[axis] ^^^ point[axis + 1]) + bits(bounds[2 * axis + 1] ^^^ bounds[2 * axis + 2]);
-                set nextAxis w/= axis <- nextAxis[axis] + [step];
+            for s in 1..axes - 1 {
+                let (from, to) = (tested[s - 1], tested[s]);
+                let step = xor(bits(point[from]), bits(point[to])) + xor(left(from), held(to));
+                set nextAxis w/= s - 1 <- nextAxis[s - 1] + [step];
             }
-            set unload += [bits(point[2]) + bits(bounds[5]) + IntAsBoolArray(depth, d)];
+            set unload += [bits(point[last]) + left(last) + IntAsBoolArray(depth, d)];
         }
         new IntersectionTables {
             IndexBits = indexBits,
             CoordinateBits = c,
             DepthBits = d,
+            Axes = axes,
+            BoundRegisters = boundRegisters,
+            MeasuredUnload = construction.MeasuredUnload,
             Load = load,
             MinsToMaxes = minsToMaxes,
             NextAxis = nextAxis,

@@ -1,0 +1,76 @@
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Tests.Engines;
+
+namespace QuantumRayTracing.Tests.Cli;
+
+/// <summary>`estimate` and `estimate sweep` through <see cref="CommandLine.Run"/>: exit codes and the report file.</summary>
+[Collection(QSharpCollection.Name)]
+public sealed class EstimateCommandTests : IDisposable
+{
+    private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+
+    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-estimate-").FullName;
+
+    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+
+    [Fact]
+    public void EstimatesOnePixelsRay() =>
+        Assert.Equal(0, CommandLine.Run(["estimate", Scene, "--pixel", "3,4", "--size", "8", "--no-circuit", "--format", "csv", "--workers", "1"]));
+
+    [Theory]
+    [InlineData("--pixel", "8,0")]  // outside the 8x8 image: bad input
+    [InlineData("--pixel", "0,8")]
+    public void PixelOutsideTheImageIsBadInput(string option, string value) =>
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["estimate", Scene, option, value, "--size", "8", "--workers", "1"]));
+
+    [Theory]
+    [InlineData("--pixel", "1,2", "--worst-case")]
+    [InlineData("--pixel", "1")]
+    [InlineData("--pixel", "-1,2")]
+    [InlineData("--oracle", "smallest")]
+    [InlineData("--models", "qubit_gate_ns_e3:floquet_code")]
+    [InlineData("--models", "qubit_gate_xx")]
+    [InlineData("--iterations", "-1")]
+    [InlineData("--iterations", "many")]
+    public void UsageErrors(params string[] options) =>
+        Assert.Equal(1, CommandLine.Run(["estimate", Scene, .. options]));
+
+    [Fact]
+    public void SweepWritesItsReportWithThePapersFigure()
+    {
+        var output = Path.Combine(_scratch, "estimates.md");
+        Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
+        var lines = File.ReadAllLines(output);
+        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateSweepCommand.CommandLine), lines[0]);
+        Assert.Contains("| paper (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
+        // One row per requested N and bit count in the before → after tables.
+        Assert.Equal(["4", "8"], DataRows(lines, "## The oracle against the number of primitives"));
+        Assert.Equal(["2"], DataRows(lines, "## The oracle against the coordinate bits"));
+        // Every plot the report shows is a PNG beside it (none when the build has no plot writer).
+        foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
+            Assert.Equal(800, Output.PngTestDecoder.Decode(File.ReadAllBytes(Path.Combine(_scratch, png))).Image.Width);
+        // Regenerating replaces the file this command wrote.
+        Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
+        Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));
+    }
+
+    /// <summary>The first cell of each data row of the table in the section starting with <paramref name="heading"/>.</summary>
+    private static string[] DataRows(string[] lines, string heading)
+    {
+        var start = Array.FindIndex(lines, l => l.StartsWith(heading, StringComparison.Ordinal));
+        Assert.True(start >= 0, $"no section '{heading}'");
+        return lines.Skip(start + 1).TakeWhile(l => !l.StartsWith("## ", StringComparison.Ordinal))
+            .Where(l => l.StartsWith("| ", StringComparison.Ordinal)).Skip(1) // the header row
+            .Select(l => l.Split('|')[1].Trim()).ToArray();
+    }
+
+    [Fact]
+    public void SweepRefusesToReplaceAFileItDidNotWrite()
+    {
+        var output = Path.Combine(_scratch, "notes.md");
+        File.WriteAllText(output, "# my notes\n");
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]));
+        Assert.Equal("# my notes\n", File.ReadAllText(output));
+    }
+}

@@ -1,0 +1,131 @@
+using System.CommandLine;
+using System.Globalization;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+using Spectre.Console;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// `estimate`: what the gate-level circuits for one ray would cost: the Resource Estimator's logical
+/// counts and physical figures, and the gates and depth of the circuit the QDK extracts.
+/// </summary>
+public sealed class EstimateCommand : Command
+{
+    private readonly Argument<FileInfo?> _scene = new("scene")
+    {
+        Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {RenderCommand.DefaultQornellPrimitives} primitives, built in.",
+        Arity = ArgumentArity.ZeroOrOne,
+    };
+
+    private readonly Option<string?> _pixel = new("--pixel")
+    {
+        Description = "The camera ray through pixel X,Y (0,0 is the top left) of the image. Default: the worst case (--worst-case).",
+        HelpName = "X,Y",
+    };
+
+    private readonly Option<bool> _worstCase = new("--worst-case")
+    {
+        Description = "The camera ray whose search needs the widest oracle (most peak qubits; ties: most depth bits, then the first pixel in row-major order). The default.",
+    };
+
+    private readonly Option<string?> _size = new("--size")
+    {
+        Description = "Image size the camera rays are cast for, WIDTHxHEIGHT or one number. Default: the scene's.",
+        HelpName = "WxH",
+    };
+
+    private readonly Option<int?> _iterations = new("--iterations", "-r")
+    {
+        Description = "Grover iterations r of the QSearch run row. Default: ceil(sqrt N), the largest r QSearch draws.",
+    };
+
+    private readonly EstimateOptions _options = new();
+
+    public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model.")
+    {
+        Arguments.Add(_scene);
+        Options.Add(_pixel);
+        Options.Add(_worstCase);
+        Options.Add(_size);
+        Options.Add(_iterations);
+        _options.AddTo(this);
+        _pixel.Validators.Add(r =>
+        {
+            if (ParsePixel(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--pixel: {error}");
+        });
+        _size.Validators.Add(r =>
+        {
+            if (RenderCommand.ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
+        });
+        _iterations.Validators.Add(r =>
+        {
+            if (r.TryGetValue<int?>(out var value) && value is < 0 or > 100_000) r.AddError("--iterations must be between 0 and 100000");
+        });
+        Validators.Add(r =>
+        {
+            if (r.GetResult(_pixel) is not null && r.GetValue(_worstCase)) r.AddError("--pixel and --worst-case choose the ray two ways; give one");
+        });
+        Subcommands.Add(new EstimateSweepCommand());
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var scene = RenderCommand.LoadScene(parse.GetValue(_scene));
+        var geometry = new SceneGeometry(scene);
+        var (width, height) = RenderCommand.ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
+        var construction = _options.Construction(parse);
+        var (input, label) = ParsePixel(parse.GetValue(_pixel)) is { Pixel: { } pixel }
+            ? pixel.X < width && pixel.Y < height
+                ? EstimateRay.Pixel(scene, geometry, width, height, pixel.X, pixel.Y, construction)
+                : throw new UserError($"--pixel {pixel.X},{pixel.Y} is outside the {width}x{height} image")
+            : EstimateRay.WorstCase(scene, geometry, width, height, construction);
+        var iterations = parse.GetValue(_iterations) ?? QSearchSchedule.CeilSqrt(geometry.Count);
+        var subject = new EstimateSubject(input, iterations, label);
+
+        var estimator = _options.Create(parse, out var pool);
+        IReadOnlyList<CircuitEstimate> estimates;
+        using (pool)
+        {
+            var jobs = EstimatedCircuits.All.Select(c => (c, subject)).ToArray();
+            estimates = EstimateProgress.Run(estimator, jobs, "estimating");
+        }
+
+        var table = EstimateTable.For($"Resource estimates: {scene.Name}, {label}", estimates, estimator.Models, Context(scene, geometry, subject));
+        table.Note("Not yet here: the QSS circuit and the QCoin step (the supersampling issue's Q#); each will be one more entry in EstimatedCircuits.All.");
+        _options.Write(parse, table);
+        return 0;
+    }
+
+    /// <summary>The lines that say what was estimated: scene, ray, registers, construction, r.</summary>
+    public static IReadOnlyList<string> Context(Scene scene, SceneGeometry geometry, EstimateSubject subject)
+    {
+        var table = subject.Oracle.Table;
+        var ray = table.Ray;
+        var construction = subject.Oracle.Construction;
+        return
+        [
+            $"scene: {scene.Name}: N = {geometry.Count}, {scene.Grid}",
+            $"ray: {subject.Label}, origin {ray.Origin}, direction {ray.Direction}; its first search (full range: every depth, every id; marked rows: {table.Marked(subject.Oracle.Window).MarkedCount})",
+            $"registers: {geometry.IndexBits} index, {table.CoordinateBits} bits per coordinate, {table.DepthBits} depth bits",
+            $"oracle construction: {construction} ({(construction.InPlaneAxes ? "the two in-plane axes" : "all three axes")}, {(construction.BothBounds ? "both bounds loaded at once" : "minimum then maximum in one register")}, {(construction.MeasuredUnload ? "unload by measurement" : "unload by lookup")})",
+            $"QSearch run: r = {subject.Iterations.ToString(CultureInfo.InvariantCulture)} iterations",
+        ];
+    }
+
+    /// <summary>"12,7" → the pixel; null text → no pixel.</summary>
+    public static ((int X, int Y)? Pixel, string? Error) ParsePixel(string? text)
+    {
+        if (text is null) return (null, null);
+        var parts = text.Split(',');
+        if (parts.Length != 2 || !int.TryParse(parts[0], NumberStyles.None, CultureInfo.InvariantCulture, out var x)
+            || !int.TryParse(parts[1], NumberStyles.None, CultureInfo.InvariantCulture, out var y))
+            return (null, $"expected X,Y (two non-negative integers), got '{text}'");
+        return ((x, y), null);
+    }
+}

@@ -1,0 +1,99 @@
+using System.CommandLine;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Output;
+using Spectre.Console;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>The options `estimate` and `estimate sweep` share: oracle construction, qubit models, circuit extraction, workers, format.</summary>
+public sealed class EstimateOptions
+{
+    public readonly Option<string> Oracle = new("--oracle")
+    {
+        Description = "How the oracle is built: baseline (x, y and z tested, minimum then maximum in one register), compact (only the two in-plane axes, both bounds at once; the default) or narrow (compact, unloading by lookup instead of measurement: more Toffolis, fewer auxiliary qubits).",
+        DefaultValueFactory = _ => OracleConstruction.Default.Name,
+        HelpName = string.Join('|', OracleConstruction.Named.Select(c => c.Name)),
+    };
+
+    public readonly Option<string[]> Models = new("--models")
+    {
+        Description = $"Resource Estimator qubit models, NAME or NAME:QEC_SCHEME, space-separated (names: {string.Join(", ", QubitModel.Names)}; schemes: surface_code, floquet_code for Majorana models). Default: {string.Join(" ", QubitModel.Defaults.Select(m => $"{m.Name}:{m.QecScheme}"))}.",
+        AllowMultipleArgumentsPerToken = true,
+        DefaultValueFactory = _ => QubitModel.Defaults.Select(m => $"{m.Name}:{m.QecScheme}").ToArray(),
+    };
+
+    public readonly Option<bool> NoCircuit = new("--no-circuit")
+    {
+        Description = "Skip getCircuit (gates by kind and depth), which simulates the circuit once; keep the estimator's counts.",
+    };
+
+    public readonly Option<ReportFormat> Format = new("--format")
+    {
+        Description = "table (console), md (Markdown) or csv.",
+        DefaultValueFactory = _ => ReportFormat.Table,
+        HelpName = "table|md|csv",
+    };
+
+    public readonly Option<int> Workers = new("--workers")
+    {
+        Description = "Node bridge processes estimating circuits in parallel. Default: the core count.",
+        DefaultValueFactory = _ => BridgePool.DefaultWorkers,
+    };
+
+    public EstimateOptions()
+    {
+        Oracle.Validators.Add(r =>
+        {
+            var name = r.GetValueOrDefault<string>();
+            if (OracleConstruction.Named.All(c => c.Name != name))
+                r.AddError($"--oracle: unknown construction '{name}'; choose {string.Join(", ", OracleConstruction.Named.Select(c => c.Name))}");
+        });
+        Models.Validators.Add(r =>
+        {
+            var texts = r.GetValueOrDefault<string[]>() ?? [];
+            if (texts.Length == 0) r.AddError("--models: name at least one qubit model");
+            foreach (var text in texts)
+                if (QubitModel.Parse(text) is { Error: { } error }) r.AddError($"--models: {error}");
+        });
+        Workers.AtLeast(1);
+    }
+
+    public void AddTo(Command command, bool withFormat = true)
+    {
+        command.Options.Add(Oracle);
+        command.Options.Add(Models);
+        command.Options.Add(NoCircuit);
+        if (withFormat) command.Options.Add(Format);
+        command.Options.Add(Workers);
+    }
+
+    public OracleConstruction Construction(ParseResult parse) => OracleConstruction.Named.Single(c => c.Name == parse.GetValue(Oracle));
+
+    public IReadOnlyList<QubitModel> QubitModels(ParseResult parse) => parse.GetValue(Models)!.Select(t => QubitModel.Parse(t).Model!).ToArray();
+
+    /// <summary>An estimator on a new pool of bridges, which the caller disposes.</summary>
+    public ResourceEstimator Create(ParseResult parse, out BridgePool pool)
+    {
+        pool = new BridgePool(parse.GetValue(Workers));
+        return new ResourceEstimator(pool, QubitModels(parse), withCircuits: !parse.GetValue(NoCircuit));
+    }
+
+    /// <summary>Prints the table in the chosen format.</summary>
+    public void Write(ParseResult parse, ReportTable table)
+    {
+        switch (parse.GetValue(Format))
+        {
+            case ReportFormat.Md:
+                Console.Write(table.ToMarkdown());
+                break;
+            case ReportFormat.Csv:
+                Console.Write(table.ToCsv());
+                break;
+            default:
+                table.WriteToConsole();
+                break;
+        }
+    }
+}

@@ -1,0 +1,38 @@
+using System.Globalization;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Intersection;
+
+namespace QuantumRayTracing.Estimates;
+
+/// <summary>
+/// Every circuit `qrt estimate` reports, in table order. A new circuit is one more entry here (the
+/// supersampling circuit and the QCoin step will be, once their Q# exists).
+/// </summary>
+public static class EstimatedCircuits
+{
+    private const string Intersection = "QuantumRayTracing.Intersection.";
+
+    /// <summary>Int_r (paper fig. 3) applied once, XORing i_r(p) into a fresh output qubit: the paper's table 9 circuit.</summary>
+    public static readonly EstimatedCircuit Oracle = new(
+        "oracle",
+        "the intersection oracle Int_r once (compute the flags, XOR their AND into the output, uncompute)",
+        s => $"{Intersection}ApplyIntersectionOracleOnNewRegisters({GateEngine.OracleArgument(s.Oracle)})",
+        s => OracleRegisters.ForOracle(s.Oracle));
+
+    /// <summary>One Grover iteration: the phase oracle and the reflection about the uniform superposition over N.</summary>
+    public static readonly EstimatedCircuit GroverIteration = new(
+        "Grover iteration",
+        "one Grover iteration: the phase oracle, then the reflection about the uniform superposition over N",
+        s => $"{Intersection}ApplyGateGroverIterationOnNewRegisters({GateEngine.OracleArgument(s.Oracle)})",
+        s => OracleRegisters.For(s.Oracle));
+
+    /// <summary>One QSearch run: prepare the uniform superposition, r iterations, measure the index.</summary>
+    public static readonly EstimatedCircuit SearchRun = new(
+        "QSearch run",
+        "one run of QSearch: prepare the uniform superposition over N, r Grover iterations, measure the index",
+        s => $"{Intersection}MeasureGateGroverSearch({GateEngine.OracleArgument(s.Oracle)}, {s.Iterations.ToString(CultureInfo.InvariantCulture)})",
+        s => OracleRegisters.For(s.Oracle),
+        RepeatsIterations: true);
+
+    public static IReadOnlyList<EstimatedCircuit> All { get; } = [Oracle, GroverIteration, SearchRun];
+}
