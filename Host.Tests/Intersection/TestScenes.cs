@@ -16,9 +16,12 @@ internal static class TestScenes
         string.Create(CultureInfo.InvariantCulture,
             $$"""{ "min": [{{x0}}, {{y0}}, {{z0}}], "max": [{{x1}}, {{y1}}, {{z1}}], "material": "{{material}}" }""");
 
-    /// <summary>A scene on a grid of <paramref name="integerBits"/>.<paramref name="fractionBits"/> with the given rectangles; materials white, grey, mirror.</summary>
+    /// <summary>
+    /// A scene on a grid of <paramref name="integerBits"/>.<paramref name="fractionBits"/> with the given rectangles; materials white, grey, mirror.
+    /// <paramref name="more"/> holds further top-level fields (area or directional lights), e.g. <c>"areaLights": [ … ],</c>.
+    /// </summary>
     public static Scene With(int integerBits, int fractionBits, IEnumerable<string> rectangles,
-        string camera = """{ "position": [4, 4, -4], "lookAt": [4, 4, 8] }""", string lights = "[]", double ambient = 0) =>
+        string camera = """{ "position": [4, 4, -4], "lookAt": [4, 4, 8] }""", string lights = "[]", double ambient = 0, string more = "") =>
         SceneLoader.Parse(string.Create(CultureInfo.InvariantCulture, $$"""
             {
               "image": { "width": 4, "height": 4 },
@@ -31,6 +34,7 @@ internal static class TestScenes
                 "mirror": { "diffuse": [0.2, 0.2, 0.2], "mirror": 0.5 }
               },
               "lights": {{lights}},
+              {{more}}
               "rectangles": [ {{string.Join(",\n", rectangles)}} ]
             }
             """), "test.json");

@@ -25,6 +25,9 @@ public sealed class RenderCommand : Command
     /// <summary>The scene rendered when none is named: the paper's figure 1.</summary>
     public const int DefaultQornellPrimitives = 64;
 
+    /// <summary>The most area samples or VPLs per point an option accepts.</summary>
+    public const int MaxSamples = 4096;
+
     private readonly Argument<FileInfo?> _scene = new("scene")
     {
         Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {DefaultQornellPrimitives} primitives, built in.",
@@ -109,6 +112,24 @@ public sealed class RenderCommand : Command
         DefaultValueFactory = _ => GateEngine.DefaultMaxQubits,
     };
 
+    private readonly Option<int> _areaSamples = new("--area-samples")
+    {
+        Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
+        DefaultValueFactory = _ => RenderDefaults.AreaSamples,
+    };
+
+    private readonly Option<int> _vpl = new("--vpl")
+    {
+        Description = "Virtual point lights per surface point for single-bounce indirect light: cosine-weighted rays traced to their closest hit, each lit by the scene's lights through shadow rays (0: no indirect light; the paper: 4).",
+        DefaultValueFactory = _ => RenderDefaults.Vpl,
+    };
+
+    private readonly Option<int> _referenceSamples = new("--reference-samples")
+    {
+        Description = "Area samples and VPLs per point of the converged classical reference the render is also compared with when it samples light (area lights or --vpl); 0 skips it. It costs about this many / --area-samples (or --vpl) times a classical render.",
+        DefaultValueFactory = _ => RenderDefaults.ReferenceSamples,
+    };
+
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
         EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
 
@@ -130,7 +151,13 @@ public sealed class RenderCommand : Command
         Options.Add(_agreedMiss);
         Options.Add(_plannedMiss);
         Options.Add(_maxQubits);
+        Options.Add(_areaSamples);
+        Options.Add(_vpl);
+        Options.Add(_referenceSamples);
         _engine.AddTo(this);
+        _areaSamples.Between(1, MaxSamples);
+        _vpl.Between(0, MaxSamples);
+        _referenceSamples.Between(0, MaxSamples);
         _plannedMiss.Validators.Add(r =>
         {
             if (r.GetValueOrDefault<double?>() is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
@@ -161,15 +188,26 @@ public sealed class RenderCommand : Command
         var stem = sceneFile is null ? $"qornell-{DefaultQornellPrimitives}" : Path.GetFileNameWithoutExtension(sceneFile.Name);
         var output = parse.GetValue(_output) ?? $"{stem}-{engineName}.png";
         var withReference = parse.GetValue(_reference);
-        var outputs = withReference ? new[] { output, Sibling(output, "reference"), Sibling(output, "difference") } : [output];
-        ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
 
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
         var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
             parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
-            parse.GetValue(_lattice), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss));
+            parse.GetValue(_lattice), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
+            parse.GetValue(_areaSamples), parse.GetValue(_vpl));
+        var sampled = RenderDefaults.SamplesLight(scene, options);
+        var referenceSamples = parse.GetValue(_referenceSamples);
+        var withConverged = sampled && referenceSamples > 0;
+        var converged = RenderDefaults.Converged(options, Math.Max(1, referenceSamples));
+        string[] outputs = withReference
+            ? [output, Sibling(output, "reference"), Sibling(output, "difference"), .. withConverged ? [Sibling(output, "converged")] : Array.Empty<string>()]
+            : [output];
+        ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
+
         var geometry = new SceneGeometry(scene);
-        AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {scene.Lights.Count} lights, {width}x{height} pixels, {scene.Grid}");
+        AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {LightSummary(scene)}, {width}x{height} pixels, {scene.Grid}");
+        if (sampled)
+            AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
+                + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
         if (kind == EngineKind.Gate)
         {
@@ -200,6 +238,15 @@ public sealed class RenderCommand : Command
         using var classical = new ClassicalHitSearch();
         var reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(options), referenceProgress);
         var referenceTime = clock.Elapsed;
+        clock.Restart();
+        RenderResult? convergedReference = null;
+        if (withConverged)
+        {
+            var convergedProgress = new ConsoleProgress("converged reference");
+            convergedReference = SceneRenderer.Render(scene, classical, converged, convergedProgress);
+            convergedProgress.Finish();
+        }
+        var convergedTime = clock.Elapsed;
         progress.Finish();
         referenceProgress.Finish();
 
@@ -209,12 +256,21 @@ public sealed class RenderCommand : Command
         {
             images.Add((reference.Image, outputs[1]));
             images.Add((DifferenceImage.Of(result.Image, reference.Image), outputs[2]));
+            if (convergedReference is not null) images.Add((convergedReference.Image, outputs[3]));
         }
         ImageFiles.Write(images);
 
         AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
-        AnsiConsole.WriteLine($"error against the classical render: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
-        AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s");
+        var sameSamples = sampled ? " with the same samples (search error alone)" : "";
+        AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
+        if (convergedReference is not null)
+        {
+            var toConverged = ImageError.Between(result.Image, convergedReference.Image);
+            var noise = ImageError.Between(reference.Image, convergedReference.Image);
+            AnsiConsole.WriteLine($"error against the converged classical reference ({referenceSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {noise.Nrmse:P2} (Monte Carlo noise alone)");
+        }
+        var convergedWall = convergedReference is null ? "" : $", converged reference {convergedTime.TotalSeconds:0.00} s";
+        AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s{convergedWall}");
         AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (DESIGN.md §5); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");
         foreach (var (_, path) in images) AnsiConsole.WriteLine($"wrote {path}");
         return 0;
@@ -241,6 +297,13 @@ public sealed class RenderCommand : Command
         Row("wall time", p => $"{p.Elapsed.TotalSeconds:0.00} s");
         table.Caption($"classical reference: {N(classical.Rays)} rays, Int/Ray {classical.PerRayConservative:0.00}");
         return table;
+    }
+
+    private static string LightSummary(Scene scene)
+    {
+        var kinds = new[] { (scene.Lights.Count, "point"), (scene.AreaLights.Count, "area"), (scene.DirectionalLights.Count, "directional") }
+            .Where(k => k.Item1 > 0).Select(k => $"{k.Item1} {k.Item2}").ToArray();
+        return kinds.Length == 0 ? "no lights" : "lights: " + string.Join(", ", kinds);
     }
 
     private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);

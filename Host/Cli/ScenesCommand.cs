@@ -20,7 +20,9 @@ public sealed class ScenesCommand : Command
     /// <summary>Every generated scene: file name and builder.</summary>
     public static IEnumerable<(string File, SceneBuilder Scene)> Standard() =>
         QornellBox.Sizes.Select(n => ($"qornell-{n}.json", QornellBox.Build(n)))
-            .Concat(DepthComplexityScene.Sizes.Select(n => ($"depth-complexity-{n}.json", DepthComplexityScene.Build(n))));
+            .Concat(DepthComplexityScene.Sizes.Select(n => ($"depth-complexity-{n}.json", DepthComplexityScene.Build(n))))
+            .Concat(QornellBox.AreaLitSizes.Select(n => ($"qornell-{n}-area.json", QornellBox.BuildAreaLit(n))))
+            .Append(($"temple-{TempleScene.Primitives}.json", TempleScene.Build()));
 
     private sealed class GenerateCommand : Command
     {
@@ -30,7 +32,7 @@ public sealed class ScenesCommand : Command
             DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
         };
 
-        public GenerateCommand() : base("generate", "Write the Qornell box (8..512 primitives) and Depth Complexity (32, 64) scene files.")
+        public GenerateCommand() : base("generate", "Write the Qornell box (8..512 primitives), Depth Complexity (32, 64), area-lit Qornell box (64) and temple (32) scene files.")
         {
             Options.Add(_directory);
             SetAction(parse =>
@@ -72,7 +74,7 @@ public sealed class ScenesCommand : Command
                     {
                         var scene = SceneLoader.Load(file.FullName);
                         var index = SearchRegisters.For(scene.Rectangles.Count).IndexQubits;
-                        Console.WriteLine($"{file}: ok: '{scene.Name}', {scene.Rectangles.Count} rectangles ({index} index qubits), {scene.Lights.Count} lights, {scene.Width}x{scene.Height}, {scene.Grid}");
+                        Console.WriteLine($"{file}: ok: '{scene.Name}', {scene.Rectangles.Count} rectangles ({index} index qubits), {scene.Lights.Count} point, {scene.AreaLights.Count} area and {scene.DirectionalLights.Count} directional lights, {scene.Width}x{scene.Height}, {scene.Grid}");
                     }
                     catch (SceneError e)
                     {

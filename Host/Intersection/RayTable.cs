@@ -78,7 +78,7 @@ public sealed class RayTable
         if (!(t > SnapTolerance) || t >= ray.MaxDistance) return default;
         var point = ray.At(t);
         var limit = 1 << geometry.Grid.Bits;
-        var q = new int[3];
+        Span<int> q = stackalloc int[3];
         for (var axis = 0; axis < 3; axis++)
         {
             q[axis] = axis == flat ? geometry.Min(p, axis) : Quantise(point[axis], geometry.Scale);
@@ -96,7 +96,7 @@ public sealed class RayTable
     {
         var row = EvaluateRow(geometry, ray, p);
         if (!row.Valid || !window.Accepts(row.Depth, p)) return null;
-        int[] q = [row.X, row.Y, row.Z];
+        Span<int> q = [row.X, row.Y, row.Z];
         for (var axis = 0; axis < 3; axis++)
             if (q[axis] < geometry.Min(p, axis) || q[axis] > geometry.Max(p, axis)) return null;
         return row;

@@ -15,6 +15,15 @@ public static class RandomStreams
     /// <summary>The termination criterion's draws in a render.</summary>
     public const ulong Stop = 4;
 
+    /// <summary>Area-light sample positions, one stream per sample (<see cref="SampleStreams"/>).</summary>
+    public const ulong AreaLight = 5;
+
+    /// <summary>VPL directions, one stream per pixel, surface point and VPL.</summary>
+    public const ulong Vpl = 6;
+
+    /// <summary>The area-light sample each VPL takes for its own direct light.</summary>
+    public const ulong VplAreaLight = 7;
+
     /// <summary>Supersampling experiments: one analytic engine per estimator run, from this stream on.</summary>
     public const ulong Supersampling = 1UL << 24;
 

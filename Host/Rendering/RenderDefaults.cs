@@ -13,7 +13,28 @@ public static class RenderDefaults
     public const double AgreedMiss = 0.4;
     public static readonly double? PlannedMiss = null;
 
+    /// <summary>Shadow rays per surface point and area light: the paper's 32 (sec. 7, fig. 13).</summary>
+    public const int AreaSamples = 32;
+
+    /// <summary>VPLs per surface point: none unless asked for (the paper's fig. 14 uses 4).</summary>
+    public const int Vpl = 0;
+
+    /// <summary>Area samples and VPLs of the converged classical reference: the paper's 512.</summary>
+    public const int ReferenceSamples = 512;
+
     /// <summary>The classical render of the same image: strict ties, no pipeline tricks (it needs none: its answers are certain).</summary>
     public static RenderOptions Reference(RenderOptions options) =>
         options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off, LatticeLevels = 0 };
+
+    /// <summary>
+    /// The classical reference with <paramref name="samples"/> area samples and, when the render has
+    /// indirect light, as many VPLs: what the Monte Carlo estimates converge to, for the error of a
+    /// render against the light itself rather than against the same samples.
+    /// </summary>
+    public static RenderOptions Converged(RenderOptions options, int samples) =>
+        Reference(options) with { AreaSamples = samples, Vpl = options.Vpl > 0 ? samples : 0 };
+
+    /// <summary>Whether a render samples light by Monte Carlo (area lights or VPLs), so a converged reference differs from the same-sample one.</summary>
+    public static bool SamplesLight(Scenes.Scene scene, RenderOptions options) => scene.AreaLights.Count > 0 || options.Vpl > 0;
+
 }

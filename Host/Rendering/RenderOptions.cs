@@ -10,7 +10,8 @@ namespace QuantumRayTracing.Rendering;
 /// draws, and lattice-first tracing (levels of spacing 2, 4, …; 0 for none) with its cheap
 /// confirmation where neighbours agree; <see cref="PlannedMiss"/>, when set, replaces Algorithm 1's
 /// schedule in every other search by the cheapest fixed list missing at most that share of rays with
-/// 1..<see cref="ConfirmationMaxT"/> hits.
+/// 1..<see cref="ConfirmationMaxT"/> hits. <see cref="AreaSamples"/> is S, the shadow rays per surface point
+/// and area light; <see cref="Vpl"/> the virtual point lights per surface point for single-bounce indirect light (0: none).
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -24,7 +25,9 @@ public sealed record RenderOptions(
     ulong Seed = 1,
     int LatticeLevels = 0,
     double AgreedMiss = RenderOptions.DefaultAgreedMiss,
-    double? PlannedMiss = null)
+    double? PlannedMiss = null,
+    int AreaSamples = RenderDefaults.AreaSamples,
+    int Vpl = RenderDefaults.Vpl)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;

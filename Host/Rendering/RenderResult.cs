@@ -3,8 +3,13 @@ using QuantumRayTracing.Passes;
 
 namespace QuantumRayTracing.Rendering;
 
-/// <summary>A finished render: the image, each pass's metrics in order, and their total.</summary>
+/// <summary>
+/// A finished render: the image, each pass's metrics in order, and their total; <see cref="Radiance"/>
+/// holds each pixel's linear value before display encoding.
+/// </summary>
 public sealed record RenderResult(RgbImage Image, IReadOnlyList<PassMetrics> Passes)
 {
+    public IReadOnlyList<Scenes.Vec3> Radiance { get; init; } = [];
+
     public PassMetrics Total => PassMetrics.Total("total", Passes.ToArray());
 }

@@ -11,7 +11,8 @@ namespace QuantumRayTracing.Rendering;
 
 /// <summary>
 /// RenderScene (appendix B, Algorithm 7): the primary pass, the specular pass for pixels that see a
-/// mirror, the direct-light pass for every surface point and light, then Whitted shading. Rays are
+/// mirror, the direct-light pass for every surface point and point or directional light, then Whitted
+/// shading; with area lights an area-light pass, and with VPLs the indirect passes (sec. 7). Rays are
 /// traced breadth first, a whole pass at a time, so each pass batches all its searches. Every engine
 /// runs exactly this; they differ only in the <see cref="IHitSearch"/> they bring.
 /// </summary>
@@ -19,6 +20,8 @@ public static class SceneRenderer
 {
     public static RenderResult Render(Scene scene, IHitSearch search, RenderOptions options, IRenderProgress? progress = null)
     {
+        ArgumentOutOfRangeException.ThrowIfLessThan(options.AreaSamples, 1);
+        ArgumentOutOfRangeException.ThrowIfNegative(options.Vpl);
         var geometry = new SceneGeometry(scene);
         var primaryRays = CameraRays.For(scene.Camera, options.Width, options.Height);
         var passes = new List<PassMetrics>();
@@ -29,18 +32,26 @@ public static class SceneRenderer
         var lattice = options.LatticeLevels > 0
             ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss))
             : null;
-        PassOptions Trace(PixelLayout layout) => new(options.Iterations, options.TieBreak, options.Neighbours ? layout : null, stop, lattice, planned);
-        var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, Trace(PixelLayout.Image(options.Width, options.Height)), progress);
+        var plan = new PassPlan(scene, geometry, search, options, stop, lattice, planned, progress);
+        var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, plan.Trace(Enumerable.Range(0, primaryRays.Length).ToArray()), progress);
 
         // Surface points: each primary hit carries 1 − mirror of its pixel, its reflection the mirror share.
+        // A camera or mirror ray that meets an area light before its hit shows the light instead.
+        var radiance = new Vec3[primaryRays.Length];
         var points = new List<SurfacePoint>();
         var specularPixels = new List<int>();
         var specularRays = new List<Ray>();
         for (var pixel = 0; pixel < primaryRays.Length; pixel++)
         {
-            if (primaryHits[pixel] is not { } hit) continue;
-            var rectangle = scene.Rectangles[hit.Primitive];
-            var point = SurfacePoint.Of(pixel, primaryRays[pixel], hit, rectangle, 1 - rectangle.Material.Mirror);
+            var hit = primaryHits[pixel];
+            if (scene.AreaLights.Count > 0 && Emitters.Seen(primaryRays[pixel], hit?.Distance ?? double.PositiveInfinity, scene.AreaLights) is { } light)
+            {
+                radiance[pixel] = light;
+                continue;
+            }
+            if (hit is not { } h) continue;
+            var rectangle = scene.Rectangles[h.Primitive];
+            var point = SurfacePoint.Of(pixel, primaryRays[pixel], h, rectangle, 1 - rectangle.Material.Mirror);
             if (point.Weight > 0) points.Add(point);
             if (!rectangle.Material.IsMirror) continue;
             specularPixels.Add(pixel);
@@ -48,50 +59,81 @@ public static class SceneRenderer
         }
         var primaryPointCount = points.Count;
         var (specularHits, specularMetrics) = TracePass.Run("specular", search, geometry, specularRays,
-            Trace(new PixelLayout(options.Width, options.Height, specularPixels)), progress);
+            plan.Trace(specularPixels), progress);
         for (var k = 0; k < specularRays.Count; k++)
         {
-            if (specularHits[k] is not { } hit) continue;
-            var mirror = scene.Rectangles[primaryHits[specularPixels[k]]!.Value.Primitive].Material.Mirror;
+            var pixel = specularPixels[k];
+            var mirror = scene.Rectangles[primaryHits[pixel]!.Value.Primitive].Material.Mirror;
+            var hit = specularHits[k];
+            if (scene.AreaLights.Count > 0 && Emitters.Seen(specularRays[k], hit?.Distance ?? double.PositiveInfinity, scene.AreaLights) is { } light)
+            {
+                radiance[pixel] += mirror * light;
+                continue;
+            }
+            if (hit is not { } h) continue;
             // One bounce: a mirror seen in a mirror shows only its diffuse share.
-            var rectangle = scene.Rectangles[hit.Primitive];
-            points.Add(SurfacePoint.Of(specularPixels[k], specularRays[k], hit, rectangle, mirror * (1 - rectangle.Material.Mirror)));
+            var rectangle = scene.Rectangles[h.Primitive];
+            points.Add(SurfacePoint.Of(pixel, specularRays[k], h, rectangle, mirror * (1 - rectangle.Material.Mirror)));
         }
 
-        // Shadow rays: one per surface point and light in front of it; rayOf[point, light] = −1 for none.
+        // Shadow rays: one per surface point and point or directional light in front of it (lights
+        // 0..P−1 are the point lights, P.. the directional ones); rayOf[point, light] = −1 for none.
         // Their layout channel is the light and whether the point is primary or reflected, so gathering
         // compares rays towards the same light from the same kind of point.
+        var pointLights = scene.Lights.Count;
+        var lightCount = pointLights + scene.DirectionalLights.Count;
         var shadowRays = new List<Ray>();
         var shadowPixels = new List<int>();
         var shadowChannels = new List<int>();
-        var rayOf = new int[points.Count, scene.Lights.Count];
+        var rayOf = new int[points.Count, lightCount];
         for (var k = 0; k < points.Count; k++)
-            for (var l = 0; l < scene.Lights.Count; l++)
+            for (var l = 0; l < lightCount; l++)
             {
-                var ray = SecondaryRays.Shadow(points[k], scene.Lights[l]);
+                var ray = l < pointLights
+                    ? SecondaryRays.Shadow(points[k], scene.Lights[l])
+                    : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
                 rayOf[k, l] = ray is null ? -1 : shadowRays.Count;
                 if (ray is null) continue;
                 shadowRays.Add(ray);
                 shadowPixels.Add(points[k].Pixel);
                 shadowChannels.Add(2 * l + (k < primaryPointCount ? 0 : 1));
             }
-        var shadowLayout = new PixelLayout(options.Width, options.Height, shadowPixels, shadowChannels);
         var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays,
-            new PassOptions(options.ShadowIterations, options.TieBreak, options.ShadowNeighbours ? shadowLayout : null, stop, lattice, planned), progress);
+            plan.Shadow(shadowPixels, shadowChannels), progress);
+        passes.AddRange([primaryMetrics, specularMetrics, shadowMetrics]);
+        bool Visible(int k, int l) => rayOf[k, l] >= 0 && !occluded[rayOf[k, l]];
 
-        var radiance = new Vec3[primaryRays.Length];
+        // Irradiance beyond Whitted's point lights: directional, area and indirect light, per point.
+        var extra = new Vec3[points.Count];
+        for (var k = 0; k < points.Count; k++)
+            for (var d = 0; d < scene.DirectionalLights.Count; d++)
+                if (Visible(k, pointLights + d)) extra[k] += LightIrradiance.Directional(points[k].Normal, scene.DirectionalLights[d]);
+        if (scene.AreaLights.Count > 0)
+        {
+            var (area, areaMetrics) = AreaLightPass.Run(plan, points, primaryPointCount);
+            for (var k = 0; k < points.Count; k++) extra[k] += area[k];
+            passes.Add(areaMetrics);
+        }
+        if (options.Vpl > 0)
+        {
+            var (indirect, traceMetrics, vplShadowMetrics) = IndirectPass.Run(plan, points, primaryPointCount);
+            for (var k = 0; k < points.Count; k++) extra[k] += indirect[k];
+            passes.AddRange([traceMetrics, vplShadowMetrics]);
+        }
+
         for (var k = 0; k < points.Count; k++)
         {
             var point = points[k];
-            radiance[point.Pixel] += point.Weight * WhittedShading.Radiance(scene, point, l => rayOf[k, l] >= 0 && !occluded[rayOf[k, l]]);
+            var local = WhittedShading.Radiance(scene, point, l => Visible(k, l));
+            if (extra[k] != Vec3.Zero) local += scene.Rectangles[point.Hit.Primitive].Material.Diffuse * extra[k];
+            radiance[point.Pixel] += point.Weight * local;
         }
         var image = RgbImage.FromLinear(options.Width, options.Height, (x, y) =>
         {
             var c = radiance[y * options.Width + x];
             return (WhittedShading.Encode(c.X), WhittedShading.Encode(c.Y), WhittedShading.Encode(c.Z));
         });
-        passes.AddRange([primaryMetrics, specularMetrics, shadowMetrics]);
-        return new RenderResult(image, passes);
+        return new RenderResult(image, passes) { Radiance = radiance };
     }
 
     // The termination criterion's rule, or null; Scene mode first measures t on a lattice of primary rays.

@@ -1,6 +1,9 @@
 namespace QuantumRayTracing.Scenes;
 
-/// <summary>A validated scene: everything a render needs, in world units on <see cref="Grid"/>.</summary>
+/// <summary>
+/// A validated scene: everything a render needs, in world units on <see cref="Grid"/>. <see cref="Lights"/>
+/// are the point lights; area and directional lights are listed apart (none in older scene files).
+/// </summary>
 public sealed record Scene(
     string Name,
     int Width,
@@ -10,4 +13,9 @@ public sealed record Scene(
     double Ambient,
     IReadOnlyList<Material> Materials,
     IReadOnlyList<PointLight> Lights,
-    IReadOnlyList<Rectangle> Rectangles);
+    IReadOnlyList<Rectangle> Rectangles)
+{
+    public IReadOnlyList<AreaLight> AreaLights { get; init; } = [];
+
+    public IReadOnlyList<DirectionalLight> DirectionalLights { get; init; } = [];
+}

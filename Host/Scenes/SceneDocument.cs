@@ -16,6 +16,8 @@ public sealed class SceneDocument
     public double? Ambient { get; set; }
     public Dictionary<string, MaterialDocument>? Materials { get; set; }
     public List<LightDocument>? Lights { get; set; }
+    public List<AreaLightDocument>? AreaLights { get; set; }
+    public List<DirectionalLightDocument>? DirectionalLights { get; set; }
     public List<RectangleDocument>? Rectangles { get; set; }
 
     [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]
@@ -53,6 +55,21 @@ public sealed class SceneDocument
     {
         public double[]? Position { get; set; }
         public double[]? Intensity { get; set; }
+    }
+
+    [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]
+    public sealed class AreaLightDocument
+    {
+        public double[]? Min { get; set; }
+        public double[]? Max { get; set; }
+        public double[]? Radiance { get; set; }
+    }
+
+    [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]
+    public sealed class DirectionalLightDocument
+    {
+        public double[]? Direction { get; set; }
+        public double[]? Irradiance { get; set; }
     }
 
     [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]

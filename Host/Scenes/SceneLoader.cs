@@ -109,8 +109,52 @@ public static class SceneLoader
             if (documents.Count > MaxRectangles) throw Error("rectangles", $"{documents.Count} rectangles; at most {MaxRectangles} are supported");
             var rectangles = documents.Select((r, k) => Rectangle(r, k, grid, materials)).ToArray();
 
+            var areaLights = (d.AreaLights ?? []).Select(AreaLight).ToArray();
+            var directionalLights = (d.DirectionalLights ?? []).Select(DirectionalLight).ToArray();
+
             return new Scene(d.Name ?? Path.GetFileNameWithoutExtension(file), width, height, grid, camera, ambient,
-                materials.Values.ToArray(), lights, rectangles);
+                materials.Values.ToArray(), lights, rectangles)
+            {
+                AreaLights = areaLights,
+                DirectionalLights = directionalLights,
+            };
+        }
+
+        // An emitter, not a primitive: any finite corners (no grid), flat on exactly one axis.
+        private AreaLight AreaLight(SceneDocument.AreaLightDocument? a, int k)
+        {
+            var element = $"areaLights[{k}]";
+            if (a is null) throw Error(element, "is null");
+            var min = Vector(a.Min, $"{element}.min");
+            var max = Vector(a.Max, $"{element}.max");
+            for (var axis = 0; axis < 3; axis++)
+                if (min[axis] > max[axis])
+                    throw Error($"{element}.min[{axis}]", $"{min[axis]} is greater than max[{axis}] = {max[axis]}");
+            var flat = Enumerable.Range(0, 3).Where(axis => min[axis] == max[axis]).ToArray();
+            if (flat.Length != 1)
+                throw Error(element, flat.Length == 0
+                    ? "is not a rectangle: min and max differ on every axis (an area light is flat on exactly one axis)"
+                    : $"is not a rectangle: min equals max on {flat.Length} axes (an area light is flat on exactly one axis)");
+            return new AreaLight(min, max, flat[0], NonNegative(a.Radiance, $"{element}.radiance"));
+        }
+
+        private DirectionalLight DirectionalLight(SceneDocument.DirectionalLightDocument? l, int k)
+        {
+            var element = $"directionalLights[{k}]";
+            if (l is null) throw Error(element, "is null");
+            var direction = Vector(l.Direction, $"{element}.direction");
+            // Scaled by its largest component first, so that neither 1e-200 nor 1e200 under- or overflows the length.
+            var largest = Math.Max(Math.Abs(direction.X), Math.Max(Math.Abs(direction.Y), Math.Abs(direction.Z)));
+            if (largest == 0) throw Error($"{element}.direction", "is zero; a directional light needs the direction its light travels");
+            return new DirectionalLight(new Vec3(direction.X / largest, direction.Y / largest, direction.Z / largest).Normalized(), NonNegative(l.Irradiance, $"{element}.irradiance"));
+        }
+
+        private Vec3 NonNegative(double[]? values, string element)
+        {
+            var v = Vector(values, element);
+            for (var c = 0; c < 3; c++)
+                if (v[c] < 0) throw Error($"{element}[{c}]", $"{v[c]} is negative; light is at least 0 per channel");
+            return v;
         }
 
         private Camera Camera(SceneDocument.CameraDocument c)

@@ -3,7 +3,7 @@ using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Shading;
 
-/// <summary>The rays a hit spawns: the mirror reflection and the shadow ray to a light.</summary>
+/// <summary>The rays a hit spawns: the mirror reflection, shadow rays to lights and VPL rays.</summary>
 public static class SecondaryRays
 {
     /// <summary>The reflection of <paramref name="ray"/> at <paramref name="point"/>, leaving the mirror it hit.</summary>
@@ -24,4 +24,35 @@ public static class SecondaryRays
         if (toLight.Dot(point.Normal) <= 0) return null;
         return new Ray(point.Hit.Point, toLight, MaxDistance: 1.0, ExcludedPrimitive: point.Hit.Primitive);
     }
+
+    /// <summary>The segment from <paramref name="point"/> to <paramref name="target"/> (exact end t = 1 there), or null when the target is not in front of the surface.</summary>
+    public static Ray? Towards(SurfacePoint point, Vec3 target)
+    {
+        var toTarget = target - point.Hit.Point;
+        if (toTarget.Dot(point.Normal) <= 0) return null;
+        return new Ray(point.Hit.Point, toTarget, MaxDistance: 1.0, ExcludedPrimitive: point.Hit.Primitive);
+    }
+
+    /// <summary>
+    /// The ray from <paramref name="point"/> back along a directional light's direction, ending exactly
+    /// where it leaves the grid's cube [0, 2^integerBits]³ (every primitive lies inside), or null when the
+    /// light comes from behind the surface.
+    /// </summary>
+    public static Ray? TowardsDirectional(SurfacePoint point, DirectionalLight light, CoordinateGrid grid)
+    {
+        var toLight = -light.Direction;
+        if (toLight.Dot(point.Normal) <= 0) return null;
+        var extent = grid.Max + grid.Step;
+        var exit = double.PositiveInfinity;
+        for (var axis = 0; axis < 3; axis++)
+        {
+            if (toLight[axis] > 0) exit = Math.Min(exit, (extent - point.Hit.Point[axis]) / toLight[axis]);
+            else if (toLight[axis] < 0) exit = Math.Min(exit, -point.Hit.Point[axis] / toLight[axis]);
+        }
+        return new Ray(point.Hit.Point, toLight, MaxDistance: Math.Max(0, exit), ExcludedPrimitive: point.Hit.Primitive);
+    }
+
+    /// <summary>A VPL ray: from <paramref name="point"/> along <paramref name="direction"/>, leaving its surface, unbounded.</summary>
+    public static Ray Bounce(SurfacePoint point, Vec3 direction) =>
+        new(point.Hit.Point, direction, ExcludedPrimitive: point.Hit.Primitive);
 }

@@ -15,12 +15,7 @@ public static class WhittedShading
         var irradiance = new Vec3(scene.Ambient, scene.Ambient, scene.Ambient);
         for (var l = 0; l < scene.Lights.Count; l++)
         {
-            if (!visible(l)) continue;
-            var light = scene.Lights[l];
-            var toLight = light.Position - point.Hit.Point;
-            var distanceSquared = toLight.Dot(toLight);
-            var cosine = toLight.Dot(point.Normal) / Math.Sqrt(distanceSquared);
-            if (cosine > 0) irradiance += cosine / distanceSquared * light.Intensity;
+            if (visible(l)) irradiance += LightIrradiance.Point(point.Hit.Point, point.Normal, scene.Lights[l]);
         }
         return albedo * irradiance;
     }

@@ -11,6 +11,9 @@ public sealed class SceneBuilder(string name, int integerBits)
 {
     private readonly List<(string Name, double[] Diffuse, double Mirror)> _materials = [];
     private readonly List<(double[] Position, double[] Intensity)> _lights = [];
+    private readonly List<(double[] Min, double[] Max, double[] Radiance)> _areaLights = [];
+    private readonly List<(double[] Direction, double[] Irradiance)> _directionalLights = [];
+    private double _ambient = 0.1;
     private readonly List<(double[] Min, double[] Max, string Material)> _rectangles = [];
     private (double[] Position, double[] LookAt, double Fov) _camera = ([0, 0, -1], [0, 0, 0], 40);
 
@@ -25,6 +28,26 @@ public sealed class SceneBuilder(string name, int integerBits)
     public SceneBuilder Light(double x, double y, double z, double intensity)
     {
         _lights.Add(([x, y, z], [intensity, intensity, intensity]));
+        return this;
+    }
+
+    /// <summary>A rectangular emitter (docs/scenes.md), grey: the same radiance on every channel.</summary>
+    public SceneBuilder AreaLight(double[] min, double[] max, double radiance)
+    {
+        _areaLights.Add((min, max, [radiance, radiance, radiance]));
+        return this;
+    }
+
+    /// <summary>A light at infinity travelling along <paramref name="direction"/>, grey.</summary>
+    public SceneBuilder DirectionalLight(double[] direction, double irradiance)
+    {
+        _directionalLights.Add((direction, [irradiance, irradiance, irradiance]));
+        return this;
+    }
+
+    public SceneBuilder Ambient(double ambient)
+    {
+        _ambient = ambient;
         return this;
     }
 
@@ -50,18 +73,28 @@ public sealed class SceneBuilder(string name, int integerBits)
         text.AppendLine("  \"image\": { \"width\": 128, \"height\": 128 },");
         text.AppendLine($"  \"grid\": {{ \"integerBits\": {integerBits}, \"fractionBits\": 0 }},");
         text.AppendLine($"  \"camera\": {{ \"position\": {V(_camera.Position)}, \"lookAt\": {V(_camera.LookAt)}, \"up\": [0, 1, 0], \"verticalFov\": {N(_camera.Fov)} }},");
-        text.AppendLine("  \"ambient\": 0.1,");
+        text.AppendLine($"  \"ambient\": {N(_ambient)},");
         text.AppendLine("  \"materials\": {");
         text.AppendJoin(",\n", _materials.Select(m => $"    \"{m.Name}\": {{ \"diffuse\": {V(m.Diffuse)}, \"mirror\": {N(m.Mirror)} }}")).AppendLine();
         text.AppendLine("  },");
-        text.AppendLine("  \"lights\": [");
-        text.AppendJoin(",\n", _lights.Select(l => $"    {{ \"position\": {V(l.Position)}, \"intensity\": {V(l.Intensity)} }}")).AppendLine();
-        text.AppendLine("  ],");
+        // Light lists only when the scene has such lights, so older scenes' files stay as they were.
+        Section(text, "lights", _lights.Select(l => $"{{ \"position\": {V(l.Position)}, \"intensity\": {V(l.Intensity)} }}"));
+        Section(text, "areaLights", _areaLights.Select(l => $"{{ \"min\": {V(l.Min)}, \"max\": {V(l.Max)}, \"radiance\": {V(l.Radiance)} }}"));
+        Section(text, "directionalLights", _directionalLights.Select(l => $"{{ \"direction\": {V(l.Direction)}, \"irradiance\": {V(l.Irradiance)} }}"));
         text.AppendLine("  \"rectangles\": [");
         text.AppendJoin(",\n", _rectangles.Select(r => $"    {{ \"min\": {V(r.Min)}, \"max\": {V(r.Max)}, \"material\": \"{r.Material}\" }}")).AppendLine();
         text.AppendLine("  ]");
         text.AppendLine("}");
         return text.ToString();
+    }
+
+    private static void Section(StringBuilder text, string name, IEnumerable<string> entries)
+    {
+        var lines = entries.Select(e => "    " + e).ToArray();
+        if (lines.Length == 0) return;
+        text.AppendLine($"  \"{name}\": [");
+        text.AppendJoin(",\n", lines).AppendLine();
+        text.AppendLine("  ],");
     }
 
     private static string N(double v) => v.ToString(CultureInfo.InvariantCulture);

@@ -1,0 +1,68 @@
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Search;
+using QuantumRayTracing.Tests.Output;
+using static QuantumRayTracing.Tests.Intersection.TestScenes;
+
+namespace QuantumRayTracing.Tests.Cli;
+
+/// <summary>`render` with sampled light: `--area-samples`, `--vpl`, `--reference-samples`, their limits and the converged reference image.</summary>
+public sealed class RenderLightsCommandTests : IDisposable
+{
+    private static readonly string AreaScene = Path.Combine(RepositoryPaths.Scenes, "qornell-64-area.json");
+    private static readonly string TempleScene = Path.Combine(RepositoryPaths.Scenes, "temple-32.json");
+
+    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-lights-").FullName;
+
+    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+
+    private string Scratch(string name) => Path.Combine(_scratch, name);
+
+    private string[] Files() => Directory.GetFiles(_scratch).Select(Path.GetFileName).Order().ToArray()!;
+
+    private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
+
+    [Theory]
+    [InlineData("--area-samples", "0")]
+    [InlineData("--area-samples", "4097")]
+    [InlineData("--vpl", "-1")]
+    [InlineData("--vpl", "4097")]
+    [InlineData("--reference-samples", "-1")]
+    public void UsageErrorsExitWithOne(string option, string value)
+    {
+        Assert.Equal(1, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "4", option, value, "-o", Scratch("x.png")]));
+        Assert.Empty(Files());
+    }
+
+    [Fact]
+    public void ReferenceWritesTheConvergedImageToo()
+    {
+        var output = Scratch("x.png");
+        Assert.Equal(0, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "6", "--area-samples", "2", "--reference-samples", "8",
+            "--seed", "3", "--reference", "-o", output]));
+        Assert.Equal(["x-converged.png", "x-difference.png", "x-reference.png", "x.png"], Files());
+        using var classical = new ClassicalHitSearch();
+        var converged = SceneRenderer.Render(Load("qornell-64-area.json"), classical, new RenderOptions(6, 6, Seed: 3, AreaSamples: 8)).Image;
+        Assert.True(Decode(Scratch("x-converged.png")).Pixels.SequenceEqual(converged.Pixels));
+        Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(Scratch("x-reference.png")));
+    }
+
+    [Fact]
+    public void ZeroReferenceSamplesSkipsTheConvergedReference()
+    {
+        Assert.Equal(0, CommandLine.Run(["render", TempleScene, "-e", "analytic", "--size", "6", "--vpl", "2", "--reference-samples", "0",
+            "--reference", "-o", Scratch("t.png")]));
+        Assert.Equal(["t-difference.png", "t-reference.png", "t.png"], Files());
+    }
+
+    [Fact]
+    public void SceneWithABadAreaLightExitsWithTwo()
+    {
+        var scene = Scratch("bad.json");
+        File.WriteAllText(scene, File.ReadAllText(AreaScene).Replace("\"radiance\": [6, 6, 6]", "\"radiance\": [6, -6, 6]"));
+        Assert.NotEqual(File.ReadAllText(AreaScene), File.ReadAllText(scene));
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "4", "-o", Scratch("x.png")]));
+        Assert.Equal(["bad.json"], Files());
+    }
+}
