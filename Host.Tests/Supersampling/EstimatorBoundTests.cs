@@ -100,6 +100,15 @@ public class EstimatorBoundTests
         Assert.Equal(255, new QssEstimator(7).Queries);
     }
 
+    [Fact]
+    public void DefaultQCoinStepsFitTheirBudget()
+    {
+        for (long q = QCoinEstimator.MinimumQueries(1); q <= 5000; q++)
+            Assert.True(q >= QCoinEstimator.MinimumQueries(QCoinEstimator.DefaultSteps(q)), $"{q} queries: k = {QCoinEstimator.DefaultSteps(q)}");
+        // The measured best at the paper's budget (docs/supersampling-results.md).
+        Assert.Equal(4, QCoinEstimator.DefaultSteps(240));
+    }
+
     /// <summary>E|X/Q − f| for X ~ Binomial(Q, f), summed exactly.</summary>
     private static double MonteCarloExpectedError(double f, int queries)
     {

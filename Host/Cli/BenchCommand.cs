@@ -20,6 +20,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchOptimisedCommand());
         Subcommands.Add(new BenchParetoCommand());
         Subcommands.Add(new BenchSupersampleCommand());
+        Subcommands.Add(new BenchSupersampleImagesCommand());
     }
 
     private sealed class GroverBenchCommand : Command

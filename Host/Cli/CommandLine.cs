@@ -18,6 +18,7 @@ public static class CommandLine
     {
         var root = new RootCommand("QuantumRayTracing: hybrid quantum-classical ray tracing on the Q# full-state simulator.");
         root.Subcommands.Add(new RenderCommand());
+        root.Subcommands.Add(new SupersampleCommand());
         root.Subcommands.Add(new SearchCommand());
         root.Subcommands.Add(new ScenesCommand());
         root.Subcommands.Add(new BenchCommand());

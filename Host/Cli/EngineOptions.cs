@@ -46,9 +46,18 @@ public sealed class EngineOptions
             DefaultValueFactory = _ => fallback,
             HelpName = string.Join('|', accepted.Select(Name)),
         };
+        Engine.Choices();
         Engine.Validators.Add(result =>
         {
-            var kind = result.GetValueOrDefault<EngineKind>();
+            EngineKind kind;
+            try
+            {
+                kind = result.GetValueOrDefault<EngineKind>();
+            }
+            catch (InvalidOperationException)
+            {
+                return; // a name that did not parse has its own error
+            }
             if (!_accepted.Contains(kind))
                 result.AddError($"--engine {Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(Name))}");
         });

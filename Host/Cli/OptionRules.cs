@@ -12,9 +12,17 @@ public static class OptionRules
     {
         option.Validators.Add(result =>
         {
-            if (!result.TryGetValue<int>(out var value)) return;
-            if (value < min) result.AddError($"{option.Name} must be at least {min}, got {value}");
-            else if (value > max) result.AddError($"{option.Name} must be at most {max}, got {value}");
+            if (result.TryGetValue<int>(out var value)) Check(result, option.Name, value, min, max);
+        });
+        return option;
+    }
+
+    /// <summary>The same rule for an option that may be left out (null: the command picks a default).</summary>
+    public static Option<int?> Between(this Option<int?> option, int min, int max)
+    {
+        option.Validators.Add(result =>
+        {
+            if (result.TryGetValue<int?>(out var value) && value is { } given) Check(result, option.Name, given, min, max);
         });
         return option;
     }
@@ -35,5 +43,43 @@ public static class OptionRules
             value = default;
             return false;
         }
+    }
+
+    public static Option<long?> Between(this Option<long?> option, long min, long max)
+    {
+        option.Validators.Add(result =>
+        {
+            if (result.TryGetValue<long?>(out var value) && value is { } given) Check(result, option.Name, given, min, max);
+        });
+        return option;
+    }
+
+    /// <summary>Parses an enum option from its names in any case, with a one-line error listing them (the parser's own lists them one per line).</summary>
+    public static Option<T> Choices<T>(this Option<T> option) where T : struct, Enum
+    {
+        option.CustomParser = result => ParseChoice<T>(result, option.Name) ?? default;
+        return option;
+    }
+
+    public static Option<T?> Choices<T>(this Option<T?> option) where T : struct, Enum
+    {
+        option.CustomParser = result => ParseChoice<T>(result, option.Name);
+        return option;
+    }
+
+    private static T? ParseChoice<T>(System.CommandLine.Parsing.ArgumentResult result, string name) where T : struct, Enum
+    {
+        var token = result.Tokens.Count == 1 ? result.Tokens[0].Value : "";
+        // Enum.TryParse also takes numbers: only the names count.
+        var match = Enum.GetNames<T>().FirstOrDefault(n => string.Equals(n, token, StringComparison.OrdinalIgnoreCase));
+        if (match is not null) return Enum.Parse<T>(match);
+        result.AddError($"{name}: '{token}' is not one of {string.Join(", ", Enum.GetNames<T>().Select(n => n.ToLowerInvariant()))}");
+        return null;
+    }
+
+    private static void Check(System.CommandLine.Parsing.OptionResult result, string name, long value, long min, long max)
+    {
+        if (value < min) result.AddError($"{name} must be at least {min}, got {value}");
+        else if (value > max) result.AddError($"{name} must be at most {max}, got {value}");
     }
 }

@@ -21,8 +21,6 @@ public static class PngEncoder
     private const byte FilterSub = 1;
     private const byte FilterUp = 2;
 
-    private static readonly uint[] CrcTable = BuildCrcTable();
-
     /// <summary>The value of the tEXt "Software" chunk of every PNG written here.</summary>
     public const string Software = "QuantumRayTracing";
 
@@ -129,28 +127,7 @@ public static class PngEncoder
         var typeBytes = Encoding.ASCII.GetBytes(type);
         png.Write(typeBytes);
         png.Write(data);
-        var crc = UpdateCrc(0xFFFFFFFFu, typeBytes);
-        crc = UpdateCrc(crc, data) ^ 0xFFFFFFFFu;
-        BinaryPrimitives.WriteUInt32BigEndian(word, crc);
+        BinaryPrimitives.WriteUInt32BigEndian(word, Crc32.Of(typeBytes, data));
         png.Write(word);
-    }
-
-    private static uint UpdateCrc(uint crc, ReadOnlySpan<byte> bytes)
-    {
-        foreach (var b in bytes) crc = CrcTable[(crc ^ b) & 0xFF] ^ (crc >> 8);
-        return crc;
-    }
-
-    // CRC-32 as PNG and zlib define it: reflected polynomial 0xEDB88320, one table entry per byte value.
-    private static uint[] BuildCrcTable()
-    {
-        var table = new uint[256];
-        for (uint n = 0; n < 256; n++)
-        {
-            var c = n;
-            for (var k = 0; k < 8; k++) c = (c & 1) != 0 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            table[n] = c;
-        }
-        return table;
     }
 }

@@ -1,0 +1,236 @@
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Search;
+using QuantumRayTracing.Tests.Output;
+using static QuantumRayTracing.Tests.Intersection.TestScenes;
+
+namespace QuantumRayTracing.Tests.Cli;
+
+/// <summary>
+/// `supersample` through <see cref="CommandLine.Run"/>: exit codes (0 ok, 1 usage, 2 bad input), the one-line
+/// errors on standard error, the files it writes, and that it writes nothing when it fails.
+/// </summary>
+public sealed class SupersampleCommandTests : IDisposable
+{
+    private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+
+    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-supersample-").FullName;
+
+    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+
+    private string Scratch(string name) => Path.Combine(_scratch, name);
+
+    private string[] Files() => Directory.GetFiles(_scratch).Select(Path.GetFileName).Order().ToArray()!;
+
+    private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
+
+    private static (int Code, string Error) Run(params string[] args) => ConsoleCapture.Run(args);
+
+    private string WriteImage(string name, int width, int height, Func<int, int, (byte, byte, byte)> colour)
+    {
+        var image = new RgbImage(width, height);
+        for (var y = 0; y < height; y++)
+            for (var x = 0; x < width; x++)
+            {
+                var (r, g, b) = colour(x, y);
+                image.SetPixel(x, y, r, g, b);
+            }
+        var path = Scratch(name);
+        PngEncoder.Write(image, path);
+        return path;
+    }
+
+    // 2x2 blocks, each channel of each block black or white: every method's estimate of a mean of 0 or 1 is exact.
+    private static (byte, byte, byte) BlackOrWhiteBlocks(int x, int y)
+    {
+        var block = x / 2 * 7 + y / 2 * 3;
+        return ((byte)(block % 2 * 255), (byte)(block / 2 % 2 * 255), (byte)(block / 4 % 2 * 255));
+    }
+
+    [Theory]
+    [InlineData("mc")]
+    [InlineData("qcoin")]
+    [InlineData("mlae")]
+    [InlineData("qss")]
+    [InlineData("qss", "--qss-values", "continuous")]
+    [InlineData("qss", "--planes", "1")]
+    public void EveryMethodReproducesBlackAndWhiteBlocksExactly(string method, params string[] extra)
+    {
+        var input = WriteImage("in.png", 8, 6, BlackOrWhiteBlocks);
+        var output = Scratch("out.png");
+        var (code, error) = Run(["supersample", "--image", input, "--subpixels", "2", "-m", method, .. extra, "-o", output]);
+        Assert.True(code == 0, error);
+        var image = Decode(output);
+        Assert.Equal((4, 3), (image.Width, image.Height));
+        for (var y = 0; y < 3; y++)
+            for (var x = 0; x < 4; x++)
+                Assert.Equal(BlackOrWhiteBlocks(2 * x, 2 * y), image.GetPixel(x, y));
+    }
+
+    [Fact]
+    public void BitPlaneQssWritesAGreyConfidenceMapAndMonteCarloNone()
+    {
+        var input = WriteImage("in.png", 8, 8, (x, y) => ((byte)(x * 30), (byte)(y * 30), (byte)(x * y * 4)));
+        Assert.Equal(0, Run("supersample", "--image", input, "--subpixels", "4", "-o", Scratch("q.png")).Code);
+        var map = Decode(Scratch("q-confidence.png"));
+        Assert.Equal((2, 2), (map.Width, map.Height));
+        for (var y = 0; y < 2; y++)
+            for (var x = 0; x < 2; x++)
+            {
+                var (r, g, b) = map.GetPixel(x, y);
+                Assert.True(r == g && g == b && r > 0, $"confidence pixel ({x}, {y}) is ({r}, {g}, {b})");
+            }
+        Assert.Equal(0, Run("supersample", "--image", input, "--subpixels", "4", "-m", "mc", "-o", Scratch("m.png")).Code);
+        Assert.Equal(["in.png", "m.png", "q-confidence.png", "q.png"], Files());
+    }
+
+    [Fact]
+    public void SceneWithOneSubpixelIsTheClassicalRender()
+    {
+        // One binary subpixel per plane (N = 1, t = 1) reads its hit count with certainty: QSS returns the render itself.
+        var output = Scratch("s.png");
+        var (code, error) = Run("supersample", "--scene", Scene, "--size", "6x4", "--subpixels", "1", "-o", output);
+        Assert.True(code == 0, error);
+        using var classical = new ClassicalHitSearch();
+        var expected = SceneRenderer.Render(Load("qornell-8.json"), classical, new RenderOptions(6, 4)).Image;
+        Assert.Equal(expected.Pixels.ToArray(), Decode(output).Pixels.ToArray());
+    }
+
+    [Fact]
+    public void SceneIsRenderedAtSubpixelsTimesTheSize()
+    {
+        var output = Scratch("s.png");
+        Assert.Equal(0, Run("supersample", "--scene", Scene, "--size", "5x3", "--subpixels", "3", "-m", "mc", "-o", output).Code);
+        Assert.Equal((5, 3), (Decode(output).Width, Decode(output).Height));
+        Assert.Equal(0, Run("supersample", "--size", "2", "--subpixels", "2", "-m", "mlae", "-o", Scratch("builtin.png")).Code);
+        Assert.Equal(2, Decode(Scratch("builtin.png")).Width);
+    }
+
+    [Theory]
+    [InlineData("mc")]
+    [InlineData("qcoin")]
+    [InlineData("mlae")]
+    [InlineData("qss")]
+    public void SameSeedGivesTheSameBytes(string method)
+    {
+        var input = WriteImage("in.png", 12, 8, (x, y) => ((byte)(x * 20 + y), (byte)(100 + x * y), (byte)(255 - 9 * y)));
+        string[] Args(string output, string seed) => ["supersample", "--image", input, "-m", method, "--subpixels", "4", "--seed", seed, "-o", Scratch(output)];
+        Assert.Equal(0, Run(Args("a.png", "7")).Code);
+        Assert.Equal(0, Run(Args("b.png", "7")).Code);
+        Assert.Equal(0, Run(Args("c.png", "8")).Code);
+        Assert.Equal(File.ReadAllBytes(Scratch("a.png")), File.ReadAllBytes(Scratch("b.png")));
+        Assert.NotEqual(File.ReadAllBytes(Scratch("a.png")), File.ReadAllBytes(Scratch("c.png")));
+    }
+
+    [Fact]
+    public void ImageNotAMultipleOfTheSubpixelsIsRefused()
+    {
+        var input = WriteImage("in.png", 6, 8, (_, _) => (1, 2, 3));
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "4", "-o", Scratch("out.png"));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal($"error: {input}: 6x8 is not a multiple of --subpixels 4 on both sides (4x4 subpixels per output pixel); crop it to 4x8", error.Trim());
+        Assert.Equal(["in.png"], Files());
+    }
+
+    [Fact]
+    public void DamagedImageIsOneErrorLineNamingTheFile()
+    {
+        var input = Scratch("bad.png");
+        File.WriteAllText(input, "not an image");
+        var (code, error) = Run("supersample", "--image", input, "-o", Scratch("out.png"));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Single(error.Trim().Split('\n'));
+        Assert.StartsWith($"error: {input}: not a PNG", error);
+        Assert.Equal(["bad.png"], Files());
+    }
+
+    [Fact]
+    public void MissingImageExitsWithTwo()
+    {
+        var (code, error) = Run("supersample", "--image", Scratch("nowhere.png"), "-o", Scratch("out.png"));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Contains("nowhere.png: no such file", error);
+        Assert.Empty(Files());
+    }
+
+    [Theory]
+    [InlineData("--queries does not apply to --method qss", "-m", "qss", "--queries", "100")]
+    [InlineData("--counter-bits applies to --method qss only", "-m", "mc", "--counter-bits", "4")]
+    [InlineData("--planes applies to --method qss only", "-m", "qcoin", "--planes", "2")]
+    [InlineData("--qss-values applies to --method qss only", "-m", "mlae", "--qss-values", "continuous")]
+    [InlineData("--planes applies to --qss-values planes only", "-m", "qss", "--qss-values", "continuous", "--planes", "4")]
+    [InlineData("--steps applies to --method qcoin only", "-m", "mlae", "--steps", "3")]
+    [InlineData("--levels applies to --method mlae only", "-m", "qcoin", "--levels", "3")]
+    [InlineData("--method qcoin with 6 steps needs at least 133 queries, got 100", "-m", "qcoin", "--steps", "6", "--queries", "100")]
+    [InlineData("--method mlae with --levels 8 needs at least 519 queries, got 240", "-m", "mlae", "--levels", "8")]
+    [InlineData("--size applies to scenes only", "--size", "4")]
+    [InlineData("--subpixels must be at least 1, got 0", "--subpixels", "0")]
+    [InlineData("--subpixels must be at most 16, got 17", "--subpixels", "17")]
+    [InlineData("--queries must be at least 1, got 0", "-m", "mc", "--queries", "0")]
+    [InlineData("--counter-bits must be at most 12, got 13", "--counter-bits", "13")]
+    [InlineData("--planes must be at least 1, got 0", "--planes", "0")]
+    [InlineData("--engine classical is not available here", "--engine", "classical")]
+    [InlineData("--method: 'bogus' is not one of mc, qss, qcoin, mlae", "-m", "bogus")]
+    [InlineData("--engine: 'bogus' is not one of", "-e", "bogus")]
+    [InlineData("--qss-values: '2' is not one of planes, continuous", "--qss-values", "2")]
+    public void ImpossibleCombinationsAreUsageErrors(string message, params string[] options)
+    {
+        var input = WriteImage("in.png", 4, 4, (_, _) => (9, 9, 9));
+        var (code, error) = Run(["supersample", "--image", input, .. options, "-o", Scratch("out.png")]);
+        Assert.Equal(1, code);
+        Assert.Contains(message, error);
+        Assert.Single(error.Trim().Split('\n'));
+        Assert.Equal(["in.png"], Files());
+    }
+
+    [Fact]
+    public void ImageAndSceneTogetherAreAUsageError()
+    {
+        var (code, error) = Run("supersample", "--image", Scratch("a.png"), "--scene", Scene, "-o", Scratch("out.png"));
+        Assert.Equal(1, code);
+        Assert.Contains("--image and --scene: give one input, not both", error);
+    }
+
+    [Fact]
+    public void OutputOverTheInputIsRefused()
+    {
+        var input = WriteImage("in.png", 4, 4, (x, y) => ((byte)x, (byte)y, 0));
+        var before = File.ReadAllBytes(input);
+        Assert.Equal(CommandLine.BadInput, Run("supersample", "--image", input, "--subpixels", "2", "-o", input).Code);
+        Assert.Equal(before, File.ReadAllBytes(input));
+        Assert.Equal(["in.png"], Files());
+    }
+
+    [Fact]
+    public void ForeignFileAtTheConfidenceMapStopsEveryOutput()
+    {
+        var input = WriteImage("in.png", 4, 4, (x, y) => ((byte)x, (byte)y, 0));
+        File.WriteAllText(Scratch("out-confidence.png"), "someone else's");
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "2", "-o", Scratch("out.png"));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Contains("out-confidence.png: exists and was not written by this program", error);
+        Assert.Equal("someone else's", File.ReadAllText(Scratch("out-confidence.png")));
+        Assert.Equal(["in.png", "out-confidence.png"], Files());
+    }
+
+    [Fact]
+    public void FullStateAboveThePixelLimitIsRefusedBeforeAnyWork()
+    {
+        var input = WriteImage("in.png", 17, 16, (_, _) => (5, 5, 5));
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "1", "-e", "fullstate", "-o", Scratch("out.png"));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Contains($"at most {SupersampleCommand.MaxFullStatePixels} output pixels", error);
+        Assert.Contains("this input has 272", error);
+        Assert.Equal(["in.png"], Files());
+    }
+
+    [Fact]
+    public void SceneRenderAboveTheLargestSideIsRefused()
+    {
+        var (code, error) = Run("supersample", "--scene", Scene, "--size", "8000", "--subpixels", "2", "-o", Scratch("out.png"));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Contains("16000x16000 render", error);
+        Assert.Empty(Files());
+    }
+}

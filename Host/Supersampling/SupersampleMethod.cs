@@ -1,0 +1,17 @@
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>How `supersample` estimates each pixel's mean.</summary>
+public enum SupersampleMethod
+{
+    /// <summary>Monte Carlo: one flip of the Monte Carlo coin per query.</summary>
+    Mc,
+
+    /// <summary>Quantum supersampling: bit planes through the lookup table, or one run on the continuous values.</summary>
+    Qss,
+
+    /// <summary>QCoin, Algorithm 1 of paper 003.</summary>
+    QCoin,
+
+    /// <summary>Maximum-likelihood amplitude estimation with the exponential schedule.</summary>
+    Mlae,
+}

@@ -1,0 +1,98 @@
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// What `supersample` runs: the method, s (subpixels per side), and each method's own parameters, null where
+/// the user left them to their defaults. <see cref="Problem"/> names any combination that cannot run.
+/// </summary>
+/// <param name="Method">The estimator.</param>
+/// <param name="Side">s: each output pixel averages s x s subpixels.</param>
+/// <param name="Queries">Per pixel and channel, for mc, qcoin and mlae (default <see cref="DefaultQueries"/>); QSS's follow from its counter.</param>
+/// <param name="Steps">QCoin's k (default <see cref="QCoinEstimator.DefaultSteps"/>).</param>
+/// <param name="Levels">MLAE's K (default <see cref="MaximumLikelihoodEstimator.DefaultLevels"/>).</param>
+/// <param name="CounterBits">QSS's t (default: ceil(log2 N) for bit planes, 7 for continuous values).</param>
+/// <param name="Planes">QSS bit planes P (default 8, exact for 8-bit inputs).</param>
+/// <param name="Values">QSS's input: bit planes (default) or continuous values.</param>
+public sealed record SupersampleSettings(
+    SupersampleMethod Method,
+    int Side,
+    long? Queries = null,
+    int? Steps = null,
+    int? Levels = null,
+    int? CounterBits = null,
+    int? Planes = null,
+    QssValues? Values = null)
+{
+    /// <summary>Paper 003's fig. 1 budget.</summary>
+    public const long DefaultQueries = 240;
+
+    public const int DefaultPlanes = 8;
+
+    /// <summary>Paper 003's fig. 1: QSS at 255 queries.</summary>
+    public const int DefaultContinuousCounterBits = 7;
+
+    public int Subpixels => Side * Side;
+
+    public QssValues QssValues => Values ?? QssValues.Planes;
+
+    public long QueriesOrDefault => Queries ?? DefaultQueries;
+
+    public int PlanesOrDefault => Planes ?? DefaultPlanes;
+
+    public int CounterBitsOrDefault => CounterBits ?? (QssValues == QssValues.Continuous
+        ? DefaultContinuousCounterBits
+        : Math.Max(1, (int)Math.Ceiling(Math.Log2(Subpixels))));
+
+    /// <summary>True when QSS reads bit planes through a lookup table (and so gives a confidence map).</summary>
+    public bool UsesLookupTable => Method == SupersampleMethod.Qss && QssValues == QssValues.Planes;
+
+    /// <summary>One line naming the first option combination that cannot run, or null.</summary>
+    public string? Problem()
+    {
+        if (Method != SupersampleMethod.Qss)
+        {
+            if (CounterBits is not null) return "--counter-bits applies to --method qss only";
+            if (Planes is not null) return "--planes applies to --method qss only";
+            if (Values is not null) return "--qss-values applies to --method qss only";
+        }
+        else
+        {
+            if (Queries is not null)
+                return "--queries does not apply to --method qss: a QSS run costs 2^(t+1) − 1 queries, so its count follows from --counter-bits (times --planes for bit planes)";
+            if (QssValues == QssValues.Continuous && Planes is not null) return "--planes applies to --qss-values planes only";
+        }
+        if (Steps is not null && Method != SupersampleMethod.QCoin) return "--steps applies to --method qcoin only";
+        if (Levels is not null && Method != SupersampleMethod.Mlae) return "--levels applies to --method mlae only";
+        var queries = QueriesOrDefault;
+        if (Method == SupersampleMethod.QCoin)
+        {
+            var k = Steps ?? 1;
+            if (queries < QCoinEstimator.MinimumQueries(k))
+                return $"--method qcoin with {k} step{(k == 1 ? "" : "s")} needs at least {QCoinEstimator.MinimumQueries(k)} queries, got {queries}";
+        }
+        if (Method == SupersampleMethod.Mlae && Levels is { } levels && queries < MaximumLikelihoodEstimator.QueriesPerShot(levels))
+            return $"--method mlae with --levels {levels} needs at least {MaximumLikelihoodEstimator.QueriesPerShot(levels)} queries, got {queries}";
+        return null;
+    }
+
+    /// <summary>The estimator these settings describe; bit-plane QSS reads <paramref name="table"/> (N subpixels, t counter bits).</summary>
+    public IMeanEstimator CreateEstimator(QssLookupTable? table = null)
+    {
+        if (Problem() is { } problem) throw new InvalidOperationException(problem);
+        var queries = QueriesOrDefault;
+        return Method switch
+        {
+            SupersampleMethod.Mc => new MonteCarloEstimator(queries),
+            SupersampleMethod.QCoin => new QCoinEstimator(queries, Steps ?? QCoinEstimator.DefaultSteps(queries)),
+            SupersampleMethod.Mlae => new MaximumLikelihoodEstimator(queries, Levels ?? MaximumLikelihoodEstimator.DefaultLevels(queries)),
+            _ when QssValues == QssValues.Continuous => new QssEstimator(CounterBitsOrDefault),
+            _ => new BitPlaneQssEstimator(CheckedTable(table), PlanesOrDefault),
+        };
+    }
+
+    private QssLookupTable CheckedTable(QssLookupTable? table)
+    {
+        if (table is null || table.Subpixels != Subpixels || table.CounterBits != CounterBitsOrDefault)
+            throw new ArgumentException($"bit-plane QSS needs the lookup table for {Subpixels} subpixels and {CounterBitsOrDefault} counter bits", nameof(table));
+        return table;
+    }
+}
