@@ -43,9 +43,12 @@ public sealed class ResourceEstimatorTests(FullStateFixture fixture)
             var what = $"{estimate.Circuit}: estimator {estimate.Logical}, circuit {string.Join(", ", counts.Native.Gates)}";
             // Independent sources: the estimator's counting run, the simulated trace, and OracleRegisters.
             Assert.True(estimate.Logical.Qubits == counts.Qubits, what);
-            Assert.True(estimate.Registers!.Value.PeakQubits == estimate.Logical.Qubits, what);
+            if (estimate.Registers is { } registers) Assert.True(registers.PeakQubits == estimate.Logical.Qubits, what);
             Assert.True(estimate.Logical.Ccz == counts.Native.Gate("CCX") + counts.Native.Gate("CCZ"), what);
-            Assert.True(estimate.Logical.T == counts.Native.Gate("T") + counts.Native.Gate("T†"), what);
+            // Clifford + Toffoli circuits only: with arbitrary rotations (QSS's inverse QFT) the estimator counts
+            // rotations by π/4 as T gates, which the trace keeps as Rz.
+            if (EstimatedCircuits.Ray.Contains(estimate.Circuit))
+                Assert.True(estimate.Logical.T == counts.Native.Gate("T") + counts.Native.Gate("T†"), what);
             Assert.True(estimate.Logical.Measurements == counts.Native.Measurements, what);
             // The CCX expansion adds 14 gates per CCX and keeps every other gate.
             Assert.True(counts.QiskitCcx.GateCount == counts.Native.GateCount + 14 * counts.Native.Gate("CCX"), what);

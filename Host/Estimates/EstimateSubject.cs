@@ -4,10 +4,19 @@ namespace QuantumRayTracing.Estimates;
 
 /// <summary>
 /// What the estimated circuits are built for: one ray's oracle input (its table, window and the
-/// oracle's construction) and the Grover iterations r of a search run. Circuits with other parameters
-/// (supersampling's subpixel and counter bits) add them here.
+/// oracle's construction), the Grover iterations r of a search run, and the supersampling circuits'
+/// subpixel count and QSS counter bits.
 /// </summary>
 /// <param name="Oracle">The ray's oracle input.</param>
 /// <param name="Iterations">r of the QSearch run row.</param>
 /// <param name="Label">Where the ray came from, for tables (e.g. "pixel (40, 7)").</param>
-public sealed record EstimateSubject(OracleInput Oracle, int Iterations, string Label);
+/// <param name="Subpixels">Subpixels of the QSS readout and the QCoin step (the thesis's 4x4 = 16 by default).</param>
+/// <param name="CounterBits">QSS counter register width.</param>
+public sealed record EstimateSubject(OracleInput Oracle, int Iterations, string Label, int Subpixels = 16, int CounterBits = 4)
+{
+    /// <summary>
+    /// The subpixel values the supersampling circuits are estimated for: half lit, alternating 0 and 1.
+    /// Gate counts do not depend on the values, only on their number (each becomes one rotation).
+    /// </summary>
+    public string SubpixelValues => "[" + string.Join(", ", Enumerable.Range(0, Subpixels).Select(k => k % 2 == 0 ? "0.0" : "1.0")) + "]";
+}

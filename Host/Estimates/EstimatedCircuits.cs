@@ -5,8 +5,7 @@ using QuantumRayTracing.Intersection;
 namespace QuantumRayTracing.Estimates;
 
 /// <summary>
-/// Every circuit `qrt estimate` reports, in table order. A new circuit is one more entry here (the
-/// supersampling circuit and the QCoin step will be, once their Q# exists).
+/// Every circuit `qrt estimate` reports, in table order. A new circuit is one more entry here.
 /// </summary>
 public static class EstimatedCircuits
 {
@@ -34,5 +33,24 @@ public static class EstimatedCircuits
         s => OracleRegisters.For(s.Oracle),
         RepeatsIterations: true);
 
-    public static IReadOnlyList<EstimatedCircuit> All { get; } = [Oracle, GroverIteration, SearchRun];
+    private const string Supersampling = "QuantumRayTracing.Supersampling.";
+
+    /// <summary>The QSS circuit: subpixel register in superposition, counter-controlled Grover powers, inverse QFT, measurement.</summary>
+    public static readonly EstimatedCircuit QssReadout = new(
+        "QSS readout",
+        "quantum supersampling: the subpixels in superposition, 2^i coin Grover operators controlled by counter bit i, inverse QFT, measure the counter",
+        s => $"{Supersampling}MeasureQssReadout({s.SubpixelValues}, {s.CounterBits.ToString(CultureInfo.InvariantCulture)})",
+        _ => null);
+
+    /// <summary>One QCoin step: the shifted coin Q_F,E, one Grover operator G_F,E, one flip.</summary>
+    public static readonly EstimatedCircuit QCoinStep = new(
+        "QCoin step",
+        "one QCoin step (i = 1): prepare the shifted coin Q_F,E, apply its Grover operator G_F,E once, flip (measure the coin)",
+        s => $"{Supersampling}CountCoinHeads(true, {s.SubpixelValues}, 1, 1)",
+        _ => null);
+
+    /// <summary>The circuits of one ray, for the oracle's tables and checks.</summary>
+    public static IReadOnlyList<EstimatedCircuit> Ray { get; } = [Oracle, GroverIteration, SearchRun];
+
+    public static IReadOnlyList<EstimatedCircuit> All { get; } = [.. Ray, QssReadout, QCoinStep];
 }
