@@ -53,4 +53,9 @@ public static class PaperNumbers
         ("neighbours", 17.4, 0.003, 16.9, 0.076),
         ("neighbours + termination", 22.1, 0.004, 23.4, 0.075),
     ];
+
+    /// <summary>Sec. 7: Int/Ray of the optimised quantum renderer and of the classical one, area light (Qornell 64, 32 samples) and VPL indirect light (temple, 32 primitives, 4 VPLs).</summary>
+    public static readonly (double Quantum, double Classical) AreaLight = (21.8, 64);
+
+    public static readonly (double Quantum, double Classical) IndirectLight = (22.4, 32);
 }

@@ -19,6 +19,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchRenderCommand());
         Subcommands.Add(new BenchOptimisedCommand());
         Subcommands.Add(new BenchParetoCommand());
+        Subcommands.Add(new BenchLightsCommand());
         Subcommands.Add(new BenchSupersampleCommand());
         Subcommands.Add(new BenchSupersampleImagesCommand());
     }

@@ -69,23 +69,27 @@ public sealed class RayTable
     }
 
     /// <summary>One row of a ray's table: eval-rpc for primitive <paramref name="p"/> alone, O(1).</summary>
+    /// <remarks>Written out per axis, without vector indexers: it runs N times for every ray of every pass.</remarks>
     public static TableRow EvaluateRow(SceneGeometry geometry, Ray ray, int p)
     {
-        var flat = geometry.Rectangles[p].FlatAxis;
-        var along = ray.Direction[flat];
+        var flat = geometry.FlatAxis(p);
+        var (origin, direction) = (ray.Origin, ray.Direction);
+        var along = flat == 0 ? direction.X : flat == 1 ? direction.Y : direction.Z;
         if (p == ray.ExcludedPrimitive || Math.Abs(along) < 1e-12) return default;
-        var t = (geometry.Rectangles[p].PlaneOffset - ray.Origin[flat]) / along;
+        var t = (geometry.PlaneOffset(p) - (flat == 0 ? origin.X : flat == 1 ? origin.Y : origin.Z)) / along;
         if (!(t > SnapTolerance) || t >= ray.MaxDistance) return default;
-        var point = ray.At(t);
+        var scale = geometry.Scale;
         var limit = 1 << geometry.Grid.Bits;
-        Span<int> q = stackalloc int[3];
-        for (var axis = 0; axis < 3; axis++)
-        {
-            q[axis] = axis == flat ? geometry.Min(p, axis) : Quantise(point[axis], geometry.Scale);
-            if (q[axis] < 0 || q[axis] >= limit) return default;
-        }
-        var depth = Quantise(t * Math.Abs(ray.Direction[ray.PrincipalAxis]), geometry.Scale);
-        return depth < 0 ? default : new TableRow(true, q[0], q[1], q[2], depth, t);
+        var x = flat == 0 ? geometry.Min(p, 0) : Quantise(origin.X + t * direction.X, scale);
+        if (x < 0 || x >= limit) return default;
+        var y = flat == 1 ? geometry.Min(p, 1) : Quantise(origin.Y + t * direction.Y, scale);
+        if (y < 0 || y >= limit) return default;
+        var z = flat == 2 ? geometry.Min(p, 2) : Quantise(origin.Z + t * direction.Z, scale);
+        if (z < 0 || z >= limit) return default;
+        // |direction| along the principal axis is the largest absolute component.
+        var principal = Math.Max(Math.Abs(direction.X), Math.Max(Math.Abs(direction.Y), Math.Abs(direction.Z)));
+        var depth = Quantise(t * principal, scale);
+        return depth < 0 ? default : new TableRow(true, x, y, z, depth, t);
     }
 
     /// <summary>

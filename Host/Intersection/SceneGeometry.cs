@@ -17,6 +17,8 @@ public sealed class SceneGeometry
 {
     private readonly int[] _min;
     private readonly int[] _max;
+    private readonly int[] _flat;
+    private readonly double[] _plane;
 
     public SceneGeometry(Scene scene)
     {
@@ -26,6 +28,8 @@ public sealed class SceneGeometry
         Count = scene.Rectangles.Count;
         _min = new int[Count * 3];
         _max = new int[Count * 3];
+        _flat = scene.Rectangles.Select(r => r.FlatAxis).ToArray();
+        _plane = scene.Rectangles.Select(r => r.PlaneOffset).ToArray();
         for (var p = 0; p < Count; p++)
             for (var axis = 0; axis < 3; axis++)
             {
@@ -44,6 +48,12 @@ public sealed class SceneGeometry
 
     /// <summary>Qubits of the index register: ceil(log2 N).</summary>
     public int IndexBits => SearchRegisters.For(Count).IndexQubits;
+
+    /// <summary>The axis of primitive <paramref name="p"/>'s plane normal (kept in an array: eval-rpc reads it for every row).</summary>
+    public int FlatAxis(int p) => _flat[p];
+
+    /// <summary>The world coordinate of primitive <paramref name="p"/>'s plane along its flat axis.</summary>
+    public double PlaneOffset(int p) => _plane[p];
 
     /// <summary>Fixed-point minimum of primitive <paramref name="p"/> along <paramref name="axis"/>.</summary>
     public int Min(int p, int axis) => _min[p * 3 + axis];

@@ -11,7 +11,7 @@ public static class TempleScene
 {
     public const int Primitives = 32;
 
-    // Interior: x 0..16, y 0..12, z 10..30; the hole spans x 6..10, z 19..23 in the ceiling (y = 12).
+    // Interior: x 0..16, y 0..12, z 10..30; the hole spans x 5..11, z 17..23 in the ceiling (y = 12).
     private const int Height = 12;
     private const int Front = 10;
 
@@ -25,18 +25,18 @@ public static class TempleScene
             .Material("filler", 0.5, 0.5, 0.5)
             .Camera([8, 5.5, 11], [8, 3.5, 30], 65)
             .Ambient(0)
-            // Travelling down, towards +z and −x: the sunlit patch falls on the floor left of the altar and on the altar's corner.
-            .DirectionalLight([-0.3, -1, 0.25], 3);
+            // Travelling down, towards +z and −x: the sunlit patch falls on the floor left of the altar and up the left wall.
+            .DirectionalLight([-0.5, -1, 0.3], 3);
 
         scene.Rectangle([0, 0, Front], [16, 0, 30], "stone")             // floor
             .Rectangle([0, 0, 30], [16, Height, 30], "wall")              // back
             .Rectangle([0, 0, Front], [0, Height, 30], "wall")            // left
             .Rectangle([16, 0, Front], [16, Height, 30], "wall")          // right
             .Rectangle([0, 0, Front], [16, Height, Front], "wall")        // front, behind the camera
-            .Rectangle([0, Height, Front], [16, Height, 19], "stone")     // ceiling around the hole
+            .Rectangle([0, Height, Front], [16, Height, 17], "stone")     // ceiling around the hole
             .Rectangle([0, Height, 23], [16, Height, 30], "stone")
-            .Rectangle([0, Height, 19], [6, Height, 23], "stone")
-            .Rectangle([10, Height, 19], [16, Height, 23], "stone");
+            .Rectangle([0, Height, 17], [5, Height, 23], "stone")
+            .Rectangle([11, Height, 17], [16, Height, 23], "stone");
 
         // Four square pillars from floor to ceiling, four faces each.
         foreach (var (x, z) in new[] { (2, 18), (12, 18), (2, 26), (12, 26) })
