@@ -17,9 +17,9 @@ namespace QuantumRayTracing.Tests.Cli;
 /// the planes' hit-count estimates), and the image's mean error must lie within 5.73 standard deviations of it
 /// (two-sided, false-failure probability 1e-8 under the normal approximation of a mean of 3072 independent
 /// bounded errors; the standard deviation is also exact). QCoin and MLAE have no closed form: their mean error
-/// must stay below 0.8 and 0.7 times Monte Carlo's exact expected error (the targets are 0.70 and 0.55
+/// must stay below 0.8 and 0.6 times Monte Carlo's exact expected error (the targets are 0.70 and 0.55
 /// times Monte Carlo's error at 240 queries, before 8-bit rounding). Over seeds 1-8 this image gave ratios of
-/// 0.66 ± 0.011 and 0.52 ± 0.02 (mean ± sd), so the bounds sit 12 and 9 standard deviations above.
+/// 0.66 ± 0.011 and 0.516 ± 0.006 (mean ± sd), so the bounds sit 12 and 13 standard deviations above.
 /// </remarks>
 public sealed class SupersampleErrorTests : IDisposable
 {
@@ -146,7 +146,7 @@ public sealed class SupersampleErrorTests : IDisposable
 
     [Theory]
     [InlineData("qcoin", 0.8)]
-    [InlineData("mlae", 0.7)]
+    [InlineData("mlae", 0.6)]
     public void QuantumEstimatorsBeatMonteCarloByTheTargetMargin(string method, double ratio)
     {
         var observed = ObservedErrors(method).Average();

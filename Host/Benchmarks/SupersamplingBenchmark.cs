@@ -38,8 +38,10 @@ public static class SupersamplingBenchmark
             Run(new MonteCarloEstimator(q), "mc", 0);
             for (var k = 1; k <= 7; k++)
                 if (q >= QCoinEstimator.MinimumQueries(k)) Run(new QCoinEstimator(q, k), "qcoin", k);
+            for (var levels = 0; levels <= 14; levels++)
+                if (q >= MlaeSchedule.Default.QueriesPerShot(levels)) Run(new MaximumLikelihoodEstimator(q, levels), "mlae", levels);
             for (var levels = 0; levels <= 10; levels++)
-                if (q >= MaximumLikelihoodEstimator.QueriesPerShot(levels)) Run(new MaximumLikelihoodEstimator(q, levels), "mlae", levels);
+                if (q >= MlaeSchedule.Doubling.QueriesPerShot(levels)) Run(new MaximumLikelihoodEstimator(q, levels, MlaeSchedule.Doubling), "mlae-doubling", levels);
         }
         for (var t = 4; t <= 11; t++) Run(new QssEstimator(t), "qss", t);
         return points;

@@ -45,20 +45,26 @@ public sealed class BenchSupersampleCommand : Command
         var body = new StringBuilder();
         body.AppendLine().AppendLine("# Supersampling results").AppendLine();
         body.AppendLine(CultureInfo.InvariantCulture, $"Mean absolute error over {trials} uniform random means f (one subpixel of value f; the analytic engine samples the exact outcome distributions, and the tests show the fullstate engine agrees with them). Queries per DESIGN.md §5: a coin flip 1, a Grover operator 2, QSS 2^(t+1) − 1. Seed {parse.GetValue(_seed)}.").AppendLine();
-        body.AppendLine("| queries | MC | QCoin k=3 | k=4 | k=5 | k=6 | QCoin best (k) | MLAE default (K) | MLAE best (K) |");
-        body.AppendLine("|---|---|---|---|---|---|---|---|---|");
+        body.AppendLine("MLAE: the default schedule (m = 0, 1, 2, 3, 5, 8, … growing by 1.5, m = 0 and 1 with twice the flips, K the largest with ≥ 8 flips per level)");
+        body.AppendLine("and Suzuki et al.'s doubling schedule (m = 0, 1, 2, 4, …, equal flips, K the largest with ≥ 12 flips per level).").AppendLine();
+        body.AppendLine("| queries | MC | QCoin k=3 | k=4 | k=5 | k=6 | QCoin best (k) | MLAE default (K) | MLAE best (K) | MLAE doubling, default (K) | doubling, best (K) |");
+        body.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|");
         var bestQ = SupersamplingBenchmark.Best(points, "qcoin");
         var bestM = SupersamplingBenchmark.Best(points, "mlae");
+        var bestD = SupersamplingBenchmark.Best(points, "mlae-doubling");
         var defaults = new List<SupersamplingBenchmark.Point>();
+        var doublingDefaults = new List<SupersamplingBenchmark.Point>();
         foreach (var q in SupersamplingBenchmark.QueryLevels)
         {
             string Cell(string m, int k) => points.FirstOrDefault(p => p.Method == m && p.Parameter == k && p.Queries == q) is { } p ? p.MeanError.ToString("0.00000", CultureInfo.InvariantCulture) : "–";
             var bq = bestQ.First(p => p.Queries == q);
             var bm = bestM.First(p => p.Queries == q);
-            var defaultLevels = MaximumLikelihoodEstimator.DefaultLevels(q);
-            var dm = points.First(p => p.Method == "mlae" && p.Parameter == defaultLevels && p.Queries == q);
+            var bd = bestD.First(p => p.Queries == q);
+            var dm = points.First(p => p.Method == "mlae" && p.Parameter == MlaeSchedule.Default.DefaultLevels(q) && p.Queries == q);
+            var dd = points.First(p => p.Method == "mlae-doubling" && p.Parameter == MlaeSchedule.Doubling.DefaultLevels(q) && p.Queries == q);
             defaults.Add(dm);
-            body.AppendLine(CultureInfo.InvariantCulture, $"| {q} | {Cell("mc", 0)} | {Cell("qcoin", 3)} | {Cell("qcoin", 4)} | {Cell("qcoin", 5)} | {Cell("qcoin", 6)} | {bq.MeanError:0.00000} ({bq.Parameter}) | {dm.MeanError:0.00000} ({dm.Parameter}) | {bm.MeanError:0.00000} ({bm.Parameter}) |");
+            doublingDefaults.Add(dd);
+            body.AppendLine(CultureInfo.InvariantCulture, $"| {q} | {Cell("mc", 0)} | {Cell("qcoin", 3)} | {Cell("qcoin", 4)} | {Cell("qcoin", 5)} | {Cell("qcoin", 6)} | {bq.MeanError:0.00000} ({bq.Parameter}) | {dm.MeanError:0.00000} ({dm.Parameter}) | {bm.MeanError:0.00000} ({bm.Parameter}) | {dd.MeanError:0.00000} ({dd.Parameter}) | {bd.MeanError:0.00000} ({bd.Parameter}) |");
         }
         body.AppendLine().AppendLine("QSS for continuous values, estimate sin²(πy/2^t):").AppendLine();
         body.AppendLine("| counter bits t | queries | mean abs error |").AppendLine("|---|---|---|");
@@ -68,7 +74,8 @@ public sealed class BenchSupersampleCommand : Command
         body.AppendLine("| series | 240..3200 | 60..3200 |").AppendLine("|---|---|---|");
         foreach (var (name, series) in new (string, IEnumerable<SupersamplingBenchmark.Point>)[]
         {
-            ("MC", points.Where(p => p.Method == "mc")), ("QCoin best k", bestQ), ("MLAE default K", defaults), ("MLAE best K", bestM), ("QSS", points.Where(p => p.Method == "qss")),
+            ("MC", points.Where(p => p.Method == "mc")), ("QCoin best k", bestQ), ("MLAE default K", defaults), ("MLAE best K", bestM),
+            ("MLAE doubling, default K", doublingDefaults), ("MLAE doubling, best K", bestD), ("QSS", points.Where(p => p.Method == "qss")),
         })
             body.AppendLine(CultureInfo.InvariantCulture, $"| {name} | {SupersamplingBenchmark.Slope(series, 240, 3200):0.000} | {SupersamplingBenchmark.Slope(series, 60, 3200):0.000} |");
 
@@ -98,7 +105,7 @@ public sealed class BenchSupersampleCommand : Command
             [
                 (Plot("Mean absolute error against queries", [
                     Series("MC", mc, 240, 3200), Series("QSS (continuous)", qss, 255, 2047), Series("QCoin, best k", bestQ, 240, 3200),
-                    Series("MLAE, default K", defaults, 240, 3200), Series("MLAE, best K", bestM, 240, 3200)]), plotPaths[0]),
+                    Series("MLAE, default K", defaults, 240, 3200), Series("MLAE doubling, default K", doublingDefaults, 240, 3200)]), plotPaths[0]),
                 (Plot("QCoin by number of steps k", [
                     Series("MC", mc, 240, 3200), .. Enumerable.Range(3, 4).Select(k => Series($"QCoin k = {k}", points.Where(p => p.Method == "qcoin" && p.Parameter == k).ToList())),
                     Series("QCoin, best k", bestQ, 240, 3200)]), plotPaths[1]),

@@ -68,7 +68,7 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<int?> _levels = new("--levels")
     {
-        Description = "mlae: amplified levels K (m = 1, 2, ..., 2^(K-1) besides m = 0). Default: the largest with at least 12 flips per level.",
+        Description = "mlae: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
     };
 
     private readonly Option<int?> _counterBits = new("--counter-bits", "-t")

@@ -1,65 +1,64 @@
 namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
-/// Maximum-likelihood amplitude estimation with the exponential schedule (Suzuki et al. 2020) on the mean
-/// coin and its Grover operator: the coin is flipped N times after each of m = 0, 1, 2, 4, …, 2^(K−1)
-/// Grover operators, and θ maximises Π_m sin²((2m+1)θ)^h_m cos²((2m+1)θ)^(N−h_m) over [0, π/2];
-/// the estimate is sin²θ. All levels are independent, so the whole estimate is one engine batch.
+/// Maximum-likelihood amplitude estimation (Suzuki et al. 2020) on the mean coin and its Grover operator: the coin
+/// is flipped after each level's m Grover operators (<see cref="MlaeSchedule"/>: by default m = 0, 1, 2, 3, 5, 8, …),
+/// and θ maximises Π_m sin²((2m+1)θ)^h_m cos²((2m+1)θ)^(n_m−h_m) over [0, π/2]; the estimate is sin²θ. All levels
+/// are independent, so the whole estimate is one engine batch.
 /// </summary>
 /// <remarks>
-/// Queries: level m costs N(1 + 2m); N is the largest count the budget allows, and the m = 0 level takes
-/// what is left over. The likelihood is searched on a grid finer than its narrowest peak (width ~π/(2m+1)),
-/// then refined by golden section around the best grid point. No heads anywhere gives θ = 0 and heads
-/// everywhere θ = π/2 exactly, so f = 0 and f = 1 are exact.
+/// Queries: level m costs n_m(1 + 2m); N, the flips per unit weight, is the largest the budget allows, and the m = 0
+/// level takes what is left over. The likelihood is searched on a grid finer than its narrowest peak (width ~π/(2m+1)),
+/// then refined by golden section around the best grid point. No heads anywhere gives θ = 0 and heads everywhere
+/// θ = π/2 exactly, so f = 0 and f = 1 are exact.
 /// </remarks>
 public sealed class MaximumLikelihoodEstimator : IMeanEstimator
 {
-    public MaximumLikelihoodEstimator(long queries, int levels)
+    public MaximumLikelihoodEstimator(long queries, int levels, MlaeSchedule? schedule = null)
     {
-        if (levels < 0 || levels > 20) throw new ArgumentOutOfRangeException(nameof(levels), levels, "MLAE takes 0 to 20 amplified levels");
-        var perShot = QueriesPerShot(levels);
+        Schedule = schedule ?? MlaeSchedule.Default;
+        Iterations = Schedule.Iterations(levels);
+        var perShot = Schedule.QueriesPerShot(levels);
         if (queries < perShot || queries > int.MaxValue)
             throw new ArgumentOutOfRangeException(nameof(queries), queries, $"MLAE with K = {levels} needs at least {perShot} queries");
         Levels = levels;
         Queries = queries;
         Shots = (int)(queries / perShot);
-        Iterations = [0, .. Enumerable.Range(0, levels).Select(j => 1 << j)];
+        Flips = Iterations.Select((_, i) => Schedule.Weight(i, levels) * Shots).ToArray();
+        Flips[0] += (int)(queries - perShot * Shots);
     }
 
-    /// <summary>Queries of one flip at every level: Σ (1 + 2m) = K + 1 + 2(2^K − 1).</summary>
-    public static long QueriesPerShot(int levels) => levels + 1 + 2 * ((1L << levels) - 1);
+    /// <summary>The default K for a budget under the default schedule (<see cref="MlaeSchedule.DefaultLevels"/>).</summary>
+    public static int DefaultLevels(long queries) => MlaeSchedule.Default.DefaultLevels(queries);
 
-    /// <summary>
-    /// The default K for a budget: the largest with at least <paramref name="minimumShots"/> flips per level.
-    /// Fewer flips leave the likelihood's side peaks unresolved (error-vs-queries experiment, docs/supersampling.md).
-    /// </summary>
-    public static int DefaultLevels(long queries, int minimumShots = 12)
-    {
-        var levels = 0;
-        while (levels < 20 && queries / QueriesPerShot(levels + 1) >= minimumShots) levels++;
-        return levels;
-    }
+    /// <summary>The fewest queries K levels of the default schedule can run on.</summary>
+    public static long QueriesPerShot(int levels) => MlaeSchedule.Default.QueriesPerShot(levels);
+
+    public MlaeSchedule Schedule { get; }
 
     public int Levels { get; }
 
-    /// <summary>N, flips per level.</summary>
+    /// <summary>N, flips per unit weight.</summary>
     public int Shots { get; }
 
+    /// <summary>Grover operators m of each level.</summary>
     public int[] Iterations { get; }
 
-    public string Name => $"mlae (K = {Levels})";
+    /// <summary>Flips of each level; they spend exactly <see cref="Queries"/>.</summary>
+    public int[] Flips { get; }
+
+    public string Name => Schedule == MlaeSchedule.Default ? $"mlae (K = {Levels})" : $"mlae, ratio {Schedule.Ratio} (K = {Levels})";
 
     public long Queries { get; }
 
     public IReadOnlyList<double> Estimate(IReadOnlyList<double[]> values, ISupersamplingEngine engine)
     {
         foreach (var v in values) SubpixelValues.Check(v);
-        var firstShots = (int)(Queries - (QueriesPerShot(Levels) - 1) * Shots);
         var requests = new List<CoinRequest>();
         foreach (var v in values)
         {
             var amplitudes = SubpixelValues.MeanCoin(v);
-            foreach (var m in Iterations) requests.Add(new CoinRequest(CoinKind.Mean, amplitudes, m, m == 0 ? firstShots : Shots));
+            for (var l = 0; l < Iterations.Length; l++) requests.Add(new CoinRequest(CoinKind.Mean, amplitudes, Iterations[l], Flips[l]));
         }
         var heads = engine.FlipCoins(requests);
         var estimates = new double[values.Count];
