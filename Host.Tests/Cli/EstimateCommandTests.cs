@@ -10,9 +10,9 @@ public sealed class EstimateCommandTests : IDisposable
 {
     private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
 
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-estimate-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-estimate-");
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
     [Fact]
     public void EstimatesOnePixelsRay() =>
@@ -39,7 +39,7 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void SweepWritesItsReportWithThePapersFigure()
     {
-        var output = Path.Combine(_scratch, "estimates.md");
+        var output = Path.Combine(_scratch.Path, "estimates.md");
         Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
         var lines = File.ReadAllLines(output);
         Assert.Equal(GeneratedReport.MarkdownMarker(EstimateSweepCommand.CommandLine), lines[0]);
@@ -49,7 +49,7 @@ public sealed class EstimateCommandTests : IDisposable
         Assert.Equal(["2"], DataRows(lines, "## The oracle against the coordinate bits"));
         // Every plot the report shows is a PNG beside it (none when the build has no plot writer).
         foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
-            Assert.Equal(800, Output.PngTestDecoder.Decode(File.ReadAllBytes(Path.Combine(_scratch, png))).Image.Width);
+            Assert.Equal(800, Output.PngTestDecoder.Decode(File.ReadAllBytes(Path.Combine(_scratch.Path, png))).Image.Width);
         // Regenerating replaces the file this command wrote.
         Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
         Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));
@@ -68,7 +68,7 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void SweepRefusesToReplaceAFileItDidNotWrite()
     {
-        var output = Path.Combine(_scratch, "notes.md");
+        var output = Path.Combine(_scratch.Path, "notes.md");
         File.WriteAllText(output, "# my notes\n");
         Assert.Equal(CommandLine.BadInput, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]));
         Assert.Equal("# my notes\n", File.ReadAllText(output));

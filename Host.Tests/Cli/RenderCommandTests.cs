@@ -12,13 +12,13 @@ public sealed class RenderCommandTests : IDisposable
 {
     private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
 
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-render-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-render-");
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
-    private string Scratch(string name) => Path.Combine(_scratch, name);
+    private string Scratch(string name) => _scratch.File(name);
 
-    private string[] Files() => Directory.GetFiles(_scratch).Select(Path.GetFileName).Order().ToArray()!;
+    private string[] Files() => Directory.GetFiles(_scratch.Path).Select(Path.GetFileName).Order().ToArray()!;
 
     private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
 
@@ -99,9 +99,9 @@ public sealed class RenderCommandTests : IDisposable
     [Fact]
     public void MissingDirectoryIsRefusedBeforeRendering()
     {
-        var output = Path.Combine(_scratch, "missing", "x.png");
+        var output = Path.Combine(_scratch.Path, "missing", "x.png");
         Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
-        Assert.False(Directory.Exists(Path.Combine(_scratch, "missing")));
+        Assert.False(Directory.Exists(Path.Combine(_scratch.Path, "missing")));
         Assert.Empty(Files());
     }
 

@@ -13,13 +13,13 @@ public sealed class RenderLightsCommandTests : IDisposable
     private static readonly string AreaScene = Path.Combine(RepositoryPaths.Scenes, "qornell-64-area.json");
     private static readonly string TempleScene = Path.Combine(RepositoryPaths.Scenes, "temple-32.json");
 
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-lights-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-lights-");
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
-    private string Scratch(string name) => Path.Combine(_scratch, name);
+    private string Scratch(string name) => _scratch.File(name);
 
-    private string[] Files() => Directory.GetFiles(_scratch).Select(Path.GetFileName).Order().ToArray()!;
+    private string[] Files() => Directory.GetFiles(_scratch.Path).Select(Path.GetFileName).Order().ToArray()!;
 
     private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
 

@@ -15,13 +15,13 @@ public sealed class SupersampleCommandTests : IDisposable
 {
     private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
 
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-supersample-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-supersample-");
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
-    private string Scratch(string name) => Path.Combine(_scratch, name);
+    private string Scratch(string name) => _scratch.File(name);
 
-    private string[] Files() => Directory.GetFiles(_scratch).Select(Path.GetFileName).Order().ToArray()!;
+    private string[] Files() => Directory.GetFiles(_scratch.Path).Select(Path.GetFileName).Order().ToArray()!;
 
     private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
 

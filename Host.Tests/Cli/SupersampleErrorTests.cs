@@ -26,7 +26,7 @@ public sealed class SupersampleErrorTests : IDisposable
     private const int Side = 4, Subpixels = Side * Side, Width = 32, Height = 32, Queries = 240;
     private static readonly double Z = Normal.InvCDF(0, 1, 1 - StatisticalBounds.FalseFailure / 2);
 
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-supersample-error-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-supersample-error-");
     private readonly int[][] _levels; // [item = 3·pixel + channel][subpixel]
     private readonly string _input;
 
@@ -47,11 +47,11 @@ public sealed class SupersampleErrorTests : IDisposable
                     var item = 3 * (py * Width + px);
                     image.SetPixel(px * Side + i % Side, py * Side + i / Side, (byte)_levels[item][i], (byte)_levels[item + 1][i], (byte)_levels[item + 2][i]);
                 }
-        _input = Path.Combine(_scratch, "synthetic.png");
+        _input = Path.Combine(_scratch.Path, "synthetic.png");
         PngEncoder.Write(image, _input);
     }
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
     private double Mean(int item) => _levels[item].Sum() / (255.0 * Subpixels);
 
@@ -60,7 +60,7 @@ public sealed class SupersampleErrorTests : IDisposable
 
     private double[] ObservedErrors(string method, params string[] extra)
     {
-        var output = Path.Combine(_scratch, $"{method}-{extra.Length}.png");
+        var output = Path.Combine(_scratch.Path, $"{method}-{extra.Length}.png");
         var (code, error) = ConsoleCapture.Run(["supersample", "--image", _input, "--subpixels", $"{Side}", "-m", method, .. extra, "--seed", "5", "-o", output]);
         Assert.True(code == 0, error);
         var pixels = PngTestDecoder.Decode(File.ReadAllBytes(output)).Image.Pixels.ToArray();

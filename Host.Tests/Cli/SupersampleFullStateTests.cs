@@ -8,9 +8,9 @@ namespace QuantumRayTracing.Tests.Cli;
 [Collection(QSharpCollection.Name)]
 public sealed class SupersampleFullStateTests : IDisposable
 {
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-supersample-fullstate-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-supersample-fullstate-");
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
     [Theory]
     [InlineData("qss", "--planes", "1")]
@@ -22,8 +22,8 @@ public sealed class SupersampleFullStateTests : IDisposable
         for (var y = 0; y < 2; y++)
             for (var x = 0; x < 4; x++)
                 image.SetPixel(x, y, x < 2 ? (byte)255 : (byte)0, 0, x >= 2 ? (byte)255 : (byte)0);
-        var input = Path.Combine(_scratch, "in.png");
-        var output = Path.Combine(_scratch, "out.png");
+        var input = Path.Combine(_scratch.Path, "in.png");
+        var output = Path.Combine(_scratch.Path, "out.png");
         PngEncoder.Write(image, input);
         var (code, error) = ConsoleCapture.Run(["supersample", "--image", input, "--subpixels", "2", "-m", method, .. extra, "-e", "fullstate", "--workers", "1", "-o", output]);
         Assert.True(code == 0, error);

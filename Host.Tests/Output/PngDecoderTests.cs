@@ -12,9 +12,9 @@ public sealed class PngDecoderTests : IDisposable
 {
     private const string Name = "in.png";
 
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-png-decoder-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-png-decoder-");
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 
     [Theory]
     [InlineData(1, 1)]
@@ -37,7 +37,7 @@ public sealed class PngDecoderTests : IDisposable
     [Fact]
     public void ReadsAFileWrittenByTheEncoder()
     {
-        var path = Path.Combine(_scratch, "x.png");
+        var path = Path.Combine(_scratch.Path, "x.png");
         var image = RgbImage.FromLinear(9, 4, (x, y) => (x / 8.0, y / 3.0, 0.5));
         PngEncoder.Write(image, path);
         Assert.Equal(image.Pixels.ToArray(), PngDecoder.Read(path).Pixels.ToArray());
@@ -195,9 +195,9 @@ public sealed class PngDecoderTests : IDisposable
     [Fact]
     public void MissingFileAndDirectoryAreUserErrors()
     {
-        var missing = Path.Combine(_scratch, "nowhere.png");
+        var missing = Path.Combine(_scratch.Path, "nowhere.png");
         Assert.Equal($"{missing}: no such file", Assert.Throws<UserError>(() => PngDecoder.Read(missing)).Message);
-        Assert.StartsWith(_scratch + ": ", Assert.Throws<UserError>(() => PngDecoder.Read(_scratch)).Message);
+        Assert.StartsWith(_scratch.Path + ": ", Assert.Throws<UserError>(() => PngDecoder.Read(_scratch.Path)).Message);
     }
 
     private static int Grey(int sample, int depth) => depth switch

@@ -5,7 +5,7 @@ namespace QuantumRayTracing.Tests.Output;
 
 public sealed class PngEncoderTests : IDisposable
 {
-    private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-png-").FullName;
+    private readonly ScratchDirectory _scratch = new("qrt-png-");
 
     public static TheoryData<string> ImageNames => new(Images.Keys);
 
@@ -32,7 +32,7 @@ public sealed class PngEncoderTests : IDisposable
     public async Task NodeDecodesTheSamePixels(string name)
     {
         var image = Images[name]();
-        var path = Path.Combine(_scratch, "node.png");
+        var path = Path.Combine(_scratch.Path, "node.png");
         PngEncoder.Write(image, path);
         var decoded = await NodePngDecoder.DecodeAsync(path);
         AssertSamePixels(image, decoded.Width, decoded.Height, decoded.Rgb);
@@ -98,16 +98,16 @@ public sealed class PngEncoderTests : IDisposable
     public void WriteLeavesOnlyTheFinishedFile()
     {
         var image = Noise(5, 4, seed: 3);
-        var path = Path.Combine(_scratch, "image.png");
+        var path = Path.Combine(_scratch.Path, "image.png");
         PngEncoder.Write(image, path);
         Assert.Equal(PngEncoder.Encode(image), File.ReadAllBytes(path));
-        Assert.Equal([path], Directory.GetFiles(_scratch));
+        Assert.Equal([path], Directory.GetFiles(_scratch.Path));
     }
 
     [Fact]
     public void WriteReplacesAnExistingFileByRenameNotInPlace()
     {
-        var path = Path.Combine(_scratch, "image.png");
+        var path = Path.Combine(_scratch.Path, "image.png");
         File.WriteAllText(path, "old contents");
         // A reader holding the old file keeps seeing the old contents only if the new file was renamed over it;
         // writing in place would change what this handle reads.
@@ -118,36 +118,36 @@ public sealed class PngEncoderTests : IDisposable
 
         Assert.Equal("old contents", new StreamReader(reader).ReadToEnd());
         Assert.Equal(PngEncoder.Encode(image), File.ReadAllBytes(path));
-        Assert.Equal([path], Directory.GetFiles(_scratch));
+        Assert.Equal([path], Directory.GetFiles(_scratch.Path));
     }
 
     [Fact]
     public void WriteIntoAMissingDirectoryThrowsAndLeavesNothing()
     {
-        var missing = Path.Combine(_scratch, "no-such-directory");
+        var missing = Path.Combine(_scratch.Path, "no-such-directory");
         Assert.Throws<DirectoryNotFoundException>(() => PngEncoder.Write(new RgbImage(2, 2), Path.Combine(missing, "image.png")));
         Assert.False(Directory.Exists(missing));
-        Assert.Empty(Directory.EnumerateFileSystemEntries(_scratch));
+        Assert.Empty(Directory.EnumerateFileSystemEntries(_scratch.Path));
     }
 
     [Fact]
     public void FailedRenameRemovesTheTemporaryFile()
     {
         // The target is a directory, so the temporary file is written but cannot be renamed over it.
-        var path = Path.Combine(_scratch, "taken");
+        var path = Path.Combine(_scratch.Path, "taken");
         Directory.CreateDirectory(path);
         Assert.ThrowsAny<IOException>(() => PngEncoder.Write(new RgbImage(2, 2), path));
-        Assert.Equal([path], Directory.GetFileSystemEntries(_scratch));
+        Assert.Equal([path], Directory.GetFileSystemEntries(_scratch.Path));
     }
 
     [Fact]
     public void LeavesAFileNamedLikeATemporaryOneAlone()
     {
-        var path = Path.Combine(_scratch, "x.png");
+        var path = Path.Combine(_scratch.Path, "x.png");
         File.WriteAllText(path + ".tmp", "the user's notes");
         PngEncoder.Write(new RgbImage(2, 2), path);
         Assert.Equal("the user's notes", File.ReadAllText(path + ".tmp"));
-        Assert.Equal(2, Directory.GetFileSystemEntries(_scratch).Length);
+        Assert.Equal(2, Directory.GetFileSystemEntries(_scratch.Path).Length);
     }
 
     private static void AssertSamePixels(RgbImage expected, int width, int height, byte[] rgb)
@@ -182,5 +182,5 @@ public sealed class PngEncoderTests : IDisposable
         return image;
     }
 
-    public void Dispose() => Directory.Delete(_scratch, recursive: true);
+    public void Dispose() => _scratch.Dispose();
 }

@@ -99,12 +99,14 @@ public sealed class RayTable
     public static TableRow? Test(SceneGeometry geometry, Ray ray, int p, HitWindow window)
     {
         var row = EvaluateRow(geometry, ray, p);
-        if (!row.Valid || !window.Accepts(row.Depth, p)) return null;
-        Span<int> q = [row.X, row.Y, row.Z];
-        for (var axis = 0; axis < 3; axis++)
-            if (q[axis] < geometry.Min(p, axis) || q[axis] > geometry.Max(p, axis)) return null;
-        return row;
+        return row.Valid && window.Accepts(row.Depth, p) && Inside(geometry, p, row.X, row.Y, row.Z) ? row : null;
     }
+
+    /// <summary>verify-rpc's bounds test: the quantised point lies in primitive <paramref name="p"/>'s cells on every axis.</summary>
+    private static bool Inside(SceneGeometry geometry, int p, int x, int y, int z) =>
+        x >= geometry.Min(p, 0) && x <= geometry.Max(p, 0)
+        && y >= geometry.Min(p, 1) && y <= geometry.Max(p, 1)
+        && z >= geometry.Min(p, 2) && z <= geometry.Max(p, 2);
 
     public static RayTable Build(SceneGeometry geometry, Ray ray)
     {
@@ -157,13 +159,7 @@ public sealed class RayTable
     {
         if (_rows is not null) return Array.BinarySearch(_rows, p) is var k and >= 0 && window.Accepts(_depths[k], p);
         var (valid, points) = Full;
-        if (!valid[p]) return false;
-        for (var axis = 0; axis < 3; axis++)
-        {
-            var q = points[p * 3 + axis];
-            if (q < Geometry.Min(p, axis) || q > Geometry.Max(p, axis)) return false;
-        }
-        return window.Accepts(_depths[p], p);
+        return valid[p] && Inside(Geometry, p, points[p * 3], points[p * 3 + 1], points[p * 3 + 2]) && window.Accepts(_depths[p], p);
     }
 
     /// <summary>The oracle's marked set for <paramref name="window"/>: every row verify-rpc accepts.</summary>

@@ -23,9 +23,7 @@ public static class NeighbourGathering
             foreach (var neighbour in layout.Neighbours(i))
             {
                 if (hits[neighbour] is not { } held || hits[i]?.Primitive == held.Primitive || !tried.Add(held.Primitive)) continue;
-                var window = hits[i] is { } current
-                    ? HitWindow.Closer(rays[i].Near, current.Depth, current.Primitive, tieBreak)
-                    : HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count);
+                var window = Hit.Beyond(rays[i], hits[i], geometry.Count, tieBreak);
                 tests++;
                 if (RayTable.Test(geometry, rays[i], held.Primitive, window) is not { } row) continue;
                 hits[i] = new Hit(held.Primitive, row.Depth, row.Distance, rays[i].At(row.Distance));
@@ -73,9 +71,7 @@ public static class NeighbourGathering
             var held = layout.CoarserNeighbours(i, levels).Select(j => hits[j]?.Primitive).ToArray();
             foreach (var p in held.OfType<int>().Distinct())
             {
-                var window = hits[i] is { } current
-                    ? HitWindow.Closer(rays[i].Near, current.Depth, current.Primitive, tieBreak)
-                    : HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count);
+                var window = Hit.Beyond(rays[i], hits[i], geometry.Count, tieBreak);
                 tests++;
                 if (RayTable.Test(geometry, rays[i], p, window) is not { } row) continue;
                 hits[i] = new Hit(p, row.Depth, row.Distance, rays[i].At(row.Distance));

@@ -21,7 +21,7 @@ public static class TracePass
         var hits = new Hit?[rays.Count];
         var misses = new int[rays.Count];
         HitWindow Window(int i, RayTable table) =>
-            hits[i] is { } hit ? HitWindow.Closer(rays[i].Near, hit.Depth, hit.Primitive, options.TieBreak) : table.FullRange;
+            Hit.Beyond(rays[i], hits[i], table.Count, options.TieBreak);
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
             if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);

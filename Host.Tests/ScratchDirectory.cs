@@ -1,0 +1,12 @@
+namespace QuantumRayTracing.Tests;
+
+/// <summary>A temporary directory for one test class's files, deleted with everything in it on dispose.</summary>
+public sealed class ScratchDirectory(string prefix) : IDisposable
+{
+    public string Path { get; } = Directory.CreateTempSubdirectory(prefix).FullName;
+
+    /// <summary>The path of <paramref name="name"/> inside the directory.</summary>
+    public string File(string name) => System.IO.Path.Combine(Path, name);
+
+    public void Dispose() => Directory.Delete(Path, recursive: true);
+}
