@@ -1,3 +1,5 @@
+using QuantumRayTracing.Engines;
+
 namespace QuantumRayTracing.Search;
 
 /// <summary>
@@ -18,16 +20,12 @@ public static class ConfirmationPlanner
         ArgumentOutOfRangeException.ThrowIfLessThan(maxT, 1);
         maxT = Math.Min(maxT, count);
         var cap = QSearchSchedule.CeilSqrt(count);
-        // miss[r][t] = cos²((2r + 1)θ_t): the chance one run with r iterations measures an unmarked index.
+        // miss[r][t]: the chance one run with r iterations measures an unmarked index, cos²((2r + 1)θ_t).
         var miss = new double[cap + 1][];
         for (var r = 1; r <= cap; r++)
         {
             miss[r] = new double[maxT + 1];
-            for (var t = 1; t <= maxT; t++)
-            {
-                var c = Math.Cos((2 * r + 1) * Math.Asin(Math.Sqrt((double)t / count)));
-                miss[r][t] = c * c;
-            }
+            for (var t = 1; t <= maxT; t++) miss[r][t] = 1 - GroverProbability.OfMarked(count, t, r);
         }
         int[]? best = null;
         var bestCost = int.MaxValue;

@@ -1,3 +1,5 @@
+using QuantumRayTracing.Engines;
+
 namespace QuantumRayTracing.Search;
 
 /// <summary>
@@ -29,14 +31,15 @@ public static class FalseNegativeRate
     public static double QSearchExact(QSearchSchedule schedule, int t)
     {
         var n = schedule.Count;
-        var theta = Theta(t, n);
+        // A run misses with 1 − P(marked) of Grover's closed form; a fixed list runs each r once, Algorithm 1
+        // takes the initial sample (r = 0) and then r uniform on 1..M_l per bound.
         if (schedule.IsFixed)
-            return schedule.Bounds.Aggregate(1.0, (miss, r) => miss * Square(Math.Cos((2 * r + 1) * theta)));
-        var miss = 1.0 - (double)t / n;
+            return schedule.Bounds.Aggregate(1.0, (miss, r) => miss * (1 - GroverProbability.OfMarked(n, t, r)));
+        var miss = 1 - GroverProbability.OfMarked(n, t, 0);
         foreach (var m in schedule.Bounds)
         {
             var success = 0.0;
-            for (var r = 1; r <= m; r++) success += Square(Math.Sin((2 * r + 1) * theta));
+            for (var r = 1; r <= m; r++) success += GroverProbability.OfMarked(n, t, r);
             miss *= 1 - success / m;
         }
         return Math.Max(0, miss);
