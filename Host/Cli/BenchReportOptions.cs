@@ -36,10 +36,10 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
         Description = $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before.",
     };
 
-    public void AddTo(Command command, bool scenes = true)
+    public void AddTo(Command command, bool scenes = true, bool seed = true)
     {
         if (scenes) command.Options.Add(Scenes);
-        command.Options.Add(Seed);
+        if (seed) command.Options.Add(Seed);
         command.Options.Add(Workers);
         command.Options.Add(Output);
         Workers.AtLeast(1);
@@ -59,11 +59,17 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
     /// <summary>Appends the machine and command lines, prints the report and writes it.</summary>
     public static void Publish(GeneratedReport report, StringBuilder text)
     {
-        text.AppendLine();
-        text.AppendLine($"Machine: {MachineDescription.Describe(null, null)}.");
-        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
+        AppendFooter(text, MachineDescription.Describe(null, null));
         var body = text.ToString();
         Console.WriteLine(body);
         report.Write(body);
+    }
+
+    /// <summary>Appends the lines naming <paramref name="machine"/> and the command that regenerates the report.</summary>
+    public static void AppendFooter(StringBuilder text, string machine)
+    {
+        text.AppendLine();
+        text.AppendLine($"Machine: {machine}.");
+        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
     }
 }
