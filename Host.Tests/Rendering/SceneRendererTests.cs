@@ -48,6 +48,44 @@ public class SceneRendererTests
         Assert.False(first.Pixels.SequenceEqual(second.Pixels));
     }
 
+    // `render`'s default pipeline takes more from the seed than the searches: the termination rule's draws
+    // (seeded by the options, as `render --seed` sets them) and the lattice's planned confirmations.
+    private static RenderOptions Pipeline(ulong seed) => new(16, 16, Neighbours: RenderDefaults.Neighbours,
+        ShadowNeighbours: RenderDefaults.ShadowNeighbours, Stop: RenderDefaults.Stop, Seed: seed,
+        LatticeLevels: RenderDefaults.LatticeLevels, AgreedMiss: RenderDefaults.AgreedMiss, PlannedMiss: RenderDefaults.PlannedMiss);
+
+    // A render's cost pass by pass, without wall times.
+    private static object[] Costs(RenderResult result) => result.Passes.Select(p => (object)(p.Name, p.Rays, p.Iterations, p.Cost, p.UpdatedPixels)).ToArray();
+
+    [Theory]
+    [InlineData(EngineKind.Analytic)]
+    [InlineData(EngineKind.Classical)]
+    [InlineData(EngineKind.Randomized)]
+    public void DefaultPipelineSameSeedGivesTheSameBytesAndCost(EngineKind kind)
+    {
+        var first = Render(Qornell16, kind, 5, Pipeline(5));
+        var second = Render(Qornell16, kind, 5, Pipeline(5));
+        Assert.Equal(PngEncoder.Encode(first.Image), PngEncoder.Encode(second.Image));
+        Assert.Equal(Costs(first), Costs(second));
+    }
+
+    [Theory]
+    [InlineData(EngineKind.Analytic)]
+    [InlineData(EngineKind.Randomized)]
+    public void DefaultPipelineAnotherSeedChangesTheSearches(EngineKind kind)
+    {
+        // The pipeline corrects most misses, so both images may equal the classical one; the searches' cost still moves.
+        Assert.NotEqual(Costs(Render(Qornell16, kind, 5, Pipeline(5))), Costs(Render(Qornell16, kind, 6, Pipeline(6))));
+    }
+
+    [Fact]
+    public void DefaultPipelineOnTheClassicalEngineIsTheReferenceWhateverTheSeed()
+    {
+        var reference = Png(Qornell16, EngineKind.Classical, 1, RenderDefaults.Reference(Pipeline(1)));
+        Assert.Equal(reference, Png(Qornell16, EngineKind.Classical, 5, Pipeline(5)));
+        Assert.Equal(reference, Png(Qornell16, EngineKind.Classical, 6, Pipeline(6)));
+    }
+
     [Fact]
     public void ClassicalIgnoresSeedAndTieBreak()
     {

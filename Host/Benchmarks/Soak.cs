@@ -14,7 +14,7 @@ namespace QuantumRayTracing.Benchmarks;
 /// each render: it finishes without an exception; its radiance is finite and its PNG decodes back to its
 /// pixels; on the classical engine it equals the classical reference, on the quantum engines it stays
 /// within <see cref="DifferentPixelBound"/> of it; on the seedable engines (analytic, classical,
-/// randomized) a second render of the same seed gives the same PNG bytes; and a second seed changes what
+/// randomized) a second render of the same seed gives the same PNG bytes at the same search cost; and a second seed changes what
 /// it should: the render of the analytic and randomized engines (its image, or where both images are
 /// exact its search cost), the classical image only when the scene samples light. A gate search wider
 /// than the engine's qubit limit, and a gate render forecast (<see cref="GateCostEstimate"/>) to exceed
@@ -113,6 +113,11 @@ public static class Soak
                     {
                         deterministic = false;
                         Fail($"a second render differs ({ImageError.Between(again.Result.Image, first.Result.Image).DifferentPixels} pixels)");
+                    }
+                    else if (!Costs(again.Result).SequenceEqual(Costs(first.Result)))
+                    {
+                        deterministic = false;
+                        Fail("a second render gives the same image at another search cost");
                     }
                 }
                 seedEffect = SeedEffect(firsts);

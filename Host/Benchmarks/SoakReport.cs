@@ -60,7 +60,8 @@ public static class SoakReport
         text.AppendLine($"{settings.ShadowIterations} DirectPass rounds, {settings.AreaSamples} area samples, {settings.Vpl} VPLs. Each render is checked: no exception; finite radiance and a PNG");
         text.AppendLine("that decodes to its pixels; the classical engine equal to the classical reference, the quantum engines (analytic,");
         text.AppendLine($"fullstate, gate) at most the #Dpix bound from it (the {1 - DifferentPixelBound.FalseFailure:0.######} quantile of Binomial(pixels, {DifferentPixelBound.Rate}));");
-        text.AppendLine("the seedable engines (classical, randomized, analytic) render each seed twice and must give the same PNG bytes;");
+        text.AppendLine("the seedable engines (classical, randomized, analytic) render each seed twice and must give the same PNG bytes");
+        text.AppendLine("at the same search cost;");
         text.AppendLine("another seed must change the analytic and randomized renders (the image, or where both images are exact the search");
         text.AppendLine("cost) and the classical image exactly when the scene samples light. The fullstate and gate engines cannot be seeded.");
         text.AppendLine($"The gate engine skips a render forecast to take over {settings.GateBudget.TotalSeconds:0} s (rays x N^2.5 x {GateCostEstimate.SecondsPerRayUnit:0e0} s)");
