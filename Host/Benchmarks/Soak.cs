@@ -196,5 +196,5 @@ public static class Soak
             result.Passes.Select(p => (p.Name, p.Rays, p.Iterations, p.Cost, p.TableRows, p.UpdatedPixels));
     }
 
-    private static string Seconds(TimeSpan time) => time.TotalSeconds < 100 ? $"{time.TotalSeconds:0.#} s" : $"{time.TotalMinutes:0} min";
+    private static string Seconds(TimeSpan time) => string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{time.TotalSeconds:0} s");
 }
