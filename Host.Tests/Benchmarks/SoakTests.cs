@@ -178,7 +178,7 @@ public sealed class SoakTests : IDisposable
         Assert.Contains("2 ok, 0 FAILED, 0 skipped", text);
 
         File.WriteAllText(Path.Combine(scenes, "broken.json"), "{ \"name\": ");
-        Assert.Equal(CommandLine.ChecksFailed, ConsoleCaptureRun(arguments));
+        Assert.Equal(BenchSoakCommand.ChecksFailed, ConsoleCaptureRun(arguments));
         text = File.ReadAllText(_scratch.File("soak.md"));
         Assert.Contains("| broken |", text);
         Assert.Contains("FAILED: scene does not load: ", text);

@@ -12,11 +12,14 @@ namespace QuantumRayTracing.Cli;
 /// <summary>
 /// `bench soak`: every scene in a directory on every engine that can hold it, with two seeds, each render
 /// checked (<see cref="Soak"/>); a table per scene and engine, optionally written as Markdown
-/// (docs/soak.md), and exit code <see cref="CommandLine.ChecksFailed"/> when any check failed.
+/// (docs/soak.md), and exit code <see cref="ChecksFailed"/> when any check failed.
 /// </summary>
 public sealed class BenchSoakCommand : Command
 {
     public const string CommandLine = "qrt bench soak";
+
+    /// <summary>The exit code when a render failed a check: after the codes <see cref="Cli.CommandLine"/> gives every command.</summary>
+    public const int ChecksFailed = 5;
 
     private readonly Option<DirectoryInfo?> _scenes = new("--scenes")
     {
@@ -172,7 +175,7 @@ public sealed class BenchSoakCommand : Command
         var text = SoakReport.Markdown(rows, settings, total);
         BenchReportOptions.AppendFooter(text, MachineDescription.Describe(versions.QSharp, versions.Node));
         report.Write(text.ToString());
-        return rows.Any(r => r.Status == SoakStatus.Failed) ? Cli.CommandLine.ChecksFailed : 0;
+        return rows.Any(r => r.Status == SoakStatus.Failed) ? ChecksFailed : 0;
     }
 
     /// <summary>Scenes/ of the repository (the directory holding QuantumRayTracing.sln) at or above <paramref name="start"/>, or null.</summary>

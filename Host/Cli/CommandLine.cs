@@ -7,14 +7,12 @@ namespace QuantumRayTracing.Cli;
 
 /// <summary>
 /// The `qrt` command line: every command, and the one place that turns failures into exit codes —
-/// 0 success, 1 usage error, 2 bad input (scene, paths, options), 3 a failure of the QDK or its bridge,
-/// 4 a check that failed (`bench soak`).
+/// 0 success, 1 usage error, 2 bad input (scene, paths, options), 3 a failure of the QDK or its bridge.
 /// </summary>
 public static class CommandLine
 {
     public const int BadInput = 2;
     public const int QuantumFailure = 3;
-    public const int ChecksFailed = 4;
 
     public static RootCommand Build()
     {
