@@ -22,6 +22,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchLightsCommand());
         Subcommands.Add(new BenchSupersampleCommand());
         Subcommands.Add(new BenchSupersampleImagesCommand());
+        Subcommands.Add(new BenchCapacityCommand());
     }
 
     private sealed class GroverBenchCommand : Command
