@@ -23,6 +23,34 @@ public static class AtomicFile
         }
     }
 
+    /// <summary>
+    /// Null when a new file can be created beside <paramref name="path"/> (what <see cref="WriteAllBytes"/> needs),
+    /// otherwise why not. Tries it: creates a uniquely named empty file there and deletes it, because permission
+    /// bits alone do not tell (root ignores them; read-only mounts and /proc refuse new files whatever they say).
+    /// </summary>
+    public static string? CannotCreateBeside(string path)
+    {
+        var probe = Path.Combine(Path.GetDirectoryName(Path.GetFullPath(path))!, $".qrt-probe.{Guid.NewGuid():N}.tmp");
+        try
+        {
+            using (new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose)) { }
+            return null;
+        }
+        catch (UnauthorizedAccessException)
+        {
+            return "permission denied";
+        }
+        catch (FileNotFoundException)
+        {
+            // What Linux reports (ENOENT) for a new file in /proc and similar directories that hold no ordinary files.
+            return "the file system does not allow new files there";
+        }
+        catch (IOException e)
+        {
+            return e.Message;
+        }
+    }
+
     private static void DeleteQuietly(string path)
     {
         // Cleanup after a failure: the original exception is the one worth reporting, not a second one from here.
