@@ -33,20 +33,18 @@ public static class ImageFiles
         }
     }
 
-    /// <summary>Writes every image to its path, each atomically.</summary>
+    /// <summary>Writes every image to its path, all or none (<see cref="AtomicFile.WriteAll"/>).</summary>
     public static void Write(IEnumerable<(RgbImage Image, string Path)> images)
     {
-        foreach (var (image, path) in images)
+        var files = images.Select(i => (i.Path, PngEncoder.Encode(i.Image))).ToArray();
+        // Checked beforehand, but the disk can still fill up or the directory change in between.
+        try
         {
-            // Checked beforehand, but the disk can still fill up or the directory change in between.
-            try
-            {
-                PngEncoder.Write(image, path);
-            }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-            {
-                throw new UserError($"{path}: cannot be written: {e.Message}");
-            }
+            AtomicFile.WriteAll(files);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UserError($"{string.Join(", ", files.Select(f => f.Path))}: cannot be written: {e.Message}");
         }
     }
 }
