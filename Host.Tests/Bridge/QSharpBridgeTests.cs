@@ -64,7 +64,7 @@ public sealed class QSharpBridgeTests : IDisposable
         File.WriteAllText(script, "console.error('simulated crash'); process.exit(3);\n");
         using var bridge = new QSharpBridge(new BridgeOptions { Script = script });
         var error = Assert.Throws<BridgeException>(() => bridge.Version());
-        Assert.Contains("died twice", error.Message);
+        Assert.Contains("crashed twice", error.Message);
         Assert.Contains("simulated crash", error.Message);
     }
 

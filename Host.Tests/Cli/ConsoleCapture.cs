@@ -24,4 +24,28 @@ internal static class ConsoleCapture
             }
         }
     }
+
+    /// <summary>
+    /// The same with standard output captured too. Spectre.Console keeps the writer it found first, so what a
+    /// command prints through it is not captured; the commands print nothing through it before they fail on bad input.
+    /// </summary>
+    public static (int Code, string Output, string Error) RunCapturingOutput(params string[] args)
+    {
+        lock (Gate)
+        {
+            var (savedOutput, savedError) = (Console.Out, Console.Error);
+            var (output, error) = (new StringWriter(), new StringWriter());
+            Console.SetOut(output);
+            Console.SetError(error);
+            try
+            {
+                return (CommandLine.Run(args), output.ToString(), error.ToString());
+            }
+            finally
+            {
+                Console.SetOut(savedOutput);
+                Console.SetError(savedError);
+            }
+        }
+    }
 }

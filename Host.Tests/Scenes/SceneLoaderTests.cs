@@ -126,6 +126,43 @@ public class SceneLoaderTests
     public void CameraLookingAtItself() =>
         AssertError(Reject(s => s["camera"]!["lookAt"] = new JsonArray(4, 4, -3.3)), "camera.lookAt", "no view direction");
 
+    // Rectangles are flat: a camera inside one is a camera in its plane and within its bounds, edges included.
+    [Theory]
+    [InlineData(4, 4, 8)]     // inside rectangle 0 (z = 8, x and y 0..8)
+    [InlineData(8, 0, 8)]     // its corner
+    [InlineData(1.5, 3, 2)]   // a corner of rectangle 1 (x = 1.5)
+    public void CameraOnARectangle(double x, double y, double z)
+    {
+        var error = Reject(s =>
+        {
+            s["camera"]!["position"] = new JsonArray(x, y, z);
+            s["camera"]!["lookAt"] = new JsonArray(x + 1, y, z + 1);
+        });
+        AssertError(error, "camera.position", $"lies on rectangles[{(x == 1.5 ? 1 : 0)}]");
+    }
+
+    [Theory]
+    [InlineData(9, 4, 8)]       // in rectangle 0's plane, beside it
+    [InlineData(4, 4, 7.999)]   // just in front of it
+    [InlineData(1.5, 3.01, 4)]  // in rectangle 1's plane, just above it
+    public void CameraNearARectangleIsFine(double x, double y, double z)
+    {
+        var scene = JsonNode.Parse(Valid)!.AsObject();
+        scene["camera"]!["position"] = new JsonArray(x, y, z);
+        scene["camera"]!["lookAt"] = new JsonArray(x + 1, y, z + 1);
+        Assert.Equal(new Vec3(x, y, z), SceneLoader.Parse(scene.ToJsonString(), "ok.json").Camera.Position);
+    }
+
+    [Fact]
+    public void DuplicateField()
+    {
+        var text = Valid.Replace("\"width\": 16,", "\"width\": 16, \"width\": 9,");
+        Assert.NotEqual(Valid, text);
+        var error = Assert.Throws<SceneError>(() => SceneLoader.Parse(text, "bad.json"));
+        Assert.Equal("image.width", error.Element);
+        Assert.Contains("appears twice", error.Problem);
+    }
+
     [Fact]
     public void ImageSizeZero() =>
         AssertError(Reject(s => s["image"]!["width"] = 0), "image.width", "0 is outside 1..8192");

@@ -16,9 +16,10 @@ namespace QuantumRayTracing.Benchmarks;
 /// within <see cref="DifferentPixelBound"/> of it; on the seedable engines (analytic, classical,
 /// randomized) a second render of the same seed gives the same PNG bytes at the same search cost; and a second seed changes what
 /// it should: the render of the analytic and randomized engines (its image, or where both images are
-/// exact its search cost), the classical image only when the scene samples light. A gate search wider
-/// than the engine's qubit limit, and a gate render forecast (<see cref="GateCostEstimate"/>) to exceed
-/// the budget, are skipped, not failed.
+/// exact its search cost), the classical image only when the scene samples light. A search the simulator
+/// refuses before simulating (<see cref="SimulatorLimitException"/>: a gate search wider than the engine's
+/// qubit limit, a fullstate one wider than the machine holds), and a gate render forecast
+/// (<see cref="GateCostEstimate"/>) to exceed the budget, are skipped, not failed.
 /// </summary>
 public static class Soak
 {
@@ -125,6 +126,10 @@ public static class Soak
             catch (QubitLimitException e)
             {
                 return SoakRow.Skipped(stem, Primitives, kind, $"needs {e.Registers.PeakQubits} qubits, over the limit of {e.Limit}");
+            }
+            catch (SimulatorLimitException e)
+            {
+                return SoakRow.Skipped(stem, Primitives, kind, OneLine(e.Message));
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {

@@ -76,7 +76,7 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
             catch (BridgeDiedException second)
             {
                 throw new BridgeException(
-                    $"the Q# bridge died twice on one request ({first.Message}; then {second.Message}){StderrTail()}");
+                    $"the Node process running the Q# simulator crashed twice on one request ({first.Message}; then {second.Message}), as it does when a state outgrows its 4 GiB WebAssembly heap or Node.js is broken{StderrTail()}");
             }
         }
     }
@@ -128,7 +128,7 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
         catch (Win32Exception e)
         {
             throw new BridgeException(
-                $"could not start Node.js ('{options.Node}'): {e.Message}. Node.js 20 or later is required to run Q# (see README.md).", e);
+                $"could not start Node.js ('{options.Node}'): {e.Message}. Node.js 20 or later runs the Q# simulator: install it (README.md, Prerequisites) or set {BridgeOptions.NodeVariable} to its path.", e);
         }
         _starts++;
         lock (_stderr) _stderr.Clear();

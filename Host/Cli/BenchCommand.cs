@@ -22,6 +22,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchLightsCommand());
         Subcommands.Add(new BenchSupersampleCommand());
         Subcommands.Add(new BenchSupersampleImagesCommand());
+        Subcommands.Add(new BenchCapacityCommand());
         Subcommands.Add(new BenchSoakCommand());
     }
 
@@ -55,7 +56,7 @@ public sealed class BenchCommand : Command
 
         private readonly Option<FileInfo?> _output = new("--output", "-o")
         {
-            Description = "Write the Markdown report here (e.g. docs/performance.md). It replaces only a report this command wrote before.",
+            Description = "Write the Markdown report here (e.g. docs/performance.md). It replaces only a report this command wrote before. Default: the report is printed only.",
         };
 
         public GroverBenchCommand() : base("grover", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")

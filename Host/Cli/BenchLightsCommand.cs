@@ -51,7 +51,7 @@ public sealed class BenchLightsCommand : Command
 
     private readonly Option<FileInfo?> _output = new("--output", "-o")
     {
-        Description = "Markdown report (e.g. docs/lights.md); the images go beside it as <name>-<case>-<render>.png. Replaces only files this command wrote.",
+        Description = "Markdown report (e.g. docs/lights.md); the images go beside it as <name>-<case>-<render>.png. Replaces only files this command wrote. Default: the report is printed only, no images are written.",
     };
 
     public BenchLightsCommand() : base("lights", "Area light and VPL indirect light (the paper's sec. 7): Int/Ray and error of the quantum and classical pipelines, with images beside their classical references.")

@@ -33,7 +33,7 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
 
     public readonly Option<FileInfo?> Output = new("--output", "-o")
     {
-        Description = $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before.",
+        Description = $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before. Default: the report is printed only.",
     };
 
     public void AddTo(Command command, bool scenes = true, bool seed = true)

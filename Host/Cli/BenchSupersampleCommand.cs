@@ -17,7 +17,7 @@ public sealed class BenchSupersampleCommand : Command
 {
     private readonly Option<int> _trials = new("--trials") { Description = "Uniform random means per point.", DefaultValueFactory = _ => 3000 };
     private readonly Option<ulong> _seed = new("--seed") { Description = "Seed of the means and the analytic engine.", DefaultValueFactory = _ => 1UL };
-    private readonly Option<FileInfo?> _output = new("--output", "-o") { Description = "Markdown report (e.g. docs/supersampling-results.md); the CSV goes beside it with the extension .csv, the plots as <name>-error-vs-queries.png and <name>-qcoin-k.png." };
+    private readonly Option<FileInfo?> _output = new("--output", "-o") { Description = "Markdown report (e.g. docs/supersampling-results.md); the CSV goes beside it with the extension .csv, the plots as <name>-error-vs-queries.png and <name>-qcoin-k.png. Default: the report is printed only." };
 
     public BenchSupersampleCommand() : base("supersample", "Mean estimation error against queries (analytic engine) and QSS lookup-table accuracy.")
     {

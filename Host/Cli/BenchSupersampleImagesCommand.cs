@@ -44,7 +44,7 @@ public sealed class BenchSupersampleImagesCommand : Command
 
     private readonly Option<FileInfo?> _output = new("--output", "-o")
     {
-        Description = "Markdown report (e.g. docs/supersampling-images.md); CSVs and PNGs go beside it as <name>.csv, <name>-confidence.csv, <name>-*.png. Replaces only files this command wrote.",
+        Description = "Markdown report (e.g. docs/supersampling-images.md); CSVs and PNGs go beside it as <name>.csv, <name>-confidence.csv, <name>-*.png. Replaces only files this command wrote. Default: the report is printed only.",
     };
 
     public BenchSupersampleImagesCommand() : base("supersample-images", "Supersampling on rendered images: paper 003's fig. 1 (8x8 subpixels, 240 queries), thesis 004's tables 4.1/4.2 (4x4), and the confidence map against the error (analytic engine).")

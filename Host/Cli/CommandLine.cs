@@ -1,22 +1,29 @@
 using System.CommandLine;
-using QuantumRayTracing.Bridge;
-using QuantumRayTracing.Output;
-using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Cli;
 
 /// <summary>
 /// The `qrt` command line: every command, and the one place that turns failures into exit codes —
-/// 0 success, 1 usage error, 2 bad input (scene, paths, options), 3 a failure of the QDK or its bridge.
+/// 0 success, 1 usage error, 2 bad input (scene, paths, options, a request too large for the
+/// simulator), 3 a failure of the QDK or its bridge, 4 an internal error (<see cref="ErrorReport"/>).
 /// </summary>
 public static class CommandLine
 {
-    public const int BadInput = 2;
-    public const int QuantumFailure = 3;
+    public const int BadInput = ErrorReport.BadInput;
+    public const int QuantumFailure = ErrorReport.QuantumFailure;
+
+    /// <summary>Shows stack traces, the bridge's output and the Q# call stack of a failure.</summary>
+    public static readonly Option<bool> Verbose = new("--verbose")
+    {
+        Description = "On failure, also print the stack trace, the Q# call stack and the Node bridge's output.",
+        Recursive = true,
+    };
 
     public static RootCommand Build()
     {
-        var root = new RootCommand("QuantumRayTracing: hybrid quantum-classical ray tracing on the Q# full-state simulator.");
+        var root = new RootCommand("QuantumRayTracing: hybrid quantum-classical ray tracing on the Q# full-state simulator. "
+            + "Exit codes: 0 success, 1 usage error, 2 bad input, 3 Q#/QDK/Node bridge failure, 4 internal error.");
+        root.Options.Add(Verbose);
         root.Subcommands.Add(new RenderCommand());
         root.Subcommands.Add(new SupersampleCommand());
         root.Subcommands.Add(new SearchCommand());
@@ -35,15 +42,11 @@ public static class CommandLine
         {
             return parse.Invoke(new InvocationConfiguration { EnableDefaultExceptionHandler = false });
         }
-        catch (Exception e) when (e is UserError or SceneError)
+        catch (Exception e)
         {
-            Console.Error.WriteLine($"error: {e.Message}");
-            return BadInput;
-        }
-        catch (Exception e) when (e is BridgeException or QSharpException)
-        {
-            Console.Error.WriteLine($"error: {e.Message}");
-            return QuantumFailure;
+            var (code, text) = ErrorReport.Describe(e, parse.GetValue(Verbose));
+            Console.Error.WriteLine(text);
+            return code;
         }
     }
 }

@@ -37,6 +37,12 @@ public sealed class EngineOptions
         DefaultValueFactory = _ => BridgePool.DefaultWorkers,
     };
 
+    public readonly Option<int?> MaxQubits = new("--max-qubits")
+    {
+        Description = $"Refuse, before simulating anything, a circuit wider than this many qubits. Default: fullstate, the widest dense state this machine holds ({SimulatorCapacity.DefaultMaxQubits(BridgePool.DefaultWorkers)} qubits here: about {SimulatorCapacity.BytesPerAmplitude:0} bytes per amplitude in a WebAssembly heap of at most 4 GiB per worker); gate, {GateEngine.DefaultMaxQubits} at peak with library auxiliaries (its states are sparse; `qrt estimate` shows the width).",
+        HelpName = "qubits",
+    };
+
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
         _accepted = accepted;
@@ -62,6 +68,7 @@ public sealed class EngineOptions
                 result.AddError($"--engine {Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(Name))}");
         });
         Workers.AtLeast(1);
+        MaxQubits.Between(1, 100_000);
     }
 
     public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();
@@ -71,26 +78,27 @@ public sealed class EngineOptions
         command.Options.Add(Engine);
         command.Options.Add(Seed);
         command.Options.Add(Workers);
+        if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate)) command.Options.Add(MaxQubits);
     }
 
     /// <summary>The Grover engine a parse result asks for; its randomness is the seed's engine stream.</summary>
-    public IGroverEngine Create(ParseResult parse) => Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers));
+    public IGroverEngine Create(ParseResult parse) =>
+        Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits));
 
-    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers) => kind switch
+    /// <summary>A Grover engine; <paramref name="maxQubits"/> null keeps the engine's own limit.</summary>
+    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null) => kind switch
     {
-        EngineKind.FullState => new FullStateEngine(new BridgePool(workers)),
-        EngineKind.Gate => new GateEngine(new BridgePool(workers)),
+        EngineKind.FullState => new FullStateEngine(new BridgePool(workers), maxQubits: maxQubits),
+        EngineKind.Gate => new GateEngine(new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits),
         EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
     };
 
     /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>
-    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int maxQubits = GateEngine.DefaultMaxQubits) => kind switch
+    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null) => kind switch
     {
-        EngineKind.FullState or EngineKind.Analytic =>
-            new QuantumHitSearch(Create(kind, root, workers), root.Fork(RandomStreams.Search), options),
-        EngineKind.Gate =>
-            new QuantumHitSearch(new GateEngine(new BridgePool(workers), maxQubits: maxQubits), root.Fork(RandomStreams.Search), options, gateLevel: true),
+        EngineKind.FullState or EngineKind.Analytic or EngineKind.Gate =>
+            new QuantumHitSearch(Create(kind, root, workers, maxQubits), root.Fork(RandomStreams.Search), options, gateLevel: kind == EngineKind.Gate),
         EngineKind.Classical => new ClassicalHitSearch(),
         EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),

@@ -36,7 +36,7 @@ public sealed class EstimateSweepCommand : Command
 
     private readonly Option<FileInfo?> _output = new("--output", "-o")
     {
-        Description = "Write the Markdown report here (e.g. docs/estimates.md). It replaces only a report this command wrote before.",
+        Description = "Write the Markdown report here (e.g. docs/estimates.md). It replaces only a report this command wrote before. Default: the report is printed only.",
     };
 
     private readonly EstimateOptions _options = new();

@@ -106,12 +106,6 @@ public sealed class RenderCommand : Command
         DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
     };
 
-    private readonly Option<int> _maxQubits = new("--max-qubits")
-    {
-        Description = "Engine gate: refuse, before simulating anything, a search whose oracle needs more qubits at peak than this (registers and library auxiliaries; `qrt estimate` shows them). The QDK simulator is sparse, so width itself costs little; the default covers every shipped scene.",
-        DefaultValueFactory = _ => GateEngine.DefaultMaxQubits,
-    };
-
     private readonly Option<int> _areaSamples = new("--area-samples")
     {
         Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
@@ -150,7 +144,6 @@ public sealed class RenderCommand : Command
         Options.Add(_lattice);
         Options.Add(_agreedMiss);
         Options.Add(_plannedMiss);
-        Options.Add(_maxQubits);
         Options.Add(_areaSamples);
         Options.Add(_vpl);
         Options.Add(_referenceSamples);
@@ -171,7 +164,6 @@ public sealed class RenderCommand : Command
         _qsearch.AddTo(this);
         _passes.Between(1, 64);
         _shadowPasses.Between(1, 64);
-        _maxQubits.Between(1, 100_000);
         _size.Validators.Add(r =>
         {
             if (ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
@@ -220,13 +212,13 @@ public sealed class RenderCommand : Command
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_maxQubits)))
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits)))
         {
             try
             {
                 result = SceneRenderer.Render(scene, search, options, progress);
             }
-            catch (QubitLimitException e)
+            catch (SimulatorLimitException e)
             {
                 progress.Finish();
                 throw new UserError($"{scene.Name}: {e.Message}");

@@ -29,7 +29,7 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<FileInfo?> _image = new("--image")
     {
-        Description = "PNG to supersample: each output pixel averages s x s of its pixels, so both sides must be multiples of s. 8-bit grey, grey+alpha, RGB, RGBA or palette; alpha is composited over black.",
+        Description = "PNG to supersample: each output pixel averages s x s of its pixels, so both sides must be multiples of s. 8-bit grey, grey+alpha, RGB, RGBA or palette; alpha is composited over black. Default: none, a scene is rendered (--scene).",
     };
 
     private readonly Option<FileInfo?> _scene = new("--scene")
@@ -179,7 +179,7 @@ public sealed class SupersampleCommand : Command
         var clock = Stopwatch.StartNew();
         SupersampleResult result;
         var supersampling = new ConsoleProgress(EngineOptions.Name(kind));
-        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers)))
+        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits)))
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         supersampling.Finish();
         var elapsed = clock.Elapsed;
@@ -237,9 +237,9 @@ public sealed class SupersampleCommand : Command
             throw new UserError($"--engine fullstate simulates every pixel and takes about a second per output pixel: at most {MaxFullStatePixels} output pixels (e.g. 16x16), this input has {pixels}; use --engine analytic (the same distributions, seeded) or a smaller input");
     }
 
-    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers) => kind switch
+    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null) => kind switch
     {
-        EngineKind.FullState => new FullStateSupersamplingEngine(new Bridge.BridgePool(workers)),
+        EngineKind.FullState => new FullStateSupersamplingEngine(new Bridge.BridgePool(workers), maxQubits: maxQubits),
         _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine)),
     };
 

@@ -10,8 +10,9 @@ namespace QuantumRayTracing.Engines;
 /// chunk is one call of the Q# operation <c>MeasureGroverBatch</c> on one bridge, and the chunks run
 /// on all workers at once (<see cref="BridgeBatches"/>). Registers are sized per request (see
 /// <see cref="SearchRegisters"/>). Measurement outcomes come from the simulator and cannot be seeded.
+/// A batch holding a search wider than <see cref="MaxQubits"/> is refused before any of it is sent.
 /// </summary>
-public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall) : IGroverEngine
+public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null) : IGroverEngine
 {
     /// <summary>Large enough to amortise the ~60 ms compile of every QDK call, small enough to spread over workers.</summary>
     public const int DefaultMaxRequestsPerCall = 500;
@@ -20,8 +21,20 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
 
     public string Name => "fullstate";
 
-    public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests) =>
-        BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression);
+    /// <summary>Qubits a search may use: by default the widest dense state this machine holds (<see cref="SimulatorCapacity"/>).</summary>
+    public int MaxQubits { get; } = maxQubits ?? SimulatorCapacity.DefaultMaxQubits(pool.Workers);
+
+    public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
+    {
+        if (requests.Count > 0)
+        {
+            // Auxiliaries are borrowed clean inside a gate and never superposed: the state spans the index register.
+            var widest = requests.Max(r => r.Marked.Count);
+            var registers = SearchRegisters.For(widest);
+            SimulatorCapacity.Check($"a search over N = {widest} indices", registers.PeakQubits, registers.IndexQubits, MaxQubits);
+        }
+        return BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression);
+    }
 
     /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>.</summary>
     public static string BatchExpression(IReadOnlyList<GroverRequest> requests)

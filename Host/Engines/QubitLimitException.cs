@@ -7,7 +7,7 @@ namespace QuantumRayTracing.Engines;
 /// A gate-level search would need more qubits than the engine was allowed (<see cref="GateEngine.MaxQubits"/>):
 /// raised before any of the batch reaches the simulator. One line naming the ray, its width and the limit.
 /// </summary>
-public sealed class QubitLimitException(OracleInput input, OracleRegisters registers, int limit) : Exception(Describe(input, registers, limit))
+public sealed class QubitLimitException(OracleInput input, OracleRegisters registers, int limit) : SimulatorLimitException(Describe(input, registers, limit))
 {
     public OracleInput Input => input;
 

@@ -40,12 +40,12 @@ public static class DirectPass
             return ([.. occluders.Select(o => o is not null)], metrics);
         }
 
-        var phased = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, (level, levelRays, agreed) =>
+        var phased = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
         {
             var inLevel = levelRays.ToHashSet();
             var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                 : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
-            var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress,
+            var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
                 level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i),
                 schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : options.Schedule);
             return (searched, tests, updated);

@@ -36,12 +36,12 @@ public static class TracePass
             return (hits, IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
                 schedule: (_, _) => options.Schedule));
 
-        var metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, (level, levelRays, agreed) =>
+        var metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
         {
             var inLevel = levelRays.ToHashSet();
             var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                 : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
-            var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress,
+            var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
                 level == 0 ? gather : null, settled: i => !inLevel.Contains(i),
                 schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : options.Schedule);
             return (searched, tests, updated);

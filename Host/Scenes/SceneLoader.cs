@@ -16,10 +16,14 @@ public static class SceneLoader
         PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
         ReadCommentHandling = JsonCommentHandling.Skip,
         AllowTrailingCommas = true,
+        // A field given twice is ambiguous (which one did the author mean?): an error, not "the last one wins".
+        AllowDuplicateProperties = false,
     };
 
     public static Scene Load(string path)
     {
+        // Reading a directory fails with "access denied", which sends the user looking at permissions.
+        if (Directory.Exists(path)) throw new SceneError(path, "file", "is a directory, not a scene file");
         string text;
         try
         {
@@ -35,6 +39,7 @@ public static class SceneLoader
     /// <summary>Parses scene text; <paramref name="file"/> names it in errors.</summary>
     public static Scene Parse(string text, string file)
     {
+        if (string.IsNullOrWhiteSpace(text)) throw new SceneError(file, "$", "the file is empty; a scene is one JSON object");
         SceneDocument? document;
         try
         {
@@ -60,9 +65,31 @@ public static class SceneLoader
             var end = message.IndexOf('\'', start);
             return end > start ? $"unknown field '{message[start..end]}'" : "unknown field";
         }
+        if (message.StartsWith("Duplicate property", StringComparison.Ordinal))
+            return "appears twice; give each field once";
         if (e.InnerException is FormatException || message.Contains("could not be converted", StringComparison.Ordinal))
-            return "has the wrong type (numbers must be plain JSON numbers; NaN and Infinity are not allowed)";
-        return $"is not valid JSON (line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1})";
+            return $"has the wrong type: expected {Expected(message)}";
+        var where = $"is not valid JSON (line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1})";
+        // The reader names the first character it rejects; N and I start the NaN and Infinity other writers emit.
+        return message.StartsWith("'N' is an invalid start of a value", StringComparison.Ordinal)
+            || message.StartsWith("'I' is an invalid start of a value", StringComparison.Ordinal)
+            ? $"{where}: JSON has no NaN or Infinity; write a finite number"
+            : where;
+    }
+
+    // The .NET type named in "could not be converted to T. Path: ...", said in the format's own words.
+    private static string Expected(string message)
+    {
+        const string marker = "converted to ";
+        var start = message.IndexOf(marker, StringComparison.Ordinal);
+        var end = start < 0 ? -1 : message.IndexOf(". Path:", start, StringComparison.Ordinal);
+        var type = end < 0 ? "" : message[(start + marker.Length)..end];
+        if (type.EndsWith("[]", StringComparison.Ordinal) || type.Contains("List`1", StringComparison.Ordinal)) return "a list [ ... ]";
+        if (type.Contains("Dictionary`2", StringComparison.Ordinal) || type.Contains("Document", StringComparison.Ordinal)) return "an object { ... }";
+        if (type.Contains("Int32", StringComparison.Ordinal)) return "a whole number that fits in 32 bits";
+        if (type.Contains("Double", StringComparison.Ordinal)) return "a plain JSON number (NaN and Infinity are not numbers in JSON)";
+        if (type.Contains("String", StringComparison.Ordinal)) return "a string";
+        return "another kind of value (see docs/scenes.md)";
     }
 
     /// <summary>Checks one document and builds the scene, naming the element of the first problem found.</summary>
@@ -108,6 +135,7 @@ public static class SceneLoader
             if (documents.Count == 0) throw Error("rectangles", "the scene has no primitives; at least one rectangle is needed");
             if (documents.Count > MaxRectangles) throw Error("rectangles", $"{documents.Count} rectangles; at most {MaxRectangles} are supported");
             var rectangles = documents.Select((r, k) => Rectangle(r, k, grid, materials)).ToArray();
+            CameraOffPrimitives(camera.Position, rectangles);
 
             var areaLights = (d.AreaLights ?? []).Select(AreaLight).ToArray();
             var directionalLights = (d.DirectionalLights ?? []).Select(DirectionalLight).ToArray();
@@ -168,6 +196,18 @@ public static class SceneLoader
                 throw Error("camera.up", "is zero or parallel to the view direction");
             var fov = Number(c.VerticalFov ?? 40, "camera.verticalFov", double.Epsilon, 179.999);
             return new Camera(position, lookAt, up, fov);
+        }
+
+        // Primitives are flat, so a camera "inside" one lies in its plane within its bounds (edges included):
+        // every primary ray would start on the surface, and which side it sees is undefined.
+        private void CameraOffPrimitives(Vec3 position, Rectangle[] rectangles)
+        {
+            foreach (var r in rectangles)
+            {
+                var on = Enumerable.Range(0, 3).All(axis => r.Min[axis] <= position[axis] && position[axis] <= r.Max[axis]);
+                if (on)
+                    throw Error("camera.position", $"[{position.X}, {position.Y}, {position.Z}] lies on rectangles[{r.Id}] (min [{r.Min.X}, {r.Min.Y}, {r.Min.Z}], max [{r.Max.X}, {r.Max.Y}, {r.Max.Z}]); move the camera off it");
+            }
         }
 
         private Rectangle Rectangle(SceneDocument.RectangleDocument? r, int id, CoordinateGrid grid, Dictionary<string, Material> materials)

@@ -2,15 +2,17 @@ using System.Globalization;
 using System.Text;
 using System.Text.Json;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
 
 namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// Runs the supersampling circuits as Q# on the QDK full-state simulator: a batch is cut into chunks of
 /// bounded simulation work, each chunk is one call of <c>CountCoinHeadsBatch</c> or <c>MeasureQssBatch</c>
-/// on its own bridge, and the chunks run on all workers at once. Outcomes cannot be seeded.
+/// on its own bridge, and the chunks run on all workers at once. Outcomes cannot be seeded. A batch
+/// holding a circuit wider than <see cref="MaxQubits"/> is refused before any of it is sent.
 /// </summary>
-public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true) : ISupersamplingEngine
+public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true, int? maxQubits = null) : ISupersamplingEngine
 {
     public const string CoinOperation = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
     public const string QssOperation = "QuantumRayTracing.Supersampling.MeasureQssBatch";
@@ -20,8 +22,25 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
 
     public string Name => "fullstate";
 
+    /// <summary>Qubits a circuit may use: by default the widest dense state this machine holds (<see cref="SimulatorCapacity"/>).</summary>
+    public int MaxQubits { get; } = maxQubits ?? SimulatorCapacity.DefaultMaxQubits(pool.Workers);
+
+    /// <summary>Subpixel qubits for N subpixels, as the Q# <c>SubpixelQubits</c>: ceil(log2 N).</summary>
+    public static int SubpixelQubits(int count) => count <= 1 ? 0 : 32 - int.LeadingZeroCount(count - 1);
+
+    /// <summary>A coin circuit's qubits: the subpixel register and the coin, every one of them superposed.</summary>
+    public static int CoinQubits(CoinRequest request) => SubpixelQubits(request.Amplitudes.Length) + 1;
+
+    /// <summary>A QSS readout's qubits: the counter, the subpixel register and the coin.</summary>
+    public static int QssQubits(QssRequest request) => request.CounterBits + SubpixelQubits(request.Amplitudes.Length) + 1;
+
     public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
     {
+        if (requests.Count > 0)
+        {
+            var qubits = requests.Max(CoinQubits);
+            SimulatorCapacity.Check($"a coin over {requests.Max(r => r.Amplitudes.Length)} subpixels", qubits, qubits, MaxQubits);
+        }
         var heads = new int[requests.Count];
         Run(requests, r => (double)r.Queries * r.Amplitudes.Length, CoinOperation, CoinExpression, (chunk, start, json) =>
         {
@@ -38,6 +57,12 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
 
     public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests)
     {
+        if (requests.Count > 0)
+        {
+            var widest = requests.MaxBy(QssQubits)!;
+            var qubits = QssQubits(widest);
+            SimulatorCapacity.Check($"a QSS readout with {widest.CounterBits} counter bits over {widest.Amplitudes.Length} subpixels", qubits, qubits, MaxQubits);
+        }
         var readouts = new int[requests.Count][];
         Run(requests, r => (double)r.Shots * QssRequest.QueriesPerRun(r.CounterBits) * r.Amplitudes.Length, QssOperation, QssExpression, (chunk, start, json) =>
         {

@@ -5,7 +5,9 @@ namespace QuantumRayTracing.Scenes.Generation;
 /// box needs at least 8 primitives and a 5-bit grid). In a cube of side 2^c the rectangles take turns
 /// facing z, x and y; each sits on one of the planes 1 … 2^c − 1 and spans the cube less an inset
 /// that grows each time the planes run out; past that they repeat, which a sweep does not mind. The
-/// camera looks along +z from just inside the z = 0 face, so camera rays meet every orientation.
+/// camera looks along +z from just inside the z = 0 face, so camera rays meet every orientation. It stands
+/// half a unit off the grid on every axis: at the cube's centre line it would lie on the x and y planes
+/// through the centre, inside the rectangles there, which a scene may not have.
 /// </summary>
 public static class SweepScene
 {
@@ -17,9 +19,10 @@ public static class SweepScene
         var side = 1 << coordinateBits;
         var top = side - 1;
         var centre = side / 2.0;
+        var eye = centre + 0.5;
         var scene = new SceneBuilder($"sweep scene, {primitives} primitives, {coordinateBits}-bit grid", integerBits: coordinateBits)
             .Material("white", 0.75, 0.75, 0.75)
-            .Camera([centre, centre, 0.5], [centre, centre, top], 60)
+            .Camera([eye, eye, 0.5], [eye, eye, top], 60)
             .Light(centre, centre, 1, 10);
         var planes = top;          // 1 … 2^c − 1
         var insets = side / 2;     // spans [j, top − j] with j < side / 2 keep min < max
