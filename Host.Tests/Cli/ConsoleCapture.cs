@@ -2,31 +2,19 @@ using QuantumRayTracing.Cli;
 
 namespace QuantumRayTracing.Tests.Cli;
 
-/// <summary>Runs a command with standard error captured; one run at a time, since the console's error writer is global.</summary>
+/// <summary>Runs a command with its console output captured; one run at a time, since the console's writers are global.</summary>
 internal static class ConsoleCapture
 {
     private static readonly Lock Gate = new();
 
     public static (int Code, string Error) Run(params string[] args)
     {
-        lock (Gate)
-        {
-            var saved = Console.Error;
-            var error = new StringWriter();
-            Console.SetError(error);
-            try
-            {
-                return (CommandLine.Run(args), error.ToString());
-            }
-            finally
-            {
-                Console.SetError(saved);
-            }
-        }
+        var (code, _, error) = RunCapturingOutput(args);
+        return (code, error);
     }
 
     /// <summary>
-    /// The same with standard output captured too. Spectre.Console keeps the writer it found first, so what a
+    /// Standard output and error of one run. Spectre.Console keeps the writer it found first, so what a
     /// command prints through it is not captured; the commands print nothing through it before they fail on bad input.
     /// </summary>
     public static (int Code, string Output, string Error) RunCapturingOutput(params string[] args)
