@@ -8,9 +8,9 @@ namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>
 /// The ray searches a soak renders with, one per render, built as `render` builds them
-/// (<see cref="EngineOptions.CreateHitSearch"/>) except that the fullstate and gate engines share one
-/// bridge pool for the whole soak: each render would otherwise start and compile fresh Node bridges,
-/// seconds per render. Disposing stops the bridges.
+/// (<see cref="EngineOptions.CreateHitSearch"/>), with the fullstate and gate engines on one bridge pool
+/// for the whole soak: each render would otherwise start and compile fresh Node bridges, seconds per
+/// render. Disposing stops the bridges.
 /// </summary>
 public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultMaxQubits) : IDisposable
 {
@@ -19,13 +19,10 @@ public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultM
     /// <summary>A fresh search for one render on <paramref name="kind"/>, its randomness forked from <paramref name="seed"/>.</summary>
     public IHitSearch Create(EngineKind kind, ulong seed)
     {
-        var root = new SeededRandom(seed);
-        return kind switch
-        {
-            EngineKind.FullState => new QuantumHitSearch(new Lent(new FullStateEngine(Pool)), root.Fork(RandomStreams.Search), new QSearchOptions()),
-            EngineKind.Gate => new QuantumHitSearch(new Lent(new GateEngine(Pool, maxQubits: maxQubits)), root.Fork(RandomStreams.Search), new QSearchOptions(), gateLevel: true),
-            _ => EngineOptions.CreateHitSearch(kind, root, workers, new QSearchOptions(), maxQubits),
-        };
+        var simulated = kind is EngineKind.FullState or EngineKind.Gate;
+        // The limit is the gate engine's; fullstate keeps the widest state the machine holds.
+        return EngineOptions.CreateHitSearch(kind, new SeededRandom(seed), workers, new QSearchOptions(),
+            kind == EngineKind.Gate ? maxQubits : null, simulated ? Pool : null);
     }
 
     private BridgePool Pool => _pool ??= new BridgePool(workers);
@@ -39,14 +36,4 @@ public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultM
     }
 
     public void Dispose() => _pool?.Dispose();
-
-    /// <summary>An engine over the shared pool that a search may dispose without stopping the bridges.</summary>
-    private sealed class Lent(IGroverEngine engine) : IGroverEngine
-    {
-        public string Name => engine.Name;
-
-        public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests) => engine.Measure(requests);
-
-        public void Dispose() { }
-    }
 }

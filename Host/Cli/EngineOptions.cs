@@ -85,20 +85,23 @@ public sealed class EngineOptions
     public IGroverEngine Create(ParseResult parse) =>
         Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits));
 
-    /// <summary>A Grover engine; <paramref name="maxQubits"/> null keeps the engine's own limit.</summary>
-    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null) => kind switch
+    /// <summary>
+    /// A Grover engine; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines start
+    /// bridges of their own, or use <paramref name="pool"/> without stopping it when they are disposed.
+    /// </summary>
+    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null, BridgePool? pool = null) => kind switch
     {
-        EngineKind.FullState => new FullStateEngine(new BridgePool(workers), maxQubits: maxQubits),
-        EngineKind.Gate => new GateEngine(new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits),
+        EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null),
+        EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null),
         EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
     };
 
     /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>
-    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null) => kind switch
+    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null) => kind switch
     {
         EngineKind.FullState or EngineKind.Analytic or EngineKind.Gate =>
-            new QuantumHitSearch(Create(kind, root, workers, maxQubits), root.Fork(RandomStreams.Search), options, gateLevel: kind == EngineKind.Gate),
+            new QuantumHitSearch(Create(kind, root, workers, maxQubits, pool), root.Fork(RandomStreams.Search), options, gateLevel: kind == EngineKind.Gate),
         EngineKind.Classical => new ClassicalHitSearch(),
         EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),

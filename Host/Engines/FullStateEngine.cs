@@ -12,7 +12,7 @@ namespace QuantumRayTracing.Engines;
 /// <see cref="SearchRegisters"/>). Measurement outcomes come from the simulator and cannot be seeded.
 /// A batch holding a search wider than <see cref="MaxQubits"/> is refused before any of it is sent.
 /// </summary>
-public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null) : IGroverEngine
+public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null, bool ownsPool = true) : IGroverEngine
 {
     /// <summary>Large enough to amortise the ~60 ms compile of every QDK call, small enough to spread over workers.</summary>
     public const int DefaultMaxRequestsPerCall = 500;
@@ -60,6 +60,9 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
 
     public BridgePool Pool => pool;
 
-    /// <summary>Stops the engine's bridges.</summary>
-    public void Dispose() => pool.Dispose();
+    /// <summary>Stops the engine's bridges, unless the pool is shared (<c>ownsPool</c> false).</summary>
+    public void Dispose()
+    {
+        if (ownsPool) pool.Dispose();
+    }
 }

@@ -14,7 +14,7 @@ namespace QuantumRayTracing.Engines;
 /// input. Batches are cut and spread over the workers as in <see cref="FullStateEngine"/>, with each
 /// call also held to a simulation budget (<see cref="MaxCostPerCall"/>).
 /// </summary>
-public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall, int maxQubits = GateEngine.DefaultMaxQubits) : IGroverEngine
+public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall, int maxQubits = GateEngine.DefaultMaxQubits, bool ownsPool = true) : IGroverEngine
 {
     /// <summary>
     /// Default of <see cref="MaxQubits"/>. The QDK's simulator is sparse: it stores only the nonzero
@@ -131,6 +131,9 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
 
     public BridgePool Pool => pool;
 
-    /// <summary>Stops the engine's bridges.</summary>
-    public void Dispose() => pool.Dispose();
+    /// <summary>Stops the engine's bridges, unless the pool is shared (<c>ownsPool</c> false).</summary>
+    public void Dispose()
+    {
+        if (ownsPool) pool.Dispose();
+    }
 }
