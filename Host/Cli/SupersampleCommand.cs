@@ -246,7 +246,7 @@ public sealed class SupersampleCommand : Command
     // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
     private static string Registers(SupersampleSettings settings)
     {
-        var index = (int)Math.Ceiling(Math.Log2(settings.Subpixels));
+        var index = CoinRegisters.SubpixelQubits(settings.Subpixels);
         var counter = settings.Method == SupersampleMethod.Qss ? $" + {settings.CounterBitsOrDefault} counter" : "";
         return settings.Method == SupersampleMethod.Mc
             ? "each query samples one random subpixel"

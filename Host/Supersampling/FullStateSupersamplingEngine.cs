@@ -25,14 +25,9 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     /// <summary>Qubits a circuit may use: by default the widest dense state this machine holds (<see cref="SimulatorCapacity"/>).</summary>
     public int MaxQubits { get; } = maxQubits ?? SimulatorCapacity.DefaultMaxQubits(pool.Workers);
 
-    /// <summary>Subpixel qubits for N subpixels, as the Q# <c>SubpixelQubits</c>: ceil(log2 N).</summary>
-    public static int SubpixelQubits(int count) => count <= 1 ? 0 : 32 - int.LeadingZeroCount(count - 1);
+    private static int CoinQubits(CoinRequest request) => CoinRegisters.Coin(request.Amplitudes.Length);
 
-    /// <summary>A coin circuit's qubits: the subpixel register and the coin, every one of them superposed.</summary>
-    public static int CoinQubits(CoinRequest request) => SubpixelQubits(request.Amplitudes.Length) + 1;
-
-    /// <summary>A QSS readout's qubits: the counter, the subpixel register and the coin.</summary>
-    public static int QssQubits(QssRequest request) => request.CounterBits + SubpixelQubits(request.Amplitudes.Length) + 1;
+    private static int QssQubits(QssRequest request) => CoinRegisters.Qss(request.Amplitudes.Length, request.CounterBits);
 
     public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
     {

@@ -40,7 +40,7 @@ public sealed record SupersampleSettings(
 
     public int CounterBitsOrDefault => CounterBits ?? (QssValues == QssValues.Continuous
         ? DefaultContinuousCounterBits
-        : Math.Max(1, (int)Math.Ceiling(Math.Log2(Subpixels))));
+        : Math.Max(1, CoinRegisters.SubpixelQubits(Subpixels)));
 
     /// <summary>True when QSS reads bit planes through a lookup table (and so gives a confidence map).</summary>
     public bool UsesLookupTable => Method == SupersampleMethod.Qss && QssValues == QssValues.Planes;
