@@ -1,11 +1,10 @@
 namespace QuantumRayTracing.Output;
 
 /// <summary>
-/// The rules for PNGs a command writes: the directory must exist, an existing file is replaced only
-/// if this program wrote it (its PNG carries <see cref="PngEncoder.Software"/>), an output never
-/// replaces an input, two outputs of one command never share a path, and the directory accepts new
-/// files. Checked before any work starts, so a bad path fails fast; the files are written only at the
-/// end, each atomically.
+/// The rules for PNGs a command writes: those of every output (<see cref="OutputFile"/>; a PNG is this
+/// program's when it carries <see cref="PngEncoder.Software"/>), and besides, an output never replaces an
+/// input and two outputs of one command never share a path. Checked before any work starts, so a bad path
+/// fails fast; the files are written only at the end, all or none.
 /// </summary>
 public static class ImageFiles
 {
@@ -17,19 +16,12 @@ public static class ImageFiles
         foreach (var output in outputs)
         {
             var full = Path.GetFullPath(output);
-            var directory = Path.GetDirectoryName(full)!;
-            if (!Directory.Exists(directory))
-                throw new UserError($"{output}: directory {directory} does not exist");
             if (inputPaths.Contains(full))
                 throw new UserError($"{output}: is an input of this command and would be overwritten");
             if (!seen.Add(full))
                 throw new UserError($"{output}: named for two outputs of this command");
-            if (Directory.Exists(full))
-                throw new UserError($"{output}: is a directory");
-            if (File.Exists(full) && !PngEncoder.IsWrittenHere(full))
-                throw new UserError($"{output}: exists and was not written by this program; choose another output or remove it");
-            if (AtomicFile.CannotCreateBeside(full) is { } reason)
-                throw new UserError($"{output}: cannot write in directory {directory}: {reason}");
+            OutputFile.EnsureReplaceable(output, PngEncoder.IsWrittenHere,
+                "exists and was not written by this program; choose another output or remove it");
         }
     }
 
