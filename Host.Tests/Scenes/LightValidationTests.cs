@@ -19,21 +19,10 @@ public class LightValidationTests
         }
         """;
 
-    private static SceneError Reject(Action<JsonObject> edit)
-    {
-        var scene = JsonNode.Parse(Valid)!.AsObject();
-        edit(scene);
-        return Assert.Throws<SceneError>(() => SceneLoader.Parse(scene.ToJsonString(), "bad.json"));
-    }
+    private static SceneError Reject(Action<JsonObject> edit) => SceneRejection.Reject(Valid, edit);
 
-    private static void AssertError(SceneError error, string element, string problemPart)
-    {
-        Assert.Equal("bad.json", error.File);
-        Assert.Equal(element, error.Element);
-        Assert.Contains(problemPart, error.Problem);
-        Assert.DoesNotContain('\n', error.Message);
-        Assert.StartsWith($"bad.json: {element}: ", error.Message);
-    }
+    private static void AssertError(SceneError error, string element, string problemPart) =>
+        SceneRejection.AssertError(error, element, problemPart);
 
     private static JsonNode Area(JsonObject s) => s["areaLights"]![0]!;
 

@@ -19,20 +19,10 @@ public class SceneLoaderTests
         }
         """;
 
-    private static SceneError Reject(Action<JsonObject> edit)
-    {
-        var scene = JsonNode.Parse(Valid)!.AsObject();
-        edit(scene);
-        return Assert.Throws<SceneError>(() => SceneLoader.Parse(scene.ToJsonString(), "bad.json"));
-    }
+    private static SceneError Reject(Action<JsonObject> edit) => SceneRejection.Reject(Valid, edit);
 
-    private static void AssertError(SceneError error, string element, string problemPart)
-    {
-        Assert.Equal("bad.json", error.File);
-        Assert.Equal(element, error.Element);
-        Assert.Contains(problemPart, error.Problem);
-        Assert.DoesNotContain('\n', error.Message);
-    }
+    private static void AssertError(SceneError error, string element, string problemPart) =>
+        SceneRejection.AssertError(error, element, problemPart);
 
     [Fact]
     public void ValidSceneLoads()
