@@ -4,6 +4,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
+using static QuantumRayTracing.Tests.Rendering.OnePixelRender;
 
 namespace QuantumRayTracing.Tests.Rendering;
 
@@ -61,13 +62,6 @@ public class AreaLightTests
             sum += 4 * h * h / (d2 * d2) / count * Radiance;
         }
         return Albedo * sum;
-    }
-
-    private static void AssertClose(Vec3 expected, Vec3 actual)
-    {
-        Assert.Equal(expected.X, actual.X, 12);
-        Assert.Equal(expected.Y, actual.Y, 12);
-        Assert.Equal(expected.Z, actual.Z, 12);
     }
 
     [Theory]

@@ -2,6 +2,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
+using static QuantumRayTracing.Tests.Rendering.OnePixelRender;
 
 namespace QuantumRayTracing.Tests.Rendering;
 
@@ -16,19 +17,6 @@ public class DirectionalLightTests
         $$"""
         "directionalLights": [ { "direction": {{direction}}, "irradiance": [1, 2, 3] } ],
         """;
-
-    private static RenderResult Render(Scene scene)
-    {
-        using var search = new ClassicalHitSearch();
-        return SceneRenderer.Render(scene, search, new RenderOptions(1, 1));
-    }
-
-    private static void AssertClose(Vec3 expected, Vec3 actual)
-    {
-        Assert.Equal(expected.X, actual.X, 12);
-        Assert.Equal(expected.Y, actual.Y, 12);
-        Assert.Equal(expected.Z, actual.Z, 12);
-    }
 
     [Fact]
     public void VisibleLightGivesIrradianceTimesCosine()

@@ -5,6 +5,7 @@ using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Shading;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
+using static QuantumRayTracing.Tests.Rendering.OnePixelRender;
 
 namespace QuantumRayTracing.Tests.Shading;
 
@@ -31,19 +32,6 @@ public class ShadingTests
     private static byte Byte(double linear) => (byte)Math.Round(Math.Min(1, Math.Pow(linear, 1 / 2.2)) * 255, MidpointRounding.AwayFromZero);
 
     private static (byte, byte, byte) Pixel(Vec3 radiance) => (Byte(radiance.X), Byte(radiance.Y), Byte(radiance.Z));
-
-    private static RenderResult Render(Scene scene)
-    {
-        using var search = new ClassicalHitSearch();
-        return SceneRenderer.Render(scene, search, new RenderOptions(1, 1));
-    }
-
-    private static void AssertClose(Vec3 expected, Vec3 actual)
-    {
-        Assert.Equal(expected.X, actual.X, 12);
-        Assert.Equal(expected.Y, actual.Y, 12);
-        Assert.Equal(expected.Z, actual.Z, 12);
-    }
 
     [Fact]
     public void RadianceIsAlbedoTimesAmbientPlusVisibleLights()
