@@ -16,7 +16,7 @@ public sealed class BenchLightsCommandTests : IDisposable
     [Fact]
     public void WritesTheReportAndItsImages()
     {
-        Assert.Equal(0, CommandLine.Run(Run("lights.md")));
+        Assert.Equal(0, ConsoleCapture.Run(Run("lights.md")).Code);
         var text = File.ReadAllText(Path.Combine(_scratch.Path, "lights.md"));
         Assert.StartsWith(GeneratedReport.MarkdownMarker(BenchLightsCommand.CommandLine), text);
         Assert.Contains("paper: 21.8 Int/Ray against 64.0", text);
@@ -26,7 +26,7 @@ public sealed class BenchLightsCommandTests : IDisposable
         Assert.All(images, name => Assert.Contains($"]({name})", text));
         Assert.All(images, name => Assert.True(PngEncoder.IsWrittenHere(Path.Combine(_scratch.Path, name!))));
         // A second run replaces its own files.
-        Assert.Equal(0, CommandLine.Run(Run("lights.md")));
+        Assert.Equal(0, ConsoleCapture.Run(Run("lights.md")).Code);
     }
 
     [Fact]
@@ -34,7 +34,7 @@ public sealed class BenchLightsCommandTests : IDisposable
     {
         var foreign = Path.Combine(_scratch.Path, "lights-area-quantum.png");
         File.WriteAllText(foreign, "someone else's");
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(Run("lights.md")));
+        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(Run("lights.md")).Code);
         Assert.Equal("someone else's", File.ReadAllText(foreign));
         Assert.False(File.Exists(Path.Combine(_scratch.Path, "lights.md")));
     }

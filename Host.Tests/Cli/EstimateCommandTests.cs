@@ -16,13 +16,13 @@ public sealed class EstimateCommandTests : IDisposable
 
     [Fact]
     public void EstimatesOnePixelsRay() =>
-        Assert.Equal(0, CommandLine.Run(["estimate", Scene, "--pixel", "3,4", "--size", "8", "--no-circuit", "--format", "csv", "--workers", "1"]));
+        Assert.Equal(0, ConsoleCapture.Run(["estimate", Scene, "--pixel", "3,4", "--size", "8", "--no-circuit", "--format", "csv", "--workers", "1"]).Code);
 
     [Theory]
     [InlineData("--pixel", "8,0")]  // outside the 8x8 image: bad input
     [InlineData("--pixel", "0,8")]
     public void PixelOutsideTheImageIsBadInput(string option, string value) =>
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["estimate", Scene, option, value, "--size", "8", "--workers", "1"]));
+        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", Scene, option, value, "--size", "8", "--workers", "1"]).Code);
 
     [Theory]
     [InlineData("--pixel", "1,2", "--worst-case")]
@@ -34,13 +34,13 @@ public sealed class EstimateCommandTests : IDisposable
     [InlineData("--iterations", "-1")]
     [InlineData("--iterations", "many")]
     public void UsageErrors(params string[] options) =>
-        Assert.Equal(1, CommandLine.Run(["estimate", Scene, .. options]));
+        Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
 
     [Fact]
     public void SweepWritesItsReportWithThePapersFigure()
     {
         var output = Path.Combine(_scratch.Path, "estimates.md");
-        Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         var lines = File.ReadAllLines(output);
         Assert.Equal(GeneratedReport.MarkdownMarker(EstimateSweepCommand.CommandLine), lines[0]);
         Assert.Contains("| paper (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
@@ -51,7 +51,7 @@ public sealed class EstimateCommandTests : IDisposable
         foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
             Assert.Equal(800, Output.PngTestDecoder.Decode(File.ReadAllBytes(Path.Combine(_scratch.Path, png))).Image.Width);
         // Regenerating replaces the file this command wrote.
-        Assert.Equal(0, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));
     }
 
@@ -70,7 +70,7 @@ public sealed class EstimateCommandTests : IDisposable
     {
         var output = Path.Combine(_scratch.Path, "notes.md");
         File.WriteAllText(output, "# my notes\n");
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]));
+        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]).Code);
         Assert.Equal("# my notes\n", File.ReadAllText(output));
     }
 }

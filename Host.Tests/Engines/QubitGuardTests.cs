@@ -1,5 +1,6 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Cli;
+using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Rays;
@@ -73,7 +74,7 @@ public sealed class QubitGuardTests
         {
             var output = Path.Combine(scratch, "gate.png");
             var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-            Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "--engine", "gate", "--size", "2", "--max-qubits", "20", "-o", output]));
+            Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["render", scene, "--engine", "gate", "--size", "2", "--max-qubits", "20", "-o", output]).Code);
             Assert.Empty(Directory.GetFiles(scratch));
         }
         finally
@@ -86,5 +87,5 @@ public sealed class QubitGuardTests
     [InlineData("0")]
     [InlineData("many")]
     public void MaxQubitsMustBeAPositiveNumber(string value) =>
-        Assert.Equal(1, CommandLine.Run(["render", "--engine", "gate", "--max-qubits", value]));
+        Assert.Equal(1, ConsoleCapture.Run(["render", "--engine", "gate", "--max-qubits", value]).Code);
 }
