@@ -8,5 +8,8 @@ public sealed class ScratchDirectory(string prefix) : IDisposable
     /// <summary>The path of <paramref name="name"/> inside the directory.</summary>
     public string File(string name) => System.IO.Path.Combine(Path, name);
 
+    /// <summary>The names of the files in the directory, in order: what a command left behind.</summary>
+    public string[] FileNames() => Directory.GetFiles(Path).Select(System.IO.Path.GetFileName).Order().ToArray()!;
+
     public void Dispose() => Directory.Delete(Path, recursive: true);
 }

@@ -16,12 +16,6 @@ public sealed class RenderCommandTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    private string Scratch(string name) => _scratch.File(name);
-
-    private string[] Files() => Directory.GetFiles(_scratch.Path).Select(Path.GetFileName).Order().ToArray()!;
-
-    private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
-
     private static RgbImage Classical(int size)
     {
         using var search = new ClassicalHitSearch();
@@ -31,31 +25,31 @@ public sealed class RenderCommandTests : IDisposable
     [Fact]
     public void ClassicalRenderWritesAnImageOfTheRequestedSize()
     {
-        var output = Scratch("x.png");
+        var output = _scratch.File("x.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "--engine", "classical", "--size", "8", "-o", output]));
-        var image = Decode(output);
+        var image = PngTestDecoder.ReadImage(output);
         Assert.Equal((8, 8), (image.Width, image.Height));
         Assert.True(image.Pixels.SequenceEqual(Classical(8).Pixels));
-        Assert.Equal(["x.png"], Files());
+        Assert.Equal(["x.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void NonSquareSize()
     {
-        var output = Scratch("wide.png");
+        var output = _scratch.File("wide.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "6x3", "-o", output]));
-        Assert.Equal((6, 3), (Decode(output).Width, Decode(output).Height));
+        Assert.Equal((6, 3), (PngTestDecoder.ReadImage(output).Width, PngTestDecoder.ReadImage(output).Height));
     }
 
     [Fact]
     public void ClassicalImageIsTheReference()
     {
-        var output = Scratch("c.png");
+        var output = _scratch.File("c.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", output]));
-        Assert.Equal(["c-difference.png", "c-reference.png", "c.png"], Files());
-        Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(Scratch("c-reference.png")));
-        var difference = Decode(Scratch("c-difference.png"));
-        var reference = Decode(output);
+        Assert.Equal(["c-difference.png", "c-reference.png", "c.png"], _scratch.FileNames());
+        Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(_scratch.File("c-reference.png")));
+        var difference = PngTestDecoder.ReadImage(_scratch.File("c-difference.png"));
+        var reference = PngTestDecoder.ReadImage(output);
         for (var y = 0; y < 8; y++)
             for (var x = 0; x < 8; x++)
             {
@@ -68,12 +62,12 @@ public sealed class RenderCommandTests : IDisposable
     public void ReferenceAndDifferenceImagesOfAQuantumRender()
     {
         // One pass and one shadow round on the analytic engine, without the neighbour tricks, leave wrong pixels to mark.
-        var output = Scratch("q.png");
+        var output = _scratch.File("q.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "analytic", "--seed", "3", "--size", "12", "--passes", "1", "--shadow-passes", "1",
             "--neighbours", "false", "--shadow-neighbours", "false", "--stop", "off", "--lattice", "0", "--reference", "-o", output]));
-        var image = Decode(output);
-        var reference = Decode(Scratch("q-reference.png"));
-        var difference = Decode(Scratch("q-difference.png"));
+        var image = PngTestDecoder.ReadImage(output);
+        var reference = PngTestDecoder.ReadImage(_scratch.File("q-reference.png"));
+        var difference = PngTestDecoder.ReadImage(_scratch.File("q-difference.png"));
         Assert.True(reference.Pixels.SequenceEqual(Classical(12).Pixels));
         var wrong = 0;
         for (var y = 0; y < 12; y++)
@@ -90,10 +84,10 @@ public sealed class RenderCommandTests : IDisposable
     [Fact]
     public void OwnPngIsReplaced()
     {
-        var output = Scratch("x.png");
+        var output = _scratch.File("x.png");
         PngEncoder.Write(new RgbImage(2, 2), output);
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
-        Assert.Equal(8, Decode(output).Width);
+        Assert.Equal(8, PngTestDecoder.ReadImage(output).Width);
     }
 
     [Fact]
@@ -102,7 +96,7 @@ public sealed class RenderCommandTests : IDisposable
         var output = Path.Combine(_scratch.Path, "missing", "x.png");
         Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
         Assert.False(Directory.Exists(Path.Combine(_scratch.Path, "missing")));
-        Assert.Empty(Files());
+        Assert.Empty(_scratch.FileNames());
     }
 
     [Theory]
@@ -110,32 +104,32 @@ public sealed class RenderCommandTests : IDisposable
     [InlineData(new byte[] { 0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13 })] // a PNG start without our marker
     public void ForeignFileIsNotOverwritten(byte[] content)
     {
-        var output = Scratch("x.png");
+        var output = _scratch.File("x.png");
         File.WriteAllBytes(output, content);
         Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
         Assert.Equal(content, File.ReadAllBytes(output));
-        Assert.Equal(["x.png"], Files());
+        Assert.Equal(["x.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void ForeignFileAtASiblingOutputStopsEveryOutput()
     {
-        var difference = Scratch("x-difference.png");
+        var difference = _scratch.File("x-difference.png");
         File.WriteAllText(difference, "someone else's");
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", Scratch("x.png")]));
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
         Assert.Equal("someone else's", File.ReadAllText(difference));
-        Assert.Equal(["x-difference.png"], Files());
+        Assert.Equal(["x-difference.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void OutputOverTheInputSceneIsRefused()
     {
-        var scene = Scratch("scene.json");
+        var scene = _scratch.File("scene.json");
         File.Copy(Scene, scene);
         var before = File.ReadAllBytes(scene);
         Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "-o", scene]));
         Assert.Equal(before, File.ReadAllBytes(scene));
-        Assert.Equal(["scene.json"], Files());
+        Assert.Equal(["scene.json"], _scratch.FileNames());
     }
 
     [Theory]
@@ -150,25 +144,25 @@ public sealed class RenderCommandTests : IDisposable
     [InlineData("--growth", "2")]
     public void UsageErrorsExitWithOne(string option, string value)
     {
-        Assert.Equal(1, CommandLine.Run(["render", Scene, "-e", "classical", option, value, "-o", Scratch("x.png")]));
-        Assert.Empty(Files());
+        Assert.Equal(1, CommandLine.Run(["render", Scene, "-e", "classical", option, value, "-o", _scratch.File("x.png")]));
+        Assert.Empty(_scratch.FileNames());
     }
 
     [Fact]
     public void SceneWithAnErrorExitsWithTwoAndWritesNothing()
     {
         // x = 40 is off the 5-bit grid 0..31.
-        var scene = Scratch("bad.json");
+        var scene = _scratch.File("bad.json");
         File.WriteAllText(scene, File.ReadAllText(Scene).Replace("\"max\": [16, 0, 30]", "\"max\": [40, 0, 30]"));
         Assert.NotEqual(File.ReadAllText(Scene), File.ReadAllText(scene));
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", Scratch("x.png")]));
-        Assert.Equal(["bad.json"], Files());
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
+        Assert.Equal(["bad.json"], _scratch.FileNames());
     }
 
     [Fact]
     public void MissingSceneExitsWithTwo()
     {
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scratch("nowhere.json"), "-e", "classical", "-o", Scratch("x.png")]));
-        Assert.Empty(Files());
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", _scratch.File("nowhere.json"), "-e", "classical", "-o", _scratch.File("x.png")]));
+        Assert.Empty(_scratch.FileNames());
     }
 }

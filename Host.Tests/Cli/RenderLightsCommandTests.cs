@@ -17,12 +17,6 @@ public sealed class RenderLightsCommandTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    private string Scratch(string name) => _scratch.File(name);
-
-    private string[] Files() => Directory.GetFiles(_scratch.Path).Select(Path.GetFileName).Order().ToArray()!;
-
-    private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
-
     [Theory]
     [InlineData("--area-samples", "0")]
     [InlineData("--area-samples", "4097")]
@@ -31,38 +25,38 @@ public sealed class RenderLightsCommandTests : IDisposable
     [InlineData("--reference-samples", "-1")]
     public void UsageErrorsExitWithOne(string option, string value)
     {
-        Assert.Equal(1, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "4", option, value, "-o", Scratch("x.png")]));
-        Assert.Empty(Files());
+        Assert.Equal(1, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "4", option, value, "-o", _scratch.File("x.png")]));
+        Assert.Empty(_scratch.FileNames());
     }
 
     [Fact]
     public void ReferenceWritesTheConvergedImageToo()
     {
-        var output = Scratch("x.png");
+        var output = _scratch.File("x.png");
         Assert.Equal(0, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "6", "--area-samples", "2", "--reference-samples", "8",
             "--seed", "3", "--reference", "-o", output]));
-        Assert.Equal(["x-converged.png", "x-difference.png", "x-reference.png", "x.png"], Files());
+        Assert.Equal(["x-converged.png", "x-difference.png", "x-reference.png", "x.png"], _scratch.FileNames());
         using var classical = new ClassicalHitSearch();
         var converged = SceneRenderer.Render(Load("qornell-64-area.json"), classical, new RenderOptions(6, 6, Seed: 3, AreaSamples: 8)).Image;
-        Assert.True(Decode(Scratch("x-converged.png")).Pixels.SequenceEqual(converged.Pixels));
-        Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(Scratch("x-reference.png")));
+        Assert.True(PngTestDecoder.ReadImage(_scratch.File("x-converged.png")).Pixels.SequenceEqual(converged.Pixels));
+        Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(_scratch.File("x-reference.png")));
     }
 
     [Fact]
     public void ZeroReferenceSamplesSkipsTheConvergedReference()
     {
         Assert.Equal(0, CommandLine.Run(["render", TempleScene, "-e", "analytic", "--size", "6", "--vpl", "2", "--reference-samples", "0",
-            "--reference", "-o", Scratch("t.png")]));
-        Assert.Equal(["t-difference.png", "t-reference.png", "t.png"], Files());
+            "--reference", "-o", _scratch.File("t.png")]));
+        Assert.Equal(["t-difference.png", "t-reference.png", "t.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void SceneWithABadAreaLightExitsWithTwo()
     {
-        var scene = Scratch("bad.json");
+        var scene = _scratch.File("bad.json");
         File.WriteAllText(scene, File.ReadAllText(AreaScene).Replace("\"radiance\": [6, 6, 6]", "\"radiance\": [6, -6, 6]"));
         Assert.NotEqual(File.ReadAllText(AreaScene), File.ReadAllText(scene));
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "4", "-o", Scratch("x.png")]));
-        Assert.Equal(["bad.json"], Files());
+        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "4", "-o", _scratch.File("x.png")]));
+        Assert.Equal(["bad.json"], _scratch.FileNames());
     }
 }

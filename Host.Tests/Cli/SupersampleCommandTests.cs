@@ -19,12 +19,6 @@ public sealed class SupersampleCommandTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    private string Scratch(string name) => _scratch.File(name);
-
-    private string[] Files() => Directory.GetFiles(_scratch.Path).Select(Path.GetFileName).Order().ToArray()!;
-
-    private static RgbImage Decode(string path) => PngTestDecoder.Decode(File.ReadAllBytes(path)).Image;
-
     private static (int Code, string Error) Run(params string[] args) => ConsoleCapture.Run(args);
 
     private string WriteImage(string name, int width, int height, Func<int, int, (byte, byte, byte)> colour)
@@ -36,7 +30,7 @@ public sealed class SupersampleCommandTests : IDisposable
                 var (r, g, b) = colour(x, y);
                 image.SetPixel(x, y, r, g, b);
             }
-        var path = Scratch(name);
+        var path = _scratch.File(name);
         PngEncoder.Write(image, path);
         return path;
     }
@@ -58,10 +52,10 @@ public sealed class SupersampleCommandTests : IDisposable
     public void EveryMethodReproducesBlackAndWhiteBlocksExactly(string method, params string[] extra)
     {
         var input = WriteImage("in.png", 8, 6, BlackOrWhiteBlocks);
-        var output = Scratch("out.png");
+        var output = _scratch.File("out.png");
         var (code, error) = Run(["supersample", "--image", input, "--subpixels", "2", "-m", method, .. extra, "-o", output]);
         Assert.True(code == 0, error);
-        var image = Decode(output);
+        var image = PngTestDecoder.ReadImage(output);
         Assert.Equal((4, 3), (image.Width, image.Height));
         for (var y = 0; y < 3; y++)
             for (var x = 0; x < 4; x++)
@@ -72,8 +66,8 @@ public sealed class SupersampleCommandTests : IDisposable
     public void BitPlaneQssWritesAGreyConfidenceMapAndMonteCarloNone()
     {
         var input = WriteImage("in.png", 8, 8, (x, y) => ((byte)(x * 30), (byte)(y * 30), (byte)(x * y * 4)));
-        Assert.Equal(0, Run("supersample", "--image", input, "--subpixels", "4", "-o", Scratch("q.png")).Code);
-        var map = Decode(Scratch("q-confidence.png"));
+        Assert.Equal(0, Run("supersample", "--image", input, "--subpixels", "4", "-o", _scratch.File("q.png")).Code);
+        var map = PngTestDecoder.ReadImage(_scratch.File("q-confidence.png"));
         Assert.Equal((2, 2), (map.Width, map.Height));
         for (var y = 0; y < 2; y++)
             for (var x = 0; x < 2; x++)
@@ -81,30 +75,30 @@ public sealed class SupersampleCommandTests : IDisposable
                 var (r, g, b) = map.GetPixel(x, y);
                 Assert.True(r == g && g == b && r > 0, $"confidence pixel ({x}, {y}) is ({r}, {g}, {b})");
             }
-        Assert.Equal(0, Run("supersample", "--image", input, "--subpixels", "4", "-m", "mc", "-o", Scratch("m.png")).Code);
-        Assert.Equal(["in.png", "m.png", "q-confidence.png", "q.png"], Files());
+        Assert.Equal(0, Run("supersample", "--image", input, "--subpixels", "4", "-m", "mc", "-o", _scratch.File("m.png")).Code);
+        Assert.Equal(["in.png", "m.png", "q-confidence.png", "q.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void SceneWithOneSubpixelIsTheClassicalRender()
     {
         // One binary subpixel per plane (N = 1, t = 1) reads its hit count with certainty: QSS returns the render itself.
-        var output = Scratch("s.png");
+        var output = _scratch.File("s.png");
         var (code, error) = Run("supersample", "--scene", Scene, "--size", "6x4", "--subpixels", "1", "-o", output);
         Assert.True(code == 0, error);
         using var classical = new ClassicalHitSearch();
         var expected = SceneRenderer.Render(Load("qornell-8.json"), classical, new RenderOptions(6, 4)).Image;
-        Assert.Equal(expected.Pixels.ToArray(), Decode(output).Pixels.ToArray());
+        Assert.Equal(expected.Pixels.ToArray(), PngTestDecoder.ReadImage(output).Pixels.ToArray());
     }
 
     [Fact]
     public void SceneIsRenderedAtSubpixelsTimesTheSize()
     {
-        var output = Scratch("s.png");
+        var output = _scratch.File("s.png");
         Assert.Equal(0, Run("supersample", "--scene", Scene, "--size", "5x3", "--subpixels", "3", "-m", "mc", "-o", output).Code);
-        Assert.Equal((5, 3), (Decode(output).Width, Decode(output).Height));
-        Assert.Equal(0, Run("supersample", "--size", "2", "--subpixels", "2", "-m", "mlae", "-o", Scratch("builtin.png")).Code);
-        Assert.Equal(2, Decode(Scratch("builtin.png")).Width);
+        Assert.Equal((5, 3), (PngTestDecoder.ReadImage(output).Width, PngTestDecoder.ReadImage(output).Height));
+        Assert.Equal(0, Run("supersample", "--size", "2", "--subpixels", "2", "-m", "mlae", "-o", _scratch.File("builtin.png")).Code);
+        Assert.Equal(2, PngTestDecoder.ReadImage(_scratch.File("builtin.png")).Width);
     }
 
     [Theory]
@@ -115,43 +109,43 @@ public sealed class SupersampleCommandTests : IDisposable
     public void SameSeedGivesTheSameBytes(string method)
     {
         var input = WriteImage("in.png", 12, 8, (x, y) => ((byte)(x * 20 + y), (byte)(100 + x * y), (byte)(255 - 9 * y)));
-        string[] Args(string output, string seed) => ["supersample", "--image", input, "-m", method, "--subpixels", "4", "--seed", seed, "-o", Scratch(output)];
+        string[] Args(string output, string seed) => ["supersample", "--image", input, "-m", method, "--subpixels", "4", "--seed", seed, "-o", _scratch.File(output)];
         Assert.Equal(0, Run(Args("a.png", "7")).Code);
         Assert.Equal(0, Run(Args("b.png", "7")).Code);
         Assert.Equal(0, Run(Args("c.png", "8")).Code);
-        Assert.Equal(File.ReadAllBytes(Scratch("a.png")), File.ReadAllBytes(Scratch("b.png")));
-        Assert.NotEqual(File.ReadAllBytes(Scratch("a.png")), File.ReadAllBytes(Scratch("c.png")));
+        Assert.Equal(File.ReadAllBytes(_scratch.File("a.png")), File.ReadAllBytes(_scratch.File("b.png")));
+        Assert.NotEqual(File.ReadAllBytes(_scratch.File("a.png")), File.ReadAllBytes(_scratch.File("c.png")));
     }
 
     [Fact]
     public void ImageNotAMultipleOfTheSubpixelsIsRefused()
     {
         var input = WriteImage("in.png", 6, 8, (_, _) => (1, 2, 3));
-        var (code, error) = Run("supersample", "--image", input, "--subpixels", "4", "-o", Scratch("out.png"));
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "4", "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Equal($"error: {input}: 6x8 is not a multiple of --subpixels 4 on both sides (4x4 subpixels per output pixel); crop it to 4x8", error.Trim());
-        Assert.Equal(["in.png"], Files());
+        Assert.Equal(["in.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void DamagedImageIsOneErrorLineNamingTheFile()
     {
-        var input = Scratch("bad.png");
+        var input = _scratch.File("bad.png");
         File.WriteAllText(input, "not an image");
-        var (code, error) = Run("supersample", "--image", input, "-o", Scratch("out.png"));
+        var (code, error) = Run("supersample", "--image", input, "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Single(error.Trim().Split('\n'));
         Assert.StartsWith($"error: {input}: not a PNG", error);
-        Assert.Equal(["bad.png"], Files());
+        Assert.Equal(["bad.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void MissingImageExitsWithTwo()
     {
-        var (code, error) = Run("supersample", "--image", Scratch("nowhere.png"), "-o", Scratch("out.png"));
+        var (code, error) = Run("supersample", "--image", _scratch.File("nowhere.png"), "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Contains("nowhere.png: no such file", error);
-        Assert.Empty(Files());
+        Assert.Empty(_scratch.FileNames());
     }
 
     [Theory]
@@ -177,17 +171,17 @@ public sealed class SupersampleCommandTests : IDisposable
     public void ImpossibleCombinationsAreUsageErrors(string message, params string[] options)
     {
         var input = WriteImage("in.png", 4, 4, (_, _) => (9, 9, 9));
-        var (code, error) = Run(["supersample", "--image", input, .. options, "-o", Scratch("out.png")]);
+        var (code, error) = Run(["supersample", "--image", input, .. options, "-o", _scratch.File("out.png")]);
         Assert.Equal(1, code);
         Assert.Contains(message, error);
         Assert.Single(error.Trim().Split('\n'));
-        Assert.Equal(["in.png"], Files());
+        Assert.Equal(["in.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void ImageAndSceneTogetherAreAUsageError()
     {
-        var (code, error) = Run("supersample", "--image", Scratch("a.png"), "--scene", Scene, "-o", Scratch("out.png"));
+        var (code, error) = Run("supersample", "--image", _scratch.File("a.png"), "--scene", Scene, "-o", _scratch.File("out.png"));
         Assert.Equal(1, code);
         Assert.Contains("--image and --scene: give one input, not both", error);
     }
@@ -199,38 +193,38 @@ public sealed class SupersampleCommandTests : IDisposable
         var before = File.ReadAllBytes(input);
         Assert.Equal(CommandLine.BadInput, Run("supersample", "--image", input, "--subpixels", "2", "-o", input).Code);
         Assert.Equal(before, File.ReadAllBytes(input));
-        Assert.Equal(["in.png"], Files());
+        Assert.Equal(["in.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void ForeignFileAtTheConfidenceMapStopsEveryOutput()
     {
         var input = WriteImage("in.png", 4, 4, (x, y) => ((byte)x, (byte)y, 0));
-        File.WriteAllText(Scratch("out-confidence.png"), "someone else's");
-        var (code, error) = Run("supersample", "--image", input, "--subpixels", "2", "-o", Scratch("out.png"));
+        File.WriteAllText(_scratch.File("out-confidence.png"), "someone else's");
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "2", "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Contains("out-confidence.png: exists and was not written by this program", error);
-        Assert.Equal("someone else's", File.ReadAllText(Scratch("out-confidence.png")));
-        Assert.Equal(["in.png", "out-confidence.png"], Files());
+        Assert.Equal("someone else's", File.ReadAllText(_scratch.File("out-confidence.png")));
+        Assert.Equal(["in.png", "out-confidence.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void FullStateAboveThePixelLimitIsRefusedBeforeAnyWork()
     {
         var input = WriteImage("in.png", 17, 16, (_, _) => (5, 5, 5));
-        var (code, error) = Run("supersample", "--image", input, "--subpixels", "1", "-e", "fullstate", "-o", Scratch("out.png"));
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "1", "-e", "fullstate", "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Contains($"at most {SupersampleCommand.MaxFullStatePixels} output pixels", error);
         Assert.Contains("this input has 272", error);
-        Assert.Equal(["in.png"], Files());
+        Assert.Equal(["in.png"], _scratch.FileNames());
     }
 
     [Fact]
     public void SceneRenderAboveTheLargestSideIsRefused()
     {
-        var (code, error) = Run("supersample", "--scene", Scene, "--size", "8000", "--subpixels", "2", "-o", Scratch("out.png"));
+        var (code, error) = Run("supersample", "--scene", Scene, "--size", "8000", "--subpixels", "2", "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
         Assert.Contains("16000x16000 render", error);
-        Assert.Empty(Files());
+        Assert.Empty(_scratch.FileNames());
     }
 }

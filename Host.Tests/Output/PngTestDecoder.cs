@@ -18,6 +18,9 @@ internal static class PngTestDecoder
     public sealed record Chunk(string Type, byte[] Data);
 
     /// <summary>All chunks in file order; throws if the signature, a length or a CRC is wrong.</summary>
+    /// <summary>The image of the PNG file at <paramref name="path"/>.</summary>
+    public static RgbImage ReadImage(string path) => Decode(File.ReadAllBytes(path)).Image;
+
     public static List<Chunk> ReadChunks(byte[] png)
     {
         if (png.Length < Signature.Length || !png.AsSpan(0, Signature.Length).SequenceEqual(Signature))
