@@ -202,7 +202,7 @@ public sealed class SupersampleCommand : Command
 
     private static SubpixelImage LoadImage(FileInfo file, int s, EngineKind kind)
     {
-        var image = PngDecoder.Read(file.FullName);
+        var image = ImageReader.Read(file.FullName);
         if (image.Width % s != 0 || image.Height % s != 0)
             throw new UserError($"{file.FullName}: {image.Width}x{image.Height} is not a multiple of --subpixels {s} on both sides ({s}x{s} subpixels per output pixel)"
                 + (image.Width >= s && image.Height >= s ? $"; crop it to {image.Width / s * s}x{image.Height / s * s}" : ""));

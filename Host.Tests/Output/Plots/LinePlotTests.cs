@@ -121,12 +121,12 @@ public class LinePlotTests
         static PlotSpec Make() => Spec(AxisScale.Linear, AxisScale.Log10,
             new PlotSeries("a", Enumerable.Range(1, 50).Select(i => (i * 0.37, Math.Exp(Math.Sin(i)))).ToList()),
             new PlotSeries("b", Enumerable.Range(1, 50).Select(i => (i * 0.5, i * 1.1)).ToList(), Markers: false));
-        var first = PngEncoder.Encode(LinePlot.Render(Make()));
-        var second = PngEncoder.Encode(LinePlot.Render(Make()));
+        var first = PngWriter.Encode(LinePlot.Render(Make()));
+        var second = PngWriter.Encode(LinePlot.Render(Make()));
         Assert.Equal(first, second);
 
         var moved = Make() with { Title = "other" };
-        Assert.NotEqual(first, PngEncoder.Encode(LinePlot.Render(moved)));
+        Assert.NotEqual(first, PngWriter.Encode(LinePlot.Render(moved)));
     }
 
     [Fact]
