@@ -4,7 +4,6 @@ using System.Text;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Output.Plots;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
@@ -122,6 +121,6 @@ public sealed class BenchParetoCommand : Command
             .Select(g => new PlotSeries(g.Key, [.. g.Select(p => (x(p), p.Nrmse + floor))], Lines: false))
             .ToList();
         series.Add(new PlotSeries("Pareto front", [.. front.Select(i => points[i]).OrderBy(x).Select(p => (x(p), p.Nrmse + floor))], Markers: false));
-        return LinePlot.Render(new PlotSpec(title, xLabel, "NRMSE + 0.0001", xScale, AxisScale.Log10, series));
+        return PlotImage.Render(new PlotSpec(title, xLabel, "NRMSE + 0.0001", xScale, AxisScale.Log10, series));
     }
 }

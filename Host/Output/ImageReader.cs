@@ -70,15 +70,7 @@ public static class ImageReader
         if (decoded != SKCodecResult.Success)
             throw Fail($"damaged or truncated: the {codec.EncodedFormat.ToString().ToUpperInvariant()} image data cannot be decoded ({Describe(decoded)})");
 
-        var rgba = bitmap.GetPixelSpan();
-        var image = new RgbImage(width, height);
-        for (var y = 0; y < height; y++)
-            for (var x = 0; x < width; x++)
-            {
-                var i = (y * width + x) * 4;
-                image.SetPixel(x, y, rgba[i], rgba[i + 1], rgba[i + 2]);
-            }
-        return image;
+        return SkiaPixels.ToImage(bitmap);
     }
 
     private static string Describe(SKCodecResult result) => result switch
