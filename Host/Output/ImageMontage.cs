@@ -15,7 +15,7 @@ public static class ImageMontage
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(scale, 1);
         if (rows.Count == 0 || rows.Any(r => r.Count == 0)) throw new ArgumentException("a montage needs at least one panel in every row");
-        using var font = new SKFont(SKTypeface.Default, TextSize);
+        using var font = new SKFont(SKTypeface.FromFamilyName(PlotImage.FontFamily), TextSize);
         using var ink = new SKPaint { Color = SKColors.Black, IsAntialias = true };
         var labelHeight = (int)Math.Ceiling(font.Spacing) + Gap / 2;
         // Every cell is as large as the largest panel (or its label), so columns line up.

@@ -12,6 +12,9 @@ namespace QuantumRayTracing.Output;
 /// </summary>
 public static class PlotImage
 {
+    /// <summary>The typeface of plots and montages; where it is not installed the system's default stands in.</summary>
+    internal const string FontFamily = "DejaVu Sans";
+
     private static readonly MarkerShape[] Markers =
     [
         MarkerShape.FilledCircle, MarkerShape.FilledSquare, MarkerShape.FilledDiamond, MarkerShape.FilledTriangleUp,
@@ -37,6 +40,7 @@ public static class PlotImage
     {
         var plot = new Plot();
         plot.FigureBackground.Color = Colors.White;
+        plot.Font.Set(FontFamily);
         plot.Title(spec.Title);
         plot.XLabel(spec.XLabel);
         plot.YLabel(spec.YLabel);
