@@ -42,7 +42,7 @@ public sealed class BenchParetoCommand : Command
         SetAction(Execute);
     }
 
-    private sealed record Point(string Engine, string Configuration, double IntPerRay, double Seconds, double Nrmse, int DifferentPixels);
+    internal sealed record Point(string Engine, string Configuration, double IntPerRay, double Seconds, double Nrmse, int DifferentPixels);
 
     private int Execute(ParseResult parse)
     {
@@ -114,7 +114,7 @@ public sealed class BenchParetoCommand : Command
     }
 
     // One scatter series per engine, and the Pareto front as a line; NRMSE on a log axis (+0.01% so exact renders show).
-    private static RgbImage Plot(string title, string xLabel, AxisScale xScale, List<Point> points, Func<Point, double> x, HashSet<int> front)
+    internal static RgbImage Plot(string title, string xLabel, AxisScale xScale, List<Point> points, Func<Point, double> x, HashSet<int> front)
     {
         const double floor = 1e-4;
         var series = points.GroupBy(p => p.Engine)

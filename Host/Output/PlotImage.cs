@@ -15,6 +15,8 @@ public static class PlotImage
     /// <summary>The typeface of plots and montages; where it is not installed the system's default stands in.</summary>
     internal const string FontFamily = "DejaVu Sans";
 
+    private const double Margin = 0.03;
+
     private static readonly MarkerShape[] Markers =
     [
         MarkerShape.FilledCircle, MarkerShape.FilledSquare, MarkerShape.FilledDiamond, MarkerShape.FilledTriangleUp,
@@ -48,11 +50,13 @@ public static class PlotImage
         if (spec.XScale == AxisScale.Log10) plot.Axes.Bottom.TickGenerator = LogTicks();
         if (spec.YScale == AxisScale.Log10) plot.Axes.Left.TickGenerator = LogTicks();
         plot.Axes.AutoScale();
-        // Whole decades on a log axis, so at least two labelled powers of ten frame the data.
-        if (spec.XScale == AxisScale.Log10 && DecadeLimits(plot.Axes.GetDataLimits().Left, plot.Axes.GetDataLimits().Right) is { } x)
-            plot.Axes.SetLimitsX(x.Low, x.High);
-        if (spec.YScale == AxisScale.Log10 && DecadeLimits(plot.Axes.GetDataLimits().Bottom, plot.Axes.GetDataLimits().Top) is { } y)
-            plot.Axes.SetLimitsY(y.Low, y.High);
+        // Whole decades on a log axis, so at least two labelled powers of ten frame the data, and a margin of 3% so
+        // points on a power of ten are not cut by the frame.
+        var data = plot.Axes.GetDataLimits();
+        if (spec.XScale == AxisScale.Log10 && DecadeLimits(data.Left, data.Right) is { } x)
+            plot.Axes.SetLimitsX(x.Low - Margin * (x.High - x.Low), x.High + Margin * (x.High - x.Low));
+        if (spec.YScale == AxisScale.Log10 && DecadeLimits(data.Bottom, data.Top) is { } y)
+            plot.Axes.SetLimitsY(y.Low - Margin * (y.High - y.Low), y.High + Margin * (y.High - y.Low));
         plot.Grid.MajorLineColor = Colors.Black.WithOpacity(0.15);
         plot.Grid.MinorLineColor = Colors.Black.WithOpacity(0.05);
         plot.Grid.MinorLineWidth = 1;
