@@ -18,7 +18,7 @@ public sealed class BadImageFileTests : IDisposable
         // Text that starts like a GIF, whose header then reads as 8250x26740 pixels: the size guard refuses it before decoding.
         { "not-a-png.png", "the image is too large (8250x26740" },
         { "empty.png", "the file is empty" },
-        { "truncated.png", "truncated: the PNG file does not end with its IEND chunk" },
+        { "truncated.png", "truncated: the PNG file ends before its IEND chunk" },
         { "bad-crc.png", "damaged: the PNG header cannot be read" },
         { "zero-width.png", "damaged: the PNG header cannot be read" },
         { "million-wide.png", "too large (1000000x4" },

@@ -59,9 +59,9 @@ public static class ImageReader
         if (width < 1 || height < 1) throw Fail($"the image has size {width}x{height}; both sides must be at least 1");
         if (width > MaxSide || height > MaxSide || (long)width * height > MaxPixels)
             throw Fail($"the image is too large ({width}x{height}; at most {MaxSide} per side and {MaxPixels:N0} pixels)");
-        // libpng decodes every row of a file cut off in its last chunks; a whole PNG ends with the IEND chunk.
-        if (codec.EncodedFormat == SKEncodedImageFormat.Png && !file.AsSpan().EndsWith(PngEnd))
-            throw Fail("truncated: the PNG file does not end with its IEND chunk");
+        // libpng decodes every row of a file cut off in its last chunks; a whole PNG has its IEND chunk.
+        if (codec.EncodedFormat == SKEncodedImageFormat.Png && file.AsSpan().IndexOf(PngEnd) < 0)
+            throw Fail("truncated: the PNG file ends before its IEND chunk");
 
         // Premultiplied alpha is colour composited over black; no colour space is given, so values are not converted.
         var info = new SKImageInfo(width, height, SKColorType.Rgba8888, SKAlphaType.Premul);
