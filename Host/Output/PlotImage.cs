@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Output;
 /// Draws a <see cref="PlotSpec"/> with ScottPlot into an <see cref="RgbImage"/>, which <see cref="ImageFiles"/>
 /// writes like any other image: title, axis labels, a legend beside the data, and log axes where the spec asks.
 /// A log axis is drawn the way ScottPlot 5 does it: the data goes in as log10 values, the major ticks sit on whole
-/// powers of ten and are labelled with the power, and minor ticks mark 2x to 9x of each decade.
+/// powers of ten and are labelled with their values, and minor ticks mark 2x to 9x of each decade.
 /// </summary>
 public static class PlotImage
 {
