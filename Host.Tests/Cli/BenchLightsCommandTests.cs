@@ -24,7 +24,7 @@ public sealed class BenchLightsCommandTests : IDisposable
         var images = Directory.GetFiles(_scratch.Path, "*.png").Select(Path.GetFileName).Order().ToArray();
         Assert.Equal(6, images.Length);
         Assert.All(images, name => Assert.Contains($"]({name})", text));
-        Assert.All(images, name => Assert.True(PngEncoder.IsWrittenHere(Path.Combine(_scratch.Path, name!))));
+        Assert.All(images, name => Assert.True(PngWriter.IsWrittenHere(Path.Combine(_scratch.Path, name!))));
         // A second run replaces its own files.
         Assert.Equal(0, ConsoleCapture.Run(Run("lights.md")).Code);
     }

@@ -49,7 +49,7 @@ public sealed class EstimateCommandTests : IDisposable
         Assert.Equal(["2"], DataRows(lines, "## The oracle against the coordinate bits"));
         // Every plot the report shows is a PNG beside it (none when the build has no plot writer).
         foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
-            Assert.Equal(800, Output.PngTestDecoder.Decode(File.ReadAllBytes(Path.Combine(_scratch.Path, png))).Image.Width);
+            Assert.Equal(800, ImageReader.Read(Path.Combine(_scratch.Path, png)).Width);
         // Regenerating replaces the file this command wrote.
         Assert.Equal(0, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));

@@ -27,7 +27,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var output = _scratch.File("x.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "--engine", "classical", "--size", "8", "-o", output]));
-        var image = PngTestDecoder.ReadImage(output);
+        var image = ImageReader.Read(output);
         Assert.Equal((8, 8), (image.Width, image.Height));
         Assert.True(image.Pixels.SequenceEqual(Classical(8).Pixels));
         Assert.Equal(["x.png"], _scratch.FileNames());
@@ -38,7 +38,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var output = _scratch.File("wide.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "6x3", "-o", output]));
-        Assert.Equal((6, 3), (PngTestDecoder.ReadImage(output).Width, PngTestDecoder.ReadImage(output).Height));
+        Assert.Equal((6, 3), (ImageReader.Read(output).Width, ImageReader.Read(output).Height));
     }
 
     [Fact]
@@ -48,8 +48,8 @@ public sealed class RenderCommandTests : IDisposable
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", output]));
         Assert.Equal(["c-difference.png", "c-reference.png", "c.png"], _scratch.FileNames());
         Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(_scratch.File("c-reference.png")));
-        var difference = PngTestDecoder.ReadImage(_scratch.File("c-difference.png"));
-        var reference = PngTestDecoder.ReadImage(output);
+        var difference = ImageReader.Read(_scratch.File("c-difference.png"));
+        var reference = ImageReader.Read(output);
         for (var y = 0; y < 8; y++)
             for (var x = 0; x < 8; x++)
             {
@@ -65,9 +65,9 @@ public sealed class RenderCommandTests : IDisposable
         var output = _scratch.File("q.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "analytic", "--seed", "3", "--size", "12", "--passes", "1", "--shadow-passes", "1",
             "--neighbours", "false", "--shadow-neighbours", "false", "--stop", "off", "--lattice", "0", "--reference", "-o", output]));
-        var image = PngTestDecoder.ReadImage(output);
-        var reference = PngTestDecoder.ReadImage(_scratch.File("q-reference.png"));
-        var difference = PngTestDecoder.ReadImage(_scratch.File("q-difference.png"));
+        var image = ImageReader.Read(output);
+        var reference = ImageReader.Read(_scratch.File("q-reference.png"));
+        var difference = ImageReader.Read(_scratch.File("q-difference.png"));
         Assert.True(reference.Pixels.SequenceEqual(Classical(12).Pixels));
         var wrong = 0;
         for (var y = 0; y < 12; y++)
@@ -85,9 +85,9 @@ public sealed class RenderCommandTests : IDisposable
     public void OwnPngIsReplaced()
     {
         var output = _scratch.File("x.png");
-        PngEncoder.Write(new RgbImage(2, 2), output);
+        PngWriter.Write(new RgbImage(2, 2), output);
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
-        Assert.Equal(8, PngTestDecoder.ReadImage(output).Width);
+        Assert.Equal(8, ImageReader.Read(output).Width);
     }
 
     [Fact]

@@ -38,7 +38,7 @@ public sealed class RenderLightsCommandTests : IDisposable
         Assert.Equal(["x-converged.png", "x-difference.png", "x-reference.png", "x.png"], _scratch.FileNames());
         using var classical = new ClassicalHitSearch();
         var converged = SceneRenderer.Render(Load("qornell-64-area.json"), classical, new RenderOptions(6, 6, Seed: 3, AreaSamples: 8)).Image;
-        Assert.True(PngTestDecoder.ReadImage(_scratch.File("x-converged.png")).Pixels.SequenceEqual(converged.Pixels));
+        Assert.True(ImageReader.Read(_scratch.File("x-converged.png")).Pixels.SequenceEqual(converged.Pixels));
         Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(_scratch.File("x-reference.png")));
     }
 

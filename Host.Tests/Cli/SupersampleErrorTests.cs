@@ -48,7 +48,7 @@ public sealed class SupersampleErrorTests : IDisposable
                     image.SetPixel(px * Side + i % Side, py * Side + i / Side, (byte)_levels[item][i], (byte)_levels[item + 1][i], (byte)_levels[item + 2][i]);
                 }
         _input = Path.Combine(_scratch.Path, "synthetic.png");
-        PngEncoder.Write(image, _input);
+        PngWriter.Write(image, _input);
     }
 
     public void Dispose() => _scratch.Dispose();
@@ -63,7 +63,7 @@ public sealed class SupersampleErrorTests : IDisposable
         var output = Path.Combine(_scratch.Path, $"{method}-{extra.Length}.png");
         var (code, error) = ConsoleCapture.Run(["supersample", "--image", _input, "--subpixels", $"{Side}", "-m", method, .. extra, "--seed", "5", "-o", output]);
         Assert.True(code == 0, error);
-        var pixels = PngTestDecoder.Decode(File.ReadAllBytes(output)).Image.Pixels.ToArray();
+        var pixels = ImageReader.Read(output).Pixels.ToArray();
         return Enumerable.Range(0, _levels.Length).Select(k => Math.Abs(pixels[k] / 255.0 - Mean(k))).ToArray();
     }
 

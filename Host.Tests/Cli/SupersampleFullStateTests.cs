@@ -24,10 +24,10 @@ public sealed class SupersampleFullStateTests : IDisposable
                 image.SetPixel(x, y, x < 2 ? (byte)255 : (byte)0, 0, x >= 2 ? (byte)255 : (byte)0);
         var input = Path.Combine(_scratch.Path, "in.png");
         var output = Path.Combine(_scratch.Path, "out.png");
-        PngEncoder.Write(image, input);
+        PngWriter.Write(image, input);
         var (code, error) = ConsoleCapture.Run(["supersample", "--image", input, "--subpixels", "2", "-m", method, .. extra, "-e", "fullstate", "--workers", "1", "-o", output]);
         Assert.True(code == 0, error);
-        var result = PngTestDecoder.Decode(File.ReadAllBytes(output)).Image;
+        var result = ImageReader.Read(output);
         Assert.Equal(((byte)255, (byte)0, (byte)0), result.GetPixel(0, 0));
         Assert.Equal(((byte)0, (byte)0, (byte)255), result.GetPixel(1, 0));
     }

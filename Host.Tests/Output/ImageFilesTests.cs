@@ -27,7 +27,7 @@ public sealed class ImageFilesTests : IDisposable
         ImageFiles.Write([(image, _scratch.File("a.png")), (image, _scratch.File("b.png"))]);
 
         Assert.Equal(["a.png", "b.png"], Directory.EnumerateFiles(_scratch.Path).Select(Path.GetFileName).Order());
-        Assert.True(PngEncoder.IsWrittenHere(_scratch.File("b.png")));
+        Assert.True(PngWriter.IsWrittenHere(_scratch.File("b.png")));
     }
 
     public void Dispose() => _scratch.Dispose();

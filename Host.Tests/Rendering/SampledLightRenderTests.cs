@@ -29,7 +29,7 @@ public class SampledLightRenderTests
     }
 
     private static byte[] Png(Scene scene, EngineKind kind, ulong seed, RenderOptions options) =>
-        PngEncoder.Encode(Render(scene, kind, seed, options).Image);
+        PngWriter.Encode(Render(scene, kind, seed, options).Image);
 
     // RMS over pixels and channels of the linear radiance difference.
     private static double Error(RenderResult a, RenderResult b) =>

@@ -29,7 +29,7 @@ public class SceneRendererTests
     }
 
     private static byte[] Png(Scene scene, EngineKind kind, ulong seed, RenderOptions options) =>
-        PngEncoder.Encode(Render(scene, kind, seed, options).Image);
+        PngWriter.Encode(Render(scene, kind, seed, options).Image);
 
     [Theory]
     [InlineData(EngineKind.Analytic)]
@@ -65,7 +65,7 @@ public class SceneRendererTests
     {
         var first = Render(Qornell16, kind, 5, Pipeline(5));
         var second = Render(Qornell16, kind, 5, Pipeline(5));
-        Assert.Equal(PngEncoder.Encode(first.Image), PngEncoder.Encode(second.Image));
+        Assert.Equal(PngWriter.Encode(first.Image), PngWriter.Encode(second.Image));
         Assert.Equal(Costs(first), Costs(second));
     }
 

@@ -153,10 +153,10 @@ public static class Soak
                 result = SceneRenderer.Render(scene, search, options, progress?.Invoke($"{stem} on {Cli.EngineOptions.Name(kind)}, seed {options.Seed}{repeat}"));
             var wall = clock.Elapsed;
             _times.Add(wall);
-            var png = PngEncoder.Encode(result.Image);
+            var png = PngWriter.Encode(result.Image);
             if (result.Radiance.Any(c => !double.IsFinite(c.X) || !double.IsFinite(c.Y) || !double.IsFinite(c.Z)))
                 _failures.Add($"seed {options.Seed}{repeat}: radiance not finite at {result.Radiance.Count(c => !double.IsFinite(c.X + c.Y + c.Z))} pixels");
-            if (!PngDecoder.Decode(png, "render").Pixels.SequenceEqual(result.Image.Pixels))
+            if (!ImageReader.Decode(png, "render").Pixels.SequenceEqual(result.Image.Pixels))
                 _failures.Add($"seed {options.Seed}{repeat}: the PNG does not decode to the rendered pixels");
             return new Rendered(result, png, wall);
         }

@@ -4,7 +4,6 @@ using System.Text;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Output.Plots;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
@@ -43,7 +42,7 @@ public sealed class BenchParetoCommand : Command
         SetAction(Execute);
     }
 
-    private sealed record Point(string Engine, string Configuration, double IntPerRay, double Seconds, double Nrmse, int DifferentPixels);
+    internal sealed record Point(string Engine, string Configuration, double IntPerRay, double Seconds, double Nrmse, int DifferentPixels);
 
     private int Execute(ParseResult parse)
     {
@@ -115,13 +114,13 @@ public sealed class BenchParetoCommand : Command
     }
 
     // One scatter series per engine, and the Pareto front as a line; NRMSE on a log axis (+0.01% so exact renders show).
-    private static RgbImage Plot(string title, string xLabel, AxisScale xScale, List<Point> points, Func<Point, double> x, HashSet<int> front)
+    internal static RgbImage Plot(string title, string xLabel, AxisScale xScale, List<Point> points, Func<Point, double> x, HashSet<int> front)
     {
         const double floor = 1e-4;
         var series = points.GroupBy(p => p.Engine)
             .Select(g => new PlotSeries(g.Key, [.. g.Select(p => (x(p), p.Nrmse + floor))], Lines: false))
             .ToList();
         series.Add(new PlotSeries("Pareto front", [.. front.Select(i => points[i]).OrderBy(x).Select(p => (x(p), p.Nrmse + floor))], Markers: false));
-        return LinePlot.Render(new PlotSpec(title, xLabel, "NRMSE + 0.0001", xScale, AxisScale.Log10, series));
+        return PlotImage.Render(new PlotSpec(title, xLabel, "NRMSE + 0.0001", xScale, AxisScale.Log10, series));
     }
 }

@@ -3,7 +3,6 @@ using System.Globalization;
 using System.Text;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Output.Plots;
 using QuantumRayTracing.Supersampling;
 using Spectre.Console;
 
@@ -121,5 +120,5 @@ public sealed class BenchSupersampleCommand : Command
             [.. points.OrderBy(p => p.Queries).Select(p => ((double)p.Queries, p.MeanError))]);
 
     private static RgbImage Plot(string title, IReadOnlyList<PlotSeries> series) =>
-        LinePlot.Render(new PlotSpec(title, "queries per estimate (a flip 1, a Grover operator 2)", "mean absolute error", AxisScale.Log10, AxisScale.Log10, series));
+        PlotImage.Render(new PlotSpec(title, "queries per estimate (a flip 1, a Grover operator 2)", "mean absolute error", AxisScale.Log10, AxisScale.Log10, series));
 }

@@ -5,7 +5,6 @@ using System.Text;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Output.Plots;
 using QuantumRayTracing.Supersampling;
 using Spectre.Console;
 using static QuantumRayTracing.Benchmarks.SupersamplingImageBenchmark;
@@ -213,7 +212,7 @@ public sealed class BenchSupersampleImagesCommand : Command
             (FigureMontage(figureInput, figure), pngs[0]!),
             (TablesPlot(table, sizes), pngs[1]!),
             (ConfidenceMontage(cases.Take(2).Select(c => c.Run)), pngs[2]!),
-            (LinePlot.Render(new PlotSpec("Bit-plane QSS: error by confidence", "confidence (bin centre)", "mean abs error (8-bit levels)", AxisScale.Linear, AxisScale.Linear, binSeries)), pngs[3]!),
+            (PlotImage.Render(new PlotSpec("Bit-plane QSS: error by confidence", "confidence (bin centre)", "mean abs error (8-bit levels)", AxisScale.Linear, AxisScale.Linear, binSeries)), pngs[3]!),
         ]);
         runsCsv.Write(RunsCsv(figure.Concat(table)));
         binsCsv.Write(bins.ToString());
@@ -258,7 +257,7 @@ public sealed class BenchSupersampleImagesCommand : Command
         PlotSeries Ours(string label, string image, bool qss) => new(label,
             [.. sizes.Select(s => ((double)s, 100 * runs.Where(r => r.Image == image && r.Size == s && (r.Method != "MC") == qss).Average(r => r.Error.ExactShare)))]);
         var thesisSizes = Thesis.Keys.Order().ToArray();
-        return LinePlot.Render(new PlotSpec("Exact pixels, 4x4 subpixels (thesis table 4.2)", "output size (pixels per side)", "exact pixels (%)", AxisScale.Log10, AxisScale.Linear,
+        return PlotImage.Render(new PlotSpec("Exact pixels, 4x4 subpixels (thesis table 4.2)", "output size (pixels per side)", "exact pixels (%)", AxisScale.Log10, AxisScale.Linear,
         [
             Ours("MC, colour (248)", "qornell", false), Ours("QSS, colour (248)", "qornell", true),
             Ours("MC, black/white (31)", "qornell black-and-white", false), Ours("QSS, black/white (31)", "qornell black-and-white", true),

@@ -14,7 +14,7 @@ using QuantumRayTracing.Supersampling;
 namespace QuantumRayTracing.Cli;
 
 /// <summary>
-/// `supersample`: estimates every output pixel's mean over s x s subpixels, taken from a PNG or from a scene
+/// `supersample`: estimates every output pixel's mean over s x s subpixels, taken from an image file or from a scene
 /// rendered classically at s times the resolution, with Monte Carlo, QSS, QCoin or MLAE; writes the image (and
 /// for bit-plane QSS the confidence map) and prints the error against the exact average.
 /// </summary>
@@ -29,7 +29,7 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<FileInfo?> _image = new("--image")
     {
-        Description = "PNG to supersample: each output pixel averages s x s of its pixels, so both sides must be multiples of s. 8-bit grey, grey+alpha, RGB, RGBA or palette; alpha is composited over black. Default: none, a scene is rendered (--scene).",
+        Description = "Image to supersample (PNG of any bit depth, JPEG, WebP, BMP or GIF): each output pixel averages s x s of its pixels, so both sides must be multiples of s; alpha is composited over black. Default: none, a scene is rendered (--scene).",
     };
 
     private readonly Option<FileInfo?> _scene = new("--scene")
@@ -94,7 +94,7 @@ public sealed class SupersampleCommand : Command
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic, EngineKind.FullState);
 
-    public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from a PNG or a scene) with Monte Carlo, QSS, QCoin or MLAE; print the error against the exact average.")
+    public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from an image file or a scene) with Monte Carlo, QSS, QCoin or MLAE; print the error against the exact average.")
     {
         Options.Add(_image);
         Options.Add(_scene);
@@ -202,7 +202,7 @@ public sealed class SupersampleCommand : Command
 
     private static SubpixelImage LoadImage(FileInfo file, int s, EngineKind kind)
     {
-        var image = PngDecoder.Read(file.FullName);
+        var image = ImageReader.Read(file.FullName);
         if (image.Width % s != 0 || image.Height % s != 0)
             throw new UserError($"{file.FullName}: {image.Width}x{image.Height} is not a multiple of --subpixels {s} on both sides ({s}x{s} subpixels per output pixel)"
                 + (image.Width >= s && image.Height >= s ? $"; crop it to {image.Width / s * s}x{image.Height / s * s}" : ""));

@@ -1,6 +1,5 @@
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Output.Plots;
 
 namespace QuantumRayTracing.Estimates;
 
@@ -25,7 +24,7 @@ public static class SweepPlots
             new(label, bits.Where(b => report.Points.ContainsKey((n, b, k.Name))).Select(b => ((double)b, value(report.Points[(n, b, k.Name)]))).ToArray());
         void Add(string suffix, string caption, PlotSpec spec)
         {
-            if (spec.Series.Any(s => s.Points.Count > 0)) plots.Add(new Plot(suffix, caption, LinePlot.Render(spec)));
+            if (spec.Series.Any(s => s.Points.Count > 0)) plots.Add(new Plot(suffix, caption, PlotImage.Render(spec)));
         }
 
         Add("ccz-vs-primitives", $"Toffolis (CCZ) of one oracle call against N, {c}-bit grid",

@@ -2,7 +2,7 @@ namespace QuantumRayTracing.Output;
 
 /// <summary>
 /// The rules for PNGs a command writes: those of every output (<see cref="OutputFile"/>; a PNG is this
-/// program's when it carries <see cref="PngEncoder.Software"/>), and besides, an output never replaces an
+/// program's when it carries <see cref="PngWriter.Software"/>), and besides, an output never replaces an
 /// input and two outputs of one command never share a path. Checked before any work starts, so a bad path
 /// fails fast; the files are written only at the end, all or none.
 /// </summary>
@@ -20,7 +20,7 @@ public static class ImageFiles
                 throw new UserError($"{output}: is an input of this command and would be overwritten");
             if (!seen.Add(full))
                 throw new UserError($"{output}: named for two outputs of this command");
-            OutputFile.EnsureReplaceable(output, PngEncoder.IsWrittenHere,
+            OutputFile.EnsureReplaceable(output, PngWriter.IsWrittenHere,
                 "exists and was not written by this program; choose another output or remove it");
         }
     }
@@ -28,7 +28,7 @@ public static class ImageFiles
     /// <summary>Writes every image to its path, all or none (<see cref="AtomicFile.WriteAll"/>).</summary>
     public static void Write(IEnumerable<(RgbImage Image, string Path)> images)
     {
-        var files = images.Select(i => (i.Path, PngEncoder.Encode(i.Image))).ToArray();
+        var files = images.Select(i => (i.Path, PngWriter.Encode(i.Image))).ToArray();
         // Checked beforehand, but the disk can still fill up or the directory change in between.
         try
         {

@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Output.Plots;
+namespace QuantumRayTracing.Output;
 
 /// <summary>How data values are spread along a plot axis.</summary>
 public enum AxisScale

@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Output.Plots;
+namespace QuantumRayTracing.Output;
 
 /// <summary>
 /// One named set of points. Lines: connect points in order; Markers: draw a marker at each point.

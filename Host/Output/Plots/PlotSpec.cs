@@ -1,8 +1,0 @@
-namespace QuantumRayTracing.Output.Plots;
-
-/// <summary>
-/// Everything <see cref="LinePlot.Render"/> draws: title, axis labels and scales, the series (coloured and
-/// marked in order from <see cref="PlotPalette"/>) and the image size in pixels.
-/// </summary>
-public sealed record PlotSpec(string Title, string XLabel, string YLabel, AxisScale XScale, AxisScale YScale,
-    IReadOnlyList<PlotSeries> Series, int Width = 800, int Height = 500);
