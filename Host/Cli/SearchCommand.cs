@@ -101,7 +101,7 @@ public sealed class SearchCommand : Command
         table.AddRow("engine calls (rounds)", rounds.ToString());
         table.AddRow("wall time", $"{clock.Elapsed.TotalSeconds:0.000} s");
         AnsiConsole.Write(table);
-        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (DESIGN.md §5).[/]");
+        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
         return 0;
     }
 
