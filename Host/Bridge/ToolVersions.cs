@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Bridge;
 /// pins) and Node.js's (<c>node --version</c> of the executable the bridge starts). A missing Node.js is a
 /// value (<see cref="NodeProblem"/>), not a failure: the versions are asked for to find out what is installed.
 /// </summary>
-public sealed record ToolVersions(string Program, string? QSharp, string? Node, string? NodeProblem)
+public sealed record ToolVersions(string Program, string? QsharpLang, string? Node, string? NodeProblem)
 {
     private static readonly TimeSpan NodeTimeout = TimeSpan.FromSeconds(20);
 

@@ -11,7 +11,7 @@ public sealed class VersionAction : SynchronousCommandLineAction
     {
         var versions = ToolVersions.Detect();
         Console.WriteLine($"qrt {versions.Program}");
-        Console.WriteLine($"QDK: qsharp-lang {versions.QSharp ?? "unknown (no Quantum/package.json found)"}");
+        Console.WriteLine($"QDK: qsharp-lang {versions.QsharpLang ?? "unknown (no Quantum/package.json found)"}");
         Console.WriteLine(versions.Node is { } node ? $"Node.js: {node}" : $"Node.js: not found: {versions.NodeProblem}");
         return 0;
     }
