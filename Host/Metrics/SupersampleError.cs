@@ -1,3 +1,4 @@
+using System.Text.Json.Serialization;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Metrics;
@@ -8,7 +9,7 @@ namespace QuantumRayTracing.Metrics;
 /// way), the same before quantisation (the estimator's own error, as a fraction of full scale), and the share of
 /// pixels whose 8-bit RGB equals the ideal's. <see cref="PixelLevels"/>: each pixel's error, averaged over its channels.
 /// </summary>
-public sealed record SupersampleError(double MeanLevels, double EstimatorError, int ExactPixels, int Pixels, double[] PixelLevels)
+public sealed record SupersampleError(double MeanLevels, double EstimatorError, int ExactPixels, int Pixels, [property: JsonIgnore] double[] PixelLevels)
 {
     /// <summary><see cref="MeanLevels"/> as a fraction of full scale.</summary>
     public double MeanFraction => MeanLevels / 255;
