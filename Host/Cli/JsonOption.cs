@@ -17,7 +17,7 @@ public sealed class JsonOption
 
     public readonly Option<string?> File = new("--json")
     {
-        Description = $"Also write every printed figure, the options, the seed, the engine, the noise model and the versions as JSON to this file (counting conventions: {RunJsonFile.Conventions}). An existing file is replaced only if this program wrote it.",
+        Description = $"Also write every printed figure, the options, the seed, the engine, the noise model and the versions as JSON to this file (counting conventions: {RunJsonFile.Conventions}). Default: none, no JSON file. An existing file is replaced only if this program wrote it.",
         HelpName = "FILE",
     };
 
