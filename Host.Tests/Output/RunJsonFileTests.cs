@@ -66,6 +66,8 @@ public sealed class RunJsonFileTests : IDisposable
         Assert.False(RunJsonFile.IsOurs(Write("array.json", """[{"generator": "qrt"}]""")));
         Assert.False(RunJsonFile.IsOurs(Write("text.json", "generator: qrt")));
         Assert.False(RunJsonFile.IsOurs(Write("empty.json", "")));
+        Assert.False(RunJsonFile.IsOurs(Write("later.json", """{"figures": {}, "generator": "qrt"}""")));
+        Assert.True(RunJsonFile.IsOurs(Write("compact.json", """{"generator":"qrt"}""")));
     }
 
     [Fact]

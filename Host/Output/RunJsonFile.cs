@@ -10,8 +10,7 @@ namespace QuantumRayTracing.Output;
 /// <summary>
 /// The <c>--json FILE</c> of a command, for scripts: one JSON object holding the run (<see cref="RunRecord"/>),
 /// the versions of the program, the QDK and Node.js, and where the counting conventions are stated. The file is
-/// this program's when its top-level <c>"generator"</c> is <c>"qrt"</c>; any other existing file is never
-/// replaced. Written whole or not at all (<see cref="AtomicFile"/>).
+/// this program's when it opens with <c>{"generator": "qrt"</c>; any other existing file is never replaced. Written whole or not at all (<see cref="AtomicFile"/>).
 /// </summary>
 public static class RunJsonFile
 {
@@ -45,16 +44,21 @@ public static class RunJsonFile
             $"exists and was not written by this program (no \"generator\": \"{Generator}\" at its top); choose another file or remove it");
     }
 
-    /// <summary>A JSON object whose top-level "generator" is <see cref="Generator"/>.</summary>
+    /// <summary>
+    /// A JSON object whose first member is <c>"generator": "qrt"</c>, as every file <see cref="Compose"/> writes starts.
+    /// Only the file's first bytes are read, so a large file that is not ours costs nothing to refuse.
+    /// </summary>
     public static bool IsOurs(string file)
     {
+        var head = new byte[256];
+        int length;
+        using (var stream = File.OpenRead(file)) length = stream.ReadAtLeast(head, head.Length, throwOnEndOfStream: false);
+        var reader = new Utf8JsonReader(head.AsSpan(0, length), isFinalBlock: false, state: default);
         try
         {
-            using var stream = File.OpenRead(file);
-            using var document = JsonDocument.Parse(stream);
-            return document.RootElement.ValueKind == JsonValueKind.Object
-                && document.RootElement.TryGetProperty("generator", out var generator)
-                && generator.ValueKind == JsonValueKind.String && generator.GetString() == Generator;
+            return reader.Read() && reader.TokenType == JsonTokenType.StartObject
+                && reader.Read() && reader.TokenType == JsonTokenType.PropertyName && reader.ValueTextEquals("generator")
+                && reader.Read() && reader.TokenType == JsonTokenType.String && reader.ValueTextEquals(Generator);
         }
         catch (JsonException)
         {
