@@ -37,6 +37,16 @@ public sealed partial class JsonOutputTests : IDisposable
         Assert.Equal(scene, (string?)json["options"]!["scene"]);
         var figures = json["figures"]!;
 
+        var scenePrinted = Match(output, @"^(?<name>.+): N = (?<n>\d+) primitives, .*, (?<width>\d+)x(?<height>\d+) pixels");
+        Assert.Equal(scenePrinted["name"].Value, (string?)figures["scene"]);
+        Assert.Equal(Long(scenePrinted["n"].Value), (long)figures["primitives"]!);
+        Assert.Equal((Long(scenePrinted["width"].Value), Long(scenePrinted["height"].Value)), ((long)figures["width"]!, (long)figures["height"]!));
+        var modelled = Match(output, @"modelled per search: (?<index>\d+) index qubits \+ 1 flag, lookup table of (?<rows>\d+) rows x (?<bits>\d+) coordinate bits");
+        Assert.Equal(Long(modelled["index"].Value), (long)figures["indexQubits"]!);
+        Assert.Equal(Long(modelled["rows"].Value), (long)figures["primitives"]!);
+        Assert.Equal(Long(modelled["bits"].Value), (long)figures["coordinateBits"]!);
+        Assert.Null(figures["gateRegisters"]);
+
         var table = Table(output);
         var columns = table["measure"];
         var passes = figures["passes"]!.AsArray().Append(figures["total"]).ToArray();
@@ -200,7 +210,7 @@ public sealed partial class JsonOutputTests : IDisposable
 
     private static GroupCollection Match(string output, string pattern)
     {
-        var match = Regex.Match(output, pattern);
+        var match = Regex.Match(output, pattern, RegexOptions.Multiline);
         Assert.True(match.Success, $"no line matches {pattern} in:\n{output}");
         return match.Groups;
     }

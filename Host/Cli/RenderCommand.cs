@@ -205,11 +205,13 @@ public sealed class RenderCommand : Command
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+        OracleRegisters? gateRegisters = null;
         if (kind == EngineKind.Gate)
         {
             // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
             var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
             var registers = OracleRegisters.For(new OracleInput(centre, centre.FullRange));
+            gateRegisters = registers;
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
         }
 
@@ -255,7 +257,7 @@ public sealed class RenderCommand : Command
         }
         ImageFiles.Write(images);
 
-        var figures = new RenderFigures(scene.Name, geometry.Count, width, height, result.Passes, result.Total, reference.Total,
+        var figures = new RenderFigures(scene.Name, geometry.Count, width, height, geometry.IndexBits, scene.Grid.Bits, gateRegisters, result.Passes, result.Total, reference.Total,
             ImageError.Between(result.Image, reference.Image),
             convergedReference is null ? null : referenceSamples,
             convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),

@@ -193,7 +193,7 @@ public sealed class SupersampleCommand : Command
         if (result.ConfidenceMap is { } map) images.Add((map, outputs[1]));
         ImageFiles.Write(images);
 
-        var figures = new SupersampleFigures(inputName, input.Width * input.Side, input.Height * input.Side, input.Side, input.Width, input.Height,
+        var figures = new SupersampleFigures(inputName, input.Image.Width, input.Image.Height, input.Side, input.Width, input.Height,
             inputTime, table?.Readouts, result.Estimator, result.QueriesPerChannel, result.ChannelsEstimated,
             result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
             result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
