@@ -68,7 +68,7 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void SweepRefusesToReplaceAFileItDidNotWrite()
     {
-        var output = Path.Combine(_scratch.Path, "notes.md");
+        var output = Path.ChangeExtension(Path.Combine(_scratch.Path, "notes"), "md");
         File.WriteAllText(output, "# my notes\n");
         Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]).Code);
         Assert.Equal("# my notes\n", File.ReadAllText(output));

@@ -2,7 +2,7 @@ using QuantumRayTracing.Intersection;
 
 namespace QuantumRayTracing.Tests.Intersection;
 
-/// <summary>The (depth, id) windows of DESIGN.md §3, checked on hand-picked pairs.</summary>
+/// <summary>The (depth, id) windows of docs/rendering.md, checked on hand-picked pairs.</summary>
 public class HitWindowTests
 {
     [Theory]

@@ -3,7 +3,7 @@ using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Tests.Metrics;
 
-/// <summary>NRMSE, #Dpix and %Dpix (DESIGN.md §5) and the difference picture, on images small enough to do by hand.</summary>
+/// <summary>NRMSE, #Dpix and %Dpix (docs/conventions.md) and the difference picture, on images small enough to do by hand.</summary>
 public class ImageErrorTests
 {
     private static RgbImage Image(params (byte R, byte G, byte B)[] pixels)

@@ -8,14 +8,14 @@ namespace QuantumRayTracing.Tests.Search;
 public sealed class FalseNegativeRateTests
 {
     [Theory]
-    // DESIGN.md §6: eq. 10 as printed, cos²((M+1)θ) with the table 6 sets, gives 0.150 and 0.075 at N = 8, 16.
+    // Eq. 10 as printed, cos²((M+1)θ) with the table 6 sets, gives 0.150 and 0.075 at N = 8, 16: not table 6's 0.205 and 0.113.
     [InlineData(8, 0.150)]
     [InlineData(16, 0.075)]
-    public void Eq10AsPrintedGivesTheValuesTheDesignNotesQuote(int n, double expected) =>
+    public void Eq10AsPrintedDoesNotGiveTable6(int n, double expected) =>
         Assert.Equal(expected, FalseNegativeRate.Eq10AsPrinted(new QSearchSchedule(n, 1.8, MSetRule.Round), FalseNegativeRate.Uniform(n, n)), 3);
 
     [Theory]
-    // The paper's table 6 (c = 1.8); evaluating at r = M_l reproduces it within 0.015 (DESIGN.md §6). N = 32 is
+    // The paper's table 6 (c = 1.8); evaluating at r = M_l reproduces it within 0.015. N = 32 is
     // left out: the table prints M = {1, 2, 3, 6} there, which its own bound M_l < ceil(sqrt N) excludes.
     [InlineData(8, 0.205)]
     [InlineData(16, 0.113)]
@@ -27,8 +27,8 @@ public sealed class FalseNegativeRateTests
         Assert.InRange(FalseNegativeRate.Eq10AtBound(new QSearchSchedule(n, 1.8, MSetRule.Round), FalseNegativeRate.Uniform(n, n)), table6 - 0.015, table6 + 0.015);
 
     [Fact]
-    public void ExactRateAtN64IsTheDesignNotesFigure() =>
-        // DESIGN.md §6: QSearch's exact false-negative rate with t uniform on 1..N is about 0.024 at N = 64.
+    public void ExactRateAtN64IsBelowTable6() =>
+        // QSearch's exact false-negative rate with t uniform on 1..N is about 0.024 at N = 64, below table 6's 0.057.
         Assert.Equal(0.024, FalseNegativeRate.QSearchExact(new QSearchSchedule(64), FalseNegativeRate.Uniform(64, 64)), 3);
 
     [Theory]

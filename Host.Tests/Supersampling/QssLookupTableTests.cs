@@ -41,7 +41,8 @@ public class QssLookupTableTests
     [Fact]
     public void FourCounterBitsAndSixteenSubpixelsReachTheThesisAccuracy()
     {
-        // DESIGN.md §6 and the issue: about 0.92 hits mean error, about 49% exact, over hit counts 0..16 equally likely.
+        // The thesis's setting (4 counter qubits, 16 subpixels; docs/conventions.md, Sources): about 0.92 hits mean error,
+        // about 49% exact, over hit counts 0..16 equally likely.
         var table = QssLookupTable.Exact(16, 4);
         var (error, exact) = (0.0, 0.0);
         for (var h = 0; h <= 16; h++)

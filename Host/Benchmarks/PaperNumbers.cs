@@ -1,7 +1,7 @@
 namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>
-/// Published results of the ray tracing paper (../shared/seeds/000, tables 2 and 3; 128x128), the
+/// Published results of the ray tracing paper (000 in docs/conventions.md, tables 2 and 3; 128x128), the
 /// numbers our tables are set against. Int/Ray there uses the paper's query count.
 /// </summary>
 public static class PaperNumbers

@@ -105,7 +105,7 @@ public sealed class BenchLightsCommand : Command
         text.AppendLine("the searches decide visibility. Two errors per render (NRMSE = RMS of 8-bit differences / reference range, #Dpix = pixels whose 8-bit");
         text.AppendLine("RGB differs): against the classical render with **the same samples** (same seed, so the same sample positions: what the searches get");
         text.AppendLine($"wrong) and against the **converged** classical reference with {referenceSamples} area samples or VPLs per point (that plus Monte Carlo noise).");
-        text.AppendLine("*Conservative* counts r + 1 queries per Grover run, the *paper* count r with the M sets of its table 6 (DESIGN.md §5).");
+        text.AppendLine("*Conservative* counts r + 1 queries per Grover run, the *paper* count r with the M sets of its table 6 (docs/conventions.md).");
         text.AppendLine();
 
         var images = new List<(RgbImage, string)>();
@@ -163,7 +163,7 @@ public sealed class BenchLightsCommand : Command
         text.AppendLine($"or VPL index, exact termination, a {RenderDefaults.LatticeLevels}-level lattice with cheap confirmations where neighbours agree; the VPL shadow pass runs without");
         text.AppendLine("termination, see docs/rendering.md); *paper's configuration* is NeighOpt on primary and specular rays with the paper's termination and up to 8");
         text.AppendLine("rounds, in the paper's count (as in optimised-tracing.md's table 7); *no optimisation* is 4 TracePass and 2 DirectPass rounds. The classical");
-        text.AppendLine("engine through our default pipeline shows what the pipeline alone saves (DESIGN.md §5); plain classical costs N per ray. The paper's");
+        text.AppendLine("engine through our default pipeline shows what the pipeline alone saves (docs/conventions.md); plain classical costs N per ray. The paper's");
         text.AppendLine("configuration ends shadow rays by the termination criterion too but gathers no occluders, so a shadow ray whose one search missed its");
         text.AppendLine("occluder usually stays lit: that is where its wrong pixels come from (with occluder gathering its area-light error falls to the default's).");
         text.AppendLine();

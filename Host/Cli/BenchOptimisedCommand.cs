@@ -63,7 +63,7 @@ public sealed class BenchOptimisedCommand : Command
         text.AppendLine();
         text.AppendLine($"{size}x{size} pixels, seed {seed}, analytic engine (exact outcome distributions), strict ties. Error against the classical render");
         text.AppendLine("(NRMSE = RMS of 8-bit differences / reference range; #Dpix = pixels whose 8-bit RGB differs). #Cpix = rays whose result neighbour");
-        text.AppendLine("gathering changed. *Paper count*: r per Grover run, M_l = round(c^l) (table 6); *conservative*: r + 1, Algorithm 1's M_l (DESIGN.md §5).");
+        text.AppendLine("gathering changed. *Paper count*: r per Grover run, M_l = round(c^l) (table 6); *conservative*: r + 1, Algorithm 1's M_l (docs/conventions.md).");
         text.AppendLine();
 
         AnsiConsole.Progress().AutoClear(true).Start(progress =>
@@ -116,7 +116,7 @@ public sealed class BenchOptimisedCommand : Command
             text.AppendLine("*Paper's configuration*: NeighOpt on primary and specular rays, termination with the paper's p̄, up to 8 rounds, paper count.");
             text.AppendLine($"*Our default* (`render` with no options): NeighOpt, occluder gathering for shadow rays, termination with the exact p̄, a {RenderDefaults.LatticeLevels}-level lattice");
             text.AppendLine($"traced first with cheap confirmations (miss ≤ {RenderDefaults.AgreedMiss} for t ≤ {RenderOptions.ConfirmationMaxT}) where coarser neighbours agree, conservative count. *Classical, same pipeline*:");
-            text.AppendLine("the classical engine through our default configuration — what the pipeline saves without any quantum search (DESIGN.md §5).");
+            text.AppendLine("the classical engine through our default configuration — what the pipeline saves without any quantum search (docs/conventions.md).");
             text.AppendLine();
             text.AppendLine("| scene | N | paper's config: Int/Ray (paper count) | #Dpix | paper's table 7: Int/Ray | #Dpix | our default: Int/Ray (conservative) | #Dpix | classical, same pipeline: Int/Ray | analytic / classical wall time |");
             text.AppendLine("|---|---|---|---|---|---|---|---|---|---|");

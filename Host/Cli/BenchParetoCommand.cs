@@ -86,7 +86,7 @@ public sealed class BenchParetoCommand : Command
         text.AppendLine("# Speed against error");
         text.AppendLine();
         text.AppendLine($"{scene.Name}, {size}x{size}, seed {seed}: every configuration on every engine but `gate` (too slow for whole images). Int/Ray in the");
-        text.AppendLine("conservative count (DESIGN.md §5); NRMSE and #Dpix against the classical render (strict ties, no tricks). ★ marks the Pareto front of");
+        text.AppendLine("conservative count (docs/conventions.md); NRMSE and #Dpix against the classical render (strict ties, no tricks). ★ marks the Pareto front of");
         text.AppendLine("Int/Ray against NRMSE, ☆ that of wall time against NRMSE (lower is better on both axes).");
         text.AppendLine();
         text.AppendLine("| engine | configuration | Int/Ray | wall time | NRMSE | #Dpix | front |");

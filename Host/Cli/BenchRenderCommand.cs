@@ -59,7 +59,7 @@ public sealed class BenchRenderCommand : Command
         text.AppendLine("scene and options: NRMSE = RMS of the 8-bit channel differences / the reference's value range; #Dpix = pixels whose 8-bit RGB differs.");
         text.AppendLine("Int/Ray = (#Eval + #C_Int) / #Rays over primary, specular and shadow rays. *Paper count*: a Grover run with r iterations costs r, with");
         text.AppendLine("QSearch's M_l = round(c^l) from l = 0 (the paper's table 6), the setting that reproduces the paper; *conservative*: r + 1, with");
-        text.AppendLine("Algorithm 1's M_l = ceil(c^l) from l = 1, our default (DESIGN.md §5). Both on the analytic engine, which samples the exact outcome");
+        text.AppendLine("Algorithm 1's M_l = ceil(c^l) from l = 1, our default (docs/conventions.md). Both on the analytic engine, which samples the exact outcome");
         text.AppendLine("distribution of every Grover run (tests show it agrees with the full-state simulator).");
         text.AppendLine();
 

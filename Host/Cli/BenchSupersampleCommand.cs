@@ -43,7 +43,7 @@ public sealed class BenchSupersampleCommand : Command
         var points = SupersamplingBenchmark.ErrorVersusQueries(trials, parse.GetValue(_seed));
         var body = new StringBuilder();
         body.AppendLine().AppendLine("# Supersampling results").AppendLine();
-        body.AppendLine(CultureInfo.InvariantCulture, $"Mean absolute error over {trials} uniform random means f (one subpixel of value f; the analytic engine samples the exact outcome distributions, and the tests show the fullstate engine agrees with them). Queries per DESIGN.md §5: a coin flip 1, a Grover operator 2, QSS 2^(t+1) − 1. Seed {parse.GetValue(_seed)}.").AppendLine();
+        body.AppendLine(CultureInfo.InvariantCulture, $"Mean absolute error over {trials} uniform random means f (one subpixel of value f; the analytic engine samples the exact outcome distributions, and the tests show the fullstate engine agrees with them). Queries per docs/conventions.md: a coin flip 1, a Grover operator 2, QSS 2^(t+1) − 1. Seed {parse.GetValue(_seed)}.").AppendLine();
         body.AppendLine("MLAE: the default schedule (m = 0, 1, 2, 3, 5, 8, … growing by 1.5, m = 0 and 1 with twice the flips, K the largest with ≥ 8 flips per level)");
         body.AppendLine("and Suzuki et al.'s doubling schedule (m = 0, 1, 2, 4, …, equal flips, K the largest with ≥ 12 flips per level).").AppendLine();
         body.AppendLine("| queries | MC | QCoin k=3 | k=4 | k=5 | k=6 | QCoin best (k) | MLAE default (K) | MLAE best (K) | MLAE doubling, default (K) | doubling, best (K) |");

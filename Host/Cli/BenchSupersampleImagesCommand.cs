@@ -123,7 +123,7 @@ public sealed class BenchSupersampleImagesCommand : Command
         text.AppendLine("channel estimates the mean of its s x s subpixel values on the analytic engine (the circuits' exact outcome distributions;");
         text.AppendLine("the tests show the fullstate engine agrees). Error: output against the ideal image (each exact mean quantised the same way),");
         text.AppendLine("mean absolute difference in 8-bit levels over pixels and channels and as a fraction of full scale, the same before 8-bit");
-        text.AppendLine("rounding, and the share of pixels whose 8-bit RGB equals the ideal's. Queries per pixel and channel as DESIGN.md §5.");
+        text.AppendLine("rounding, and the share of pixels whose 8-bit RGB equals the ideal's. Queries per pixel and channel as docs/conventions.md.");
         text.AppendLine(CultureInfo.InvariantCulture, $"Tables: mean ± standard deviation over seeds {seeds[0]}..{seeds[^1]}; images: seed 1, which `supersample` reproduces byte for byte");
         text.AppendLine("(e.g. `qrt supersample --size 64 --subpixels 8 -m mlae --seed 1`).").AppendLine();
 

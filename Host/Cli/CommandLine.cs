@@ -24,6 +24,7 @@ public static class CommandLine
         var root = new RootCommand("QuantumRayTracing: hybrid quantum-classical ray tracing on the Q# full-state simulator. "
             + "Exit codes: 0 success, 1 usage error, 2 bad input, 3 Q#/QDK/Node bridge failure, 4 internal error.");
         root.Options.Add(Verbose);
+        root.Options.OfType<VersionOption>().Single().Action = new VersionAction();
         root.Subcommands.Add(new RenderCommand());
         root.Subcommands.Add(new SupersampleCommand());
         root.Subcommands.Add(new SearchCommand());
@@ -35,6 +36,7 @@ public static class CommandLine
 
     public static int Run(string[] args)
     {
+        PlainConsole.ConfigureWhenRedirected();
         var parse = Build().Parse(args);
         // A usage error prints one line, not the whole help text.
         if (parse.Action is System.CommandLine.Invocation.ParseErrorAction onError) onError.ShowHelp = false;

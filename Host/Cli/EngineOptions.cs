@@ -1,6 +1,7 @@
 using System.CommandLine;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
 
@@ -72,6 +73,9 @@ public sealed class EngineOptions
     }
 
     public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();
+
+    /// <summary>The noise model the engine runs under, as reports name it: the one place results take it from.</summary>
+    public NoiseReport Noise(ParseResult parse) => NoiseReport.None;
 
     public void AddTo(Command command)
     {

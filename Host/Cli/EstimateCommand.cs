@@ -58,6 +58,8 @@ public sealed class EstimateCommand : Command
 
     private readonly EstimateOptions _options = new();
 
+    private readonly JsonOption _json = new();
+
     public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model.")
     {
         Arguments.Add(_scene);
@@ -70,6 +72,7 @@ public sealed class EstimateCommand : Command
         _subpixels.Between(1, 1024);
         _counterBits.Between(1, 10);
         _options.AddTo(this);
+        _json.AddTo(this);
         _pixel.Validators.Add(r =>
         {
             if (ParsePixel(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--pixel: {error}");
@@ -92,6 +95,7 @@ public sealed class EstimateCommand : Command
 
     private int Execute(ParseResult parse)
     {
+        _json.EnsureWritable(parse, parse.GetValue(_scene) is { } sceneFile ? [sceneFile.FullName] : []);
         var scene = RenderCommand.LoadScene(parse.GetValue(_scene));
         var geometry = new SceneGeometry(scene);
         var (width, height) = RenderCommand.ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
@@ -114,6 +118,7 @@ public sealed class EstimateCommand : Command
 
         var table = EstimateTable.For($"Resource estimates: {scene.Name}, {label}", estimates, estimator.Models, Context(scene, geometry, subject));
         _options.Write(parse, table);
+        _json.Write(parse, EstimateFigures.Of(table, estimates));
         return 0;
     }
 

@@ -129,6 +129,8 @@ public sealed class RenderCommand : Command
 
     private readonly QSearchOptionSet _qsearch = new();
 
+    private readonly JsonOption _json = new();
+
     public RenderCommand() : base("render", "Render a scene with quantum (or classical) ray searches; print cost per pass (paper table 1) and the error against the classical image.")
     {
         Arguments.Add(_scene);
@@ -162,6 +164,7 @@ public sealed class RenderCommand : Command
             if (!(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
         });
         _qsearch.AddTo(this);
+        _json.AddTo(this);
         _passes.Between(1, 64);
         _shadowPasses.Between(1, 64);
         _size.Validators.Add(r =>
@@ -194,6 +197,7 @@ public sealed class RenderCommand : Command
             ? [output, Sibling(output, "reference"), Sibling(output, "difference"), .. withConverged ? [Sibling(output, "converged")] : Array.Empty<string>()]
             : [output];
         ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
+        _json.EnsureWritable(parse, sceneFile is null ? outputs : [.. outputs, sceneFile.FullName]);
 
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {LightSummary(scene)}, {width}x{height} pixels, {scene.Grid}");
@@ -201,11 +205,13 @@ public sealed class RenderCommand : Command
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+        OracleRegisters? gateRegisters = null;
         if (kind == EngineKind.Gate)
         {
             // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
             var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
             var registers = OracleRegisters.For(new OracleInput(centre, centre.FullRange));
+            gateRegisters = registers;
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
         }
 
@@ -242,7 +248,6 @@ public sealed class RenderCommand : Command
         progress.Finish();
         referenceProgress.Finish();
 
-        var error = ImageError.Between(result.Image, reference.Image);
         var images = new List<(RgbImage, string)> { (result.Image, output) };
         if (withReference)
         {
@@ -252,26 +257,36 @@ public sealed class RenderCommand : Command
         }
         ImageFiles.Write(images);
 
-        AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
-        var sameSamples = sampled ? " with the same samples (search error alone)" : "";
-        AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
-        if (convergedReference is not null)
-        {
-            var toConverged = ImageError.Between(result.Image, convergedReference.Image);
-            var noise = ImageError.Between(reference.Image, convergedReference.Image);
-            AnsiConsole.WriteLine($"error against the converged classical reference ({referenceSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {noise.Nrmse:P2} (Monte Carlo noise alone)");
-        }
-        var convergedWall = convergedReference is null ? "" : $", converged reference {convergedTime.TotalSeconds:0.00} s";
-        AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s{convergedWall}");
-        AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (DESIGN.md §5); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");
-        foreach (var (_, path) in images) AnsiConsole.WriteLine($"wrote {path}");
+        var figures = new RenderFigures(scene.Name, geometry.Count, width, height, geometry.IndexBits, scene.Grid.Bits, gateRegisters, result.Passes, result.Total, reference.Total,
+            ImageError.Between(result.Image, reference.Image),
+            convergedReference is null ? null : referenceSamples,
+            convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),
+            convergedReference is null ? null : ImageError.Between(reference.Image, convergedReference.Image),
+            renderTime, referenceTime, convergedReference is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
+        Print(engineName, figures, sampled);
+        _json.Write(parse, figures, _engine);
         return 0;
     }
 
-    private static Table MetricsTable(string engine, RenderResult result, PassMetrics classical)
+    private static void Print(string engineName, RenderFigures figures, bool sampled)
+    {
+        AnsiConsole.Write(MetricsTable(engineName, figures));
+        var error = figures.Error;
+        var sameSamples = sampled ? " with the same samples (search error alone)" : "";
+        AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
+        if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } noise })
+            AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {noise.Nrmse:P2} (Monte Carlo noise alone)");
+        var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";
+        AnsiConsole.WriteLine($"wall time: {engineName} {figures.RenderTime.TotalSeconds:0.00} s, classical reference {figures.ReferenceTime.TotalSeconds:0.00} s{convergedWall}");
+        AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (docs/conventions.md); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");
+        foreach (var path in figures.Written) AnsiConsole.WriteLine($"wrote {path}");
+    }
+
+    private static Table MetricsTable(string engine, RenderFigures figures)
     {
         // Passes as columns, measures as rows: fits an 80-column terminal.
-        var passes = result.Passes.Append(result.Total).ToArray();
+        var passes = figures.Passes.Append(figures.Total).ToArray();
+        var classical = figures.ClassicalReference;
         var table = new Table().Title($"{engine}: cost per pass (paper table 1)");
         table.AddColumn("measure");
         foreach (var pass in passes) table.AddColumn(new TableColumn(pass.Name).RightAligned());

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Diagnostics;
+using System.Globalization;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
@@ -36,6 +37,8 @@ public sealed class SearchCommand : Command
 
     private readonly EngineOptions _engine = new(EngineKind.FullState, EngineKind.FullState, EngineKind.Analytic);
 
+    private readonly JsonOption _json = new();
+
     public SearchCommand() : base("search", "Grover search with QSearch (adaptive exponential search) over N indices with a given marked set.")
     {
         Options.Add(_count);
@@ -43,6 +46,7 @@ public sealed class SearchCommand : Command
         Options.Add(_searches);
         _qsearch.AddTo(this);
         _engine.AddTo(this);
+        _json.AddTo(this);
         _count.Between(1, 4096);
         _searches.AtLeast(1);
         Validators.Add(r =>
@@ -60,6 +64,7 @@ public sealed class SearchCommand : Command
 
     private int Execute(ParseResult parse)
     {
+        _json.EnsureWritable(parse, []);
         var count = parse.GetValue(_count);
         var root = new SeededRandom(parse.GetValue(_engine.Seed));
         var marked = parse.GetResult(_marked) is null
@@ -89,21 +94,24 @@ public sealed class SearchCommand : Command
         }
         clock.Stop();
 
-        var total = searches.Aggregate(default(SearchCost), (sum, s) => sum + s.Cost);
-        var found = searches.Count(s => s.Found is not null);
+        var figures = new SearchFigures(count, marked.Indices.ToArray(), schedule.Bounds.ToArray(), registers, searches.Length,
+            searches.Count(s => s.Found is not null), searches.Aggregate(default(SearchCost), (sum, s) => sum + s.Cost), rounds, clock.Elapsed);
         var table = new Table().AddColumns("measure", "value");
-        table.AddRow("searches", searches.Length.ToString());
-        table.AddRow("found / not found", $"{found} / {searches.Length - found}");
-        table.AddRow("#Eval per search, conservative", Per(total.QueriesConservative, searches.Length));
-        table.AddRow("#Eval per search, paper", Per(total.QueriesPaper, searches.Length));
-        table.AddRow("#C_Int per search", Per(total.ClassicalTests, searches.Length));
-        table.AddRow("Grover runs per search", Per(total.GroverRuns, searches.Length));
-        table.AddRow("engine calls (rounds)", rounds.ToString());
-        table.AddRow("wall time", $"{clock.Elapsed.TotalSeconds:0.000} s");
+        table.AddRow("searches", N(figures.Searches));
+        table.AddRow("found / not found", $"{N(figures.Found)} / {N(figures.NotFound)}");
+        table.AddRow("#Eval per search, conservative", Per(figures.QueriesConservativePerSearch));
+        table.AddRow("#Eval per search, paper", Per(figures.QueriesPaperPerSearch));
+        table.AddRow("#C_Int per search", Per(figures.ClassicalTestsPerSearch));
+        table.AddRow("Grover runs per search", Per(figures.GroverRunsPerSearch));
+        table.AddRow("engine calls (rounds)", N(figures.Rounds));
+        table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
         AnsiConsole.Write(table);
-        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (DESIGN.md §5).[/]");
+        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
+        _json.Write(parse, figures, _engine);
         return 0;
     }
 
-    private static string Per(long total, int searches) => $"{(double)total / searches:0.00}";
+    private static string Per(double value) => value.ToString("0.00", CultureInfo.InvariantCulture);
+
+    private static string N(int value) => value.ToString(CultureInfo.InvariantCulture);
 }

@@ -94,6 +94,8 @@ public sealed class SupersampleCommand : Command
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic, EngineKind.FullState);
 
+    private readonly JsonOption _json = new();
+
     public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from an image file or a scene) with Monte Carlo, QSS, QCoin or MLAE; print the error against the exact average.")
     {
         Options.Add(_image);
@@ -109,6 +111,7 @@ public sealed class SupersampleCommand : Command
         Options.Add(_qssValues);
         Options.Add(_output);
         _engine.AddTo(this);
+        _json.AddTo(this);
         _method.Choices();
         _qssValues.Choices();
         _subpixels.Between(1, 16);
@@ -159,10 +162,11 @@ public sealed class SupersampleCommand : Command
         var output = parse.GetValue(_output) ?? $"{stem}-{methodName}.png";
         var outputs = settings.UsesLookupTable ? new[] { output, RenderCommand.Sibling(output, "confidence") } : [output];
         ImageFiles.EnsureWritable(outputs, inputPath is null ? [] : [inputPath]);
+        _json.EnsureWritable(parse, inputPath is null ? outputs : [.. outputs, inputPath]);
 
         var kind = parse.GetValue(_engine.Engine);
-        var input = imageFile is not null
-            ? LoadImage(imageFile, settings.Side, kind)
+        var (input, inputName, inputTime) = imageFile is not null
+            ? (LoadImage(imageFile, settings.Side, kind), imageFile.Name, (TimeSpan?)null)
             : RenderScene(sceneFile, RenderCommand.ParseSize(parse.GetValue(_size)).Size, settings.Side, kind);
 
         QssLookupTable? table = null;
@@ -189,15 +193,26 @@ public sealed class SupersampleCommand : Command
         if (result.ConfidenceMap is { } map) images.Add((map, outputs[1]));
         ImageFiles.Write(images);
 
-        var channels = result.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
-        Console.WriteLine($"queries: {result.QueriesPerChannel} per pixel per channel, {channels}; {result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels:N0} in all");
+        var figures = new SupersampleFigures(inputName, input.Image.Width, input.Image.Height, input.Side, input.Width, input.Height,
+            inputTime, table?.Readouts, result.Estimator, result.QueriesPerChannel, result.ChannelsEstimated,
+            result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
+            result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
+        Print(figures, EngineOptions.Name(kind));
+        _json.Write(parse, figures, _engine);
+        return 0;
+    }
+
+    private static void Print(SupersampleFigures figures, string engineName)
+    {
+        var error = figures.Error;
+        var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
+        Console.WriteLine($"queries: {figures.QueriesPerChannel} per pixel per channel, {channels}; {figures.TotalQueries:N0} in all");
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
-        if (result.Confidence is { } confidence)
-            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {confidence.Average():0.000}, lowest {confidence.Min():0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {elapsed.TotalSeconds:0.00} s on the {EngineOptions.Name(kind)} engine");
-        foreach (var (_, path) in images) Console.WriteLine($"wrote {path}");
-        return 0;
+        if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
+        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine");
+        foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
     }
 
     private static SubpixelImage LoadImage(FileInfo file, int s, EngineKind kind)
@@ -213,7 +228,7 @@ public sealed class SupersampleCommand : Command
     }
 
     // The scene (or the built-in Qornell box) rendered classically at s times the output size.
-    private static SubpixelImage RenderScene(FileInfo? file, (int Width, int Height)? size, int s, EngineKind kind)
+    private static (SubpixelImage Input, string Name, TimeSpan? Time) RenderScene(FileInfo? file, (int Width, int Height)? size, int s, EngineKind kind)
     {
         var scene = file is null
             ? SceneLoader.Parse(QornellBox.Build(RenderCommand.DefaultQornellPrimitives).ToJson(), $"built-in qornell-{RenderCommand.DefaultQornellPrimitives}")
@@ -227,8 +242,9 @@ public sealed class SupersampleCommand : Command
         using var classical = new ClassicalHitSearch();
         var rendered = SceneRenderer.Render(scene, classical, new RenderOptions(width * s, height * s), progress).Image;
         progress.Finish();
-        Console.WriteLine($"{scene.Name}: rendered classically at {width * s}x{height * s} in {clock.Elapsed.TotalSeconds:0.00} s, {s}x{s} = {s * s} subpixels per output pixel: {width}x{height} output");
-        return new SubpixelImage(rendered, s);
+        var time = clock.Elapsed;
+        Console.WriteLine($"{scene.Name}: rendered classically at {width * s}x{height * s} in {time.TotalSeconds:0.00} s, {s}x{s} = {s * s} subpixels per output pixel: {width}x{height} output");
+        return (new SubpixelImage(rendered, s), scene.Name, time);
     }
 
     private static void CheckEngine(EngineKind kind, long pixels)

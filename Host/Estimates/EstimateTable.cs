@@ -67,7 +67,7 @@ public static class EstimateTable
             yield return "* Z and CZ (and so the depth) include the phase corrections the uncomputations apply after measuring, which depend on that run's random outcomes and vary a little between runs.";
         }
         yield return $"Physical: the estimator's predefined qubit models, error budget {QubitModel.ErrorBudget.ToString(CultureInfo.InvariantCulture)}, other parameters at their defaults; runtime of one execution of the circuit.";
-        yield return "Queries (DESIGN.md §5): a QSearch run with r iterations is r oracle queries in the paper's count, r + 1 in the conservative count (the preparation counted as one).";
+        yield return "Queries (docs/conventions.md): a QSearch run with r iterations is r oracle queries in the paper's count, r + 1 in the conservative count (the preparation counted as one).";
     }
 
     private static IEnumerable<string> Kinds(IEnumerable<CircuitEstimate> estimates)

@@ -4,7 +4,7 @@ namespace QuantumRayTracing.Intersection;
 /// Which (depth, primitive) pairs a search accepts: depth ≥ <see cref="Near"/> and
 /// (depth, id) &lt; (<see cref="LimitDepth"/>, <see cref="LimitId"/>) in lexicographic order. One
 /// window covers every search of the renderer: a ray's full range (limit (Far, N): depth ≤ Far), a
-/// closer hit than the current best in the strict order (limit (best depth, best id), DESIGN.md §3),
+/// closer hit than the current best in the strict order (limit (best depth, best id), docs/conventions.md),
 /// and the paper's random tie-breaking (limit (best depth, 0): strictly smaller depth).
 /// </summary>
 public readonly record struct HitWindow(int Near, int LimitDepth, int LimitId)

@@ -4,7 +4,7 @@ namespace QuantumRayTracing.Intersection;
 /// The gate-level oracle's two comparator constants for one search, clamped to what its registers can
 /// hold: <see cref="Near"/> for depth ≥ Near on the DepthBits-qubit depth register, and
 /// <see cref="Limit"/> for depth · 2^IndexBits + p &lt; Limit on the depth and index registers read
-/// as one number (the strict (depth, id) order, DESIGN.md §3).
+/// as one number (the strict (depth, id) order, docs/conventions.md).
 /// </summary>
 /// <remarks>
 /// Clamping keeps each comparison exact: a depth register of d qubits holds 0..2^d − 1, so Near ≤ 0

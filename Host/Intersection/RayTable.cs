@@ -7,7 +7,7 @@ namespace QuantumRayTracing.Intersection;
 /// One ray's lookup table (paper sec. 4.1): for every primitive, eval-rpc's ray/plane point quantised
 /// to the scene's fixed-point grid and its depth along the ray's principal axis; and verify-rpc, the
 /// integer test the oracle computes with comparators. Building it costs N row evaluations, counted as
-/// table rows, never as intersection tests (DESIGN.md §5).
+/// table rows, never as intersection tests (docs/conventions.md).
 /// </summary>
 /// <remarks>
 /// A row is invalid (no point to load, the primitive cannot be hit) when the ray is parallel to the

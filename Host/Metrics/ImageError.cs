@@ -3,7 +3,7 @@ using QuantumRayTracing.Output;
 namespace QuantumRayTracing.Metrics;
 
 /// <summary>
-/// How far an image is from its reference (DESIGN.md §5): NRMSE over all 8-bit channel values,
+/// How far an image is from its reference (docs/conventions.md): NRMSE over all 8-bit channel values,
 /// normalised by the reference's value range (max − min over its channels), and #Dpix / %Dpix, the
 /// pixels whose 8-bit RGB differs.
 /// </summary>

@@ -1,14 +1,15 @@
+using System.Text.Json.Serialization;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Metrics;
 
 /// <summary>
-/// A supersampled image against the exact average of its subpixels (DESIGN.md §5): the mean absolute error over
+/// A supersampled image against the exact average of its subpixels (docs/conventions.md): the mean absolute error over
 /// pixels and channels in 8-bit levels between the output and the ideal image (each exact mean quantised the same
 /// way), the same before quantisation (the estimator's own error, as a fraction of full scale), and the share of
 /// pixels whose 8-bit RGB equals the ideal's. <see cref="PixelLevels"/>: each pixel's error, averaged over its channels.
 /// </summary>
-public sealed record SupersampleError(double MeanLevels, double EstimatorError, int ExactPixels, int Pixels, double[] PixelLevels)
+public sealed record SupersampleError(double MeanLevels, double EstimatorError, int ExactPixels, int Pixels, [property: JsonIgnore] double[] PixelLevels)
 {
     /// <summary><see cref="MeanLevels"/> as a fraction of full scale.</summary>
     public double MeanFraction => MeanLevels / 255;

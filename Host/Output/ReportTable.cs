@@ -1,4 +1,5 @@
 using System.Text;
+using System.Text.Json.Nodes;
 using Spectre.Console;
 
 namespace QuantumRayTracing.Output;
@@ -64,6 +65,21 @@ public sealed class ReportTable(string title, string corner, IReadOnlyList<strin
         foreach (var note in _notes) text.AppendLine($"- {note}");
         return text.ToString();
     }
+
+    /// <summary>The same content as JSON: title, context, the corner and columns, rows of measure and cells, notes.</summary>
+    public JsonObject ToJson() => new()
+    {
+        ["title"] = title,
+        ["context"] = new JsonArray([.. _context.Select(l => JsonValue.Create(l))]),
+        ["corner"] = corner,
+        ["columns"] = new JsonArray([.. columns.Select(c => JsonValue.Create(c))]),
+        ["rows"] = new JsonArray([.. _rows.Select(r => new JsonObject
+        {
+            ["measure"] = r.Measure,
+            ["values"] = new JsonArray([.. r.Values.Select(v => JsonValue.Create(v))]),
+        })]),
+        ["notes"] = new JsonArray([.. _notes.Select(l => JsonValue.Create(l))]),
+    };
 
     /// <summary>RFC 4180 rows; the title, context and notes as leading lines starting with '#'.</summary>
     public string ToCsv()

@@ -1,7 +1,7 @@
 namespace QuantumRayTracing.Search;
 
 /// <summary>
-/// What searches cost, in DESIGN.md §5's conventions. Oracle queries (#Eval) come in two counts:
+/// What searches cost, in the conventions of docs/conventions.md. Oracle queries (#Eval) come in two counts:
 /// conservative, where a Grover run with r ≥ 1 iterations costs r + 1 (r applications of Q plus the
 /// preparation A), and the paper's, where it costs r. Sampling the uniform superposition (r = 0)
 /// costs no query in either. <see cref="ClassicalTests"/> is #C_Int, the classical verifications.

@@ -10,6 +10,6 @@ namespace QuantumRayTracing.Supersampling;
 /// <param name="Flips">Flips, ≥ 0.</param>
 public sealed record CoinRequest(CoinKind Kind, double[] Amplitudes, int Iterations, int Flips)
 {
-    /// <summary>DESIGN.md §5: the preparation is one query, each Grover operator two (oracle and inverse).</summary>
+    /// <summary>docs/conventions.md: the preparation is one query, each Grover operator two (oracle and inverse).</summary>
     public long Queries => (long)Flips * (1 + 2L * Iterations);
 }

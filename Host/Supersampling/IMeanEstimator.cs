@@ -9,7 +9,7 @@ public interface IMeanEstimator
     /// <summary>Name as chosen on the command line, with its parameters.</summary>
     string Name { get; }
 
-    /// <summary>Queries spent per item (DESIGN.md §5).</summary>
+    /// <summary>Queries spent per item (docs/conventions.md).</summary>
     long Queries { get; }
 
     /// <summary>One estimate in [0, 1] per item, in order.</summary>

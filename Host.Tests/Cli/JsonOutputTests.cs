@@ -1,0 +1,223 @@
+using System.Globalization;
+using System.Text.RegularExpressions;
+using System.Text.Json.Nodes;
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Tests.Engines;
+
+namespace QuantumRayTracing.Tests.Cli;
+
+/// <summary>
+/// `--json FILE` on render, search, supersample and estimate: each command runs as its own process, its printed
+/// text is parsed and every figure compared with the JSON value, to the precision the text prints it with.
+/// </summary>
+[Collection(QSharpCollection.Name)]
+public sealed partial class JsonOutputTests : IDisposable
+{
+    private static readonly Dictionary<string, string> NoEnvironment = [];
+
+    private readonly ScratchDirectory _scratch = new("qrt-json-cli-");
+
+    public void Dispose() => _scratch.Dispose();
+
+    private (string Output, JsonObject Json) Run(params string[] args)
+    {
+        var (code, output, error) = QrtProcess.Run(NoEnvironment, _scratch.Path, [.. args, "--json", "run.json"]);
+        Assert.True(code == 0, error);
+        return (output, JsonNode.Parse(File.ReadAllText(_scratch.File("run.json")))!.AsObject());
+    }
+
+    [Fact]
+    public void RenderRecordsEveryPrintedFigure()
+    {
+        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+        // The randomized engine misses hits, so the error figures are not all zero.
+        var (output, json) = Run("render", scene, "--engine", "randomized", "--size", "16", "--seed", "5", "-o", "r.png");
+        AssertRunFields(json, "render", "randomized", 5);
+        Assert.Equal("16", (string?)json["options"]!["size"]);
+        Assert.Equal(scene, (string?)json["options"]!["scene"]);
+        var figures = json["figures"]!;
+
+        var scenePrinted = Match(output, @"^(?<name>.+): N = (?<n>\d+) primitives, .*, (?<width>\d+)x(?<height>\d+) pixels");
+        Assert.Equal(scenePrinted["name"].Value, (string?)figures["scene"]);
+        Assert.Equal(Long(scenePrinted["n"].Value), (long)figures["primitives"]!);
+        Assert.Equal((Long(scenePrinted["width"].Value), Long(scenePrinted["height"].Value)), ((long)figures["width"]!, (long)figures["height"]!));
+        var modelled = Match(output, @"modelled per search: (?<index>\d+) index qubits \+ 1 flag, lookup table of (?<rows>\d+) rows x (?<bits>\d+) coordinate bits");
+        Assert.Equal(Long(modelled["index"].Value), (long)figures["indexQubits"]!);
+        Assert.Equal(Long(modelled["rows"].Value), (long)figures["primitives"]!);
+        Assert.Equal(Long(modelled["bits"].Value), (long)figures["coordinateBits"]!);
+        Assert.Null(figures["gateRegisters"]);
+
+        var table = Table(output);
+        var columns = table["measure"];
+        var passes = figures["passes"]!.AsArray().Append(figures["total"]).ToArray();
+        Assert.Equal(columns, passes.Select(p => (string)p!["name"]!));
+        for (var k = 0; k < passes.Length; k++)
+        {
+            var pass = passes[k]!;
+            Assert.Equal(Long(table["#Rays"][k]), (long)pass["rays"]!);
+            Assert.Equal(Long(table["#It"][k]), (long)pass["iterations"]!);
+            Assert.Equal(Long(table["#Eval, conservative"][k]), (long)pass["cost"]!["queriesConservative"]!);
+            Assert.Equal(Long(table["#Eval, paper"][k]), (long)pass["cost"]!["queriesPaper"]!);
+            Assert.Equal(Long(table["#C_Int"][k]), (long)pass["cost"]!["classicalTests"]!);
+            Assert.Equal(Long(table["#Int, conservative"][k]), (long)pass["intersectionsConservative"]!);
+            AssertPrinted(table["Int/Ray, conservative"][k], (double)pass["perRayConservative"]!);
+            AssertPrinted(table["Int/Ray, paper"][k], (double)pass["perRayPaper"]!);
+            Assert.Equal(Long(table["#Cpix (neighbours)"][k]), (long)pass["updatedPixels"]!);
+            Assert.Equal(Long(table["table rows (eval-rpc)"][k]), (long)pass["tableRows"]!);
+            AssertPrinted(table["wall time"][k].Replace(" s", "", StringComparison.Ordinal), (double)pass["elapsed"]!);
+        }
+
+        var reference = Match(output, @"classical reference: (?<rays>[\d,]+) rays, Int/Ray (?<perRay>[\d.]+)");
+        Assert.Equal(Long(reference["rays"].Value), (long)figures["classicalReference"]!["rays"]!);
+        AssertPrinted(reference["perRay"].Value, (double)figures["classicalReference"]!["perRayConservative"]!);
+
+        var error = Match(output, @"NRMSE (?<nrmse>[\d.]+) ?%.*#Dpix (?<dpix>\d+), %Dpix (?<share>[\d.]+) ?%");
+        Assert.True((double)figures["error"]!["nrmse"]! > 0, "the randomized render should differ from the classical one");
+        AssertPrinted(error["nrmse"].Value, 100 * (double)figures["error"]!["nrmse"]!);
+        Assert.Equal(Long(error["dpix"].Value), (long)figures["error"]!["differentPixels"]!);
+        AssertPrinted(error["share"].Value, 100 * (double)figures["error"]!["differentShare"]!);
+
+        var wall = Match(output, @"wall time: randomized (?<render>[\d.]+) s, classical reference (?<reference>[\d.]+) s");
+        AssertPrinted(wall["render"].Value, (double)figures["renderTime"]!);
+        AssertPrinted(wall["reference"].Value, (double)figures["referenceTime"]!);
+        Assert.Equal(["r.png"], figures["written"]!.AsArray().Select(n => (string)n!));
+        Assert.Contains("wrote r.png", output, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void SearchRecordsEveryPrintedFigure()
+    {
+        var (output, json) = Run("search", "--engine", "analytic", "-n", "32", "-m", "3", "17", "--searches", "40");
+        AssertRunFields(json, "search", "analytic", 1);
+        var figures = json["figures"]!;
+        Assert.Equal([3, 17], figures["marked"]!.AsArray().Select(n => (int)n!));
+        var header = Match(output, @"N = (?<n>\d+), marked = \[(?<marked>[\d, ]+)\] \(t = \d+\), M_l = \{(?<bounds>[\d, ]+)\}");
+        Assert.Equal(int.Parse(header["n"].Value, CultureInfo.InvariantCulture), (int)figures["count"]!);
+        Assert.Equal(header["bounds"].Value, string.Join(", ", figures["bounds"]!.AsArray().Select(n => (int)n!)));
+
+        var table = Table(output);
+        Assert.Equal(Long(table["searches"][0]), (long)figures["searches"]!);
+        Assert.Equal($"{(int)figures["found"]!} / {(int)figures["notFound"]!}", table["found / not found"][0]);
+        AssertPrinted(table["#Eval per search, conservative"][0], (double)figures["queriesConservativePerSearch"]!);
+        AssertPrinted(table["#Eval per search, paper"][0], (double)figures["queriesPaperPerSearch"]!);
+        AssertPrinted(table["#C_Int per search"][0], (double)figures["classicalTestsPerSearch"]!);
+        AssertPrinted(table["Grover runs per search"][0], (double)figures["groverRunsPerSearch"]!);
+        Assert.Equal(Long(table["engine calls (rounds)"][0]), (long)figures["rounds"]!);
+        AssertPrinted(table["wall time"][0].Replace(" s", "", StringComparison.Ordinal), (double)figures["wallTime"]!);
+        // The per-search figures are the totals divided, not figures of their own.
+        Assert.Equal((double)figures["total"]!["queriesConservative"]! / 40, (double)figures["queriesConservativePerSearch"]!, 12);
+    }
+
+    [Fact]
+    public void SupersampleRecordsEveryPrintedFigure()
+    {
+        var (output, json) = Run("supersample", "--size", "8", "--subpixels", "4", "-m", "qss", "--seed", "3", "-o", "s.png");
+        AssertRunFields(json, "supersample", "analytic", 3);
+        Assert.Equal("qss", (string?)json["options"]!["method"]);
+        var figures = json["figures"]!;
+        var queries = Match(output, @"queries: (?<perChannel>\d+) per pixel per channel, R, G and B each; (?<total>[\d,]+) in all");
+        Assert.Equal(Long(queries["perChannel"].Value), (long)figures["queriesPerChannel"]!);
+        Assert.Equal(Long(queries["total"].Value), (long)figures["totalQueries"]!);
+        Assert.Equal(3, (int)figures["channelsEstimated"]!);
+
+        var error = Match(output, @"mean absolute (?<levels>[\d.]+) levels of 255 \((?<fraction>[\d.]+); (?<estimator>[\d.]+) before 8-bit rounding\), zero-error pixels (?<exact>\d+) of (?<pixels>\d+) \((?<share>[\d.]+) ?%\)");
+        var e = figures["error"]!;
+        AssertPrinted(error["levels"].Value, (double)e["meanLevels"]!);
+        AssertPrinted(error["fraction"].Value, (double)e["meanFraction"]!);
+        AssertPrinted(error["estimator"].Value, (double)e["estimatorError"]!);
+        Assert.Equal(Long(error["exact"].Value), (long)e["exactPixels"]!);
+        Assert.Equal(Long(error["pixels"].Value), (long)e["pixels"]!);
+        AssertPrinted(error["share"].Value, 100 * (double)e["exactShare"]!);
+        Assert.False(e.AsObject().ContainsKey("pixelLevels"));
+
+        var confidence = Match(output, @"confidence: mean (?<mean>[\d.]+), lowest (?<lowest>[\d.]+)");
+        AssertPrinted(confidence["mean"].Value, (double)figures["meanConfidence"]!);
+        AssertPrinted(confidence["lowest"].Value, (double)figures["lowestConfidence"]!);
+        AssertPrinted(Match(output, @"wall time: (?<time>[\d.]+) s on the analytic engine")["time"].Value, (double)figures["wallTime"]!);
+        Assert.Equal(["s.png", "s-confidence.png"], figures["written"]!.AsArray().Select(n => (string)n!));
+    }
+
+    [Fact]
+    public void EstimateRecordsThePrintedTableAndItsNumbers()
+    {
+        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+        var (output, json) = Run("estimate", scene, "--size", "8", "--no-circuit", "--workers", "1");
+        Assert.Equal("estimate", (string?)json["command"]);
+        Assert.Null(json["seed"]);
+        Assert.Null(json["engine"]);
+        Assert.Equal("""{"model":"none"}""", json["noise"]!.ToJsonString());
+        var figures = json["figures"]!;
+
+        var table = Table(output);
+        var printed = figures["table"]!;
+        Assert.Equal(table["measure"], printed["columns"]!.AsArray().Select(n => (string)n!));
+        foreach (var row in printed["rows"]!.AsArray())
+            Assert.Equal(table[((string)row!["measure"]!).Trim()], row["values"]!.AsArray().Select(n => (string)n!));
+
+        var circuits = figures["circuits"]!.AsArray();
+        Assert.Equal(table["measure"], circuits.Select(c => (string)c!["name"]!));
+        for (var k = 0; k < circuits.Count; k++)
+        {
+            var circuit = circuits[k]!;
+            Assert.Equal(Long(table["logical qubits (estimator)"][k]), (long)circuit["logical"]!["qubits"]!);
+            Assert.Equal(Long(table["T"][k]), (long)circuit["logical"]!["t"]!);
+            Assert.Equal(Long(table["CCZ"][k]), (long)circuit["logical"]!["ccz"]!);
+            Assert.Equal(Long(table["measurements"][k]), (long)circuit["logical"]!["measurements"]!);
+            Assert.Equal(Long(table["qubit_gate_ns_e3, surface_code: physical qubits"][k]), (long)circuit["physical"]![0]!["physicalQubits"]!);
+            Assert.Equal(Long(table["qubit_gate_ns_e3, surface_code: code distance"][k]), (long)circuit["physical"]![0]!["codeDistance"]!);
+        }
+    }
+
+    [Fact]
+    public void JsonFileNotWrittenByUsIsRefusedBeforeAnyWork()
+    {
+        File.WriteAllText(_scratch.File("run.json"), """{"mine": true}""");
+        var (code, _, error) = QrtProcess.Run(NoEnvironment, _scratch.Path, "render", "--size", "4", "-o", "r.png", "--json", "run.json");
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.StartsWith("error: run.json: exists and was not written by this program", error, StringComparison.Ordinal);
+        Assert.Equal("""{"mine": true}""", File.ReadAllText(_scratch.File("run.json")));
+        Assert.Equal(["run.json"], _scratch.FileNames());
+
+        var (same, _, sameError) = QrtProcess.Run(NoEnvironment, _scratch.Path, "render", "--size", "4", "-o", "r.json", "--json", "r.json");
+        Assert.Equal(CommandLine.BadInput, same);
+        Assert.Contains("r.json", sameError, StringComparison.Ordinal);
+        Assert.Equal(["run.json"], _scratch.FileNames());
+    }
+
+    private static void AssertRunFields(JsonObject json, string command, string engine, ulong seed)
+    {
+        Assert.Equal("qrt", (string?)json["generator"]);
+        Assert.Equal(command, (string?)json["command"]);
+        Assert.Equal(engine, (string?)json["engine"]);
+        Assert.Equal(engine, (string?)json["options"]!["engine"]);
+        Assert.Equal(seed, (ulong?)json["seed"]);
+        Assert.Equal("""{"model":"none"}""", json["noise"]!.ToJsonString());
+        Assert.Equal("run.json", (string?)json["options"]!["json"]);
+        Assert.False(string.IsNullOrEmpty((string?)json["versions"]!["program"]));
+        Assert.False(string.IsNullOrEmpty((string?)json["versions"]!["qsharpLang"]));
+    }
+
+    /// <summary>A printed number and the JSON value agree to the printed number's last digit (rounded half up or down).</summary>
+    private static void AssertPrinted(string printed, double value)
+    {
+        var decimals = printed.Contains('.') ? printed.Length - printed.IndexOf('.') - 1 : 0;
+        var parsed = double.Parse(printed, CultureInfo.InvariantCulture);
+        var half = 0.5 * Math.Pow(10, -decimals);
+        Assert.True(Math.Abs(parsed - value) <= half * (1 + 1e-9), $"printed {printed}, JSON {value}");
+    }
+
+    private static long Long(string printed) => long.Parse(printed, NumberStyles.AllowThousands, CultureInfo.InvariantCulture);
+
+    private static GroupCollection Match(string output, string pattern)
+    {
+        var match = Regex.Match(output, pattern, RegexOptions.Multiline);
+        Assert.True(match.Success, $"no line matches {pattern} in:\n{output}");
+        return match.Groups;
+    }
+
+    /// <summary>A printed box table: each row's first cell → its other cells (the header row under its corner's name).</summary>
+    private static Dictionary<string, string[]> Table(string output) => output.Split('\n')
+        .Where(l => l.StartsWith('│'))
+        .Select(l => l.Trim().Trim('│').Split('│').Select(c => c.Trim()).ToArray())
+        .ToDictionary(cells => cells[0], cells => cells[1..]);
+}

@@ -1,0 +1,14 @@
+namespace QuantumRayTracing.Output;
+
+/// <summary>
+/// One run of a command as its <c>--json</c> file records it: the command, every option's value, the seed and
+/// engine (null where the command has none), the noise model, and <see cref="Figures"/>, the result records the
+/// command printed its figures from.
+/// </summary>
+public sealed record RunRecord(
+    string Command,
+    IReadOnlyDictionary<string, object?> Options,
+    ulong? Seed,
+    string? Engine,
+    NoiseReport Noise,
+    object Figures);
