@@ -50,11 +50,7 @@ public sealed class BenchOptimisedCommand : Command
         var plain = new RenderOptions(size, size, Seed: seed);
         // The paper's optimised renderer: NeighOpt on primary and specular rays, termination with its p̄, up to 8 rounds.
         var paperOptimised = plain with { Iterations = 8, Neighbours = true, Stop = StopMode.Paper };
-        var best = plain with
-        {
-            Neighbours = RenderDefaults.Neighbours, ShadowNeighbours = RenderDefaults.ShadowNeighbours, Stop = RenderDefaults.Stop,
-            LatticeLevels = RenderDefaults.LatticeLevels, AgreedMiss = RenderDefaults.AgreedMiss, PlannedMiss = RenderDefaults.PlannedMiss,
-        };
+        var best = RenderDefaults.Options(size, size, seed);
         RenderMeasurement Measure(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch) =>
             RenderMeasurement.Run(scene, kind, options, qsearch, seed, parse.GetValue(_report.Workers), RenderMeasurement.Reference(scene, options));
 

@@ -41,8 +41,8 @@ public sealed class RenderCommand : Command
 
     private readonly Option<int> _passes = new("--passes", "-p")
     {
-        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray.",
-        DefaultValueFactory = _ => RenderOptions.DefaultIterations,
+        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray, at most (the stop rule ends most rays sooner).",
+        DefaultValueFactory = _ => RenderDefaults.Iterations,
     };
 
     private readonly Option<int> _shadowPasses = new("--shadow-passes")
@@ -88,10 +88,9 @@ public sealed class RenderCommand : Command
         HelpName = "off|paper|exact|scene",
     };
 
-    private readonly Option<int> _lattice = new("--lattice")
+    private readonly Option<int?> _lattice = new("--lattice")
     {
-        Description = "Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where those neighbours agree, full where they disagree. Applies to passes with --neighbours / --shadow-neighbours.",
-        DefaultValueFactory = _ => RenderDefaults.LatticeLevels,
+        Description = $"Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where all its neighbours agree, full where they disagree or some are missing. Applies to passes with --neighbours / --shadow-neighbours. Default: from the image size, as many levels (up to {RenderDefaults.LatticeLevels}) as keep {RenderDefaults.LatticePointsPerSide} lattice points along the shorter side.",
     };
 
     private readonly Option<double> _agreedMiss = new("--agreed-miss")
@@ -184,7 +183,7 @@ public sealed class RenderCommand : Command
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
         var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
             parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
-            parse.GetValue(_lattice), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
+            parse.GetValue(_lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
             parse.GetValue(_areaSamples), parse.GetValue(_vpl));
         var sampled = RenderDefaults.SamplesLight(scene, options);
         var referenceSamples = parse.GetValue(_referenceSamples);
@@ -255,6 +254,7 @@ public sealed class RenderCommand : Command
         AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
         var sameSamples = sampled ? " with the same samples (search error alone)" : "";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
+        AnsiConsole.WriteLine($"accuracy budget: expected wrong pixels {result.Budget.ExpectedWrongPixels:0.0} ({result.Budget.ExpectedShare:P3}; an expectation estimated from each search path's miss rate and finds, before neighbour gathering repairs any, docs/accuracy.md), measured {error.DifferentPixels} ({error.DifferentShare:P3}); the default pipeline's budget is {AccuracyBudget.Target:P1}");
         if (convergedReference is not null)
         {
             var toConverged = ImageError.Between(result.Image, convergedReference.Image);

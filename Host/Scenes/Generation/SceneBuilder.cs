@@ -5,9 +5,10 @@ namespace QuantumRayTracing.Scenes.Generation;
 
 /// <summary>
 /// Collects materials, lights and rectangles in order and writes them as a scene file in the
-/// documented format, one rectangle per line so the files stay readable and diffable.
+/// documented format, one rectangle per line so the files stay readable and diffable. Coordinates
+/// lie on a grid of <c>integerBits</c>.<c>fractionBits</c> (fractions only when a scene needs them).
 /// </summary>
-public sealed class SceneBuilder(string name, int integerBits)
+public sealed class SceneBuilder(string name, int integerBits, int fractionBits = 0)
 {
     private readonly List<(string Name, double[] Diffuse, double Mirror)> _materials = [];
     private readonly List<(double[] Position, double[] Intensity)> _lights = [];
@@ -71,7 +72,7 @@ public sealed class SceneBuilder(string name, int integerBits)
         text.AppendLine("{");
         text.AppendLine($"  \"name\": \"{name}\",");
         text.AppendLine("  \"image\": { \"width\": 128, \"height\": 128 },");
-        text.AppendLine($"  \"grid\": {{ \"integerBits\": {integerBits}, \"fractionBits\": 0 }},");
+        text.AppendLine($"  \"grid\": {{ \"integerBits\": {integerBits}, \"fractionBits\": {fractionBits} }},");
         text.AppendLine($"  \"camera\": {{ \"position\": {V(_camera.Position)}, \"lookAt\": {V(_camera.LookAt)}, \"up\": [0, 1, 0], \"verticalFov\": {N(_camera.Fov)} }},");
         text.AppendLine($"  \"ambient\": {N(_ambient)},");
         text.AppendLine("  \"materials\": {");

@@ -1,0 +1,115 @@
+using System.CommandLine;
+using System.Globalization;
+using System.Text;
+using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes.Generation;
+using Spectre.Console;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// `bench accuracy`: wrong pixels and Int/Ray of the default pipeline on random scenes it was not tuned
+/// on, by image size and scene kind, beside `--lattice 0` and the paper's plain pipeline. Written as
+/// Markdown (docs/accuracy.md).
+/// </summary>
+public sealed class BenchAccuracyCommand : Command
+{
+    public const string CommandLine = "qrt bench accuracy";
+
+    private readonly Option<int[]> _sizes = new("--sizes")
+    {
+        Description = "Square image sizes (space-separated).",
+        DefaultValueFactory = _ => [4, 8, 16, 32, 64, 128],
+        AllowMultipleArgumentsPerToken = true,
+    };
+
+    private readonly Option<int> _seeds = new("--seeds")
+    {
+        Description = "Random scenes per kind and size (seeds 1..n).",
+        DefaultValueFactory = _ => 10,
+    };
+
+    private readonly Option<int> _deepSize = new("--deep-size")
+    {
+        Description = "Largest size rendered for the 4,000-rectangle scenes (their rays each test 4,000 primitives classically).",
+        DefaultValueFactory = _ => 64,
+    };
+
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/accuracy.md");
+
+    public BenchAccuracyCommand() : base("accuracy", "Wrong pixels and Int/Ray of the default pipeline on random scenes by size, beside --lattice 0 and the paper's plain pipeline (analytic engine).")
+    {
+        Options.Add(_sizes);
+        Options.Add(_seeds);
+        Options.Add(_deepSize);
+        _report.AddTo(this, scenes: false, seed: false);
+        _seeds.Between(1, 1000);
+        _deepSize.Between(1, 1024);
+        _sizes.Validators.Add(r =>
+        {
+            if (r.GetValueOrDefault<int[]>() is { } sizes && sizes.Any(s => s is < 1 or > 1024)) r.AddError("--sizes: each size must be 1..1024");
+        });
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var report = _report.Report(parse);
+        var sizes = parse.GetValue(_sizes)!;
+        var seeds = Enumerable.Range(1, parse.GetValue(_seeds)).Select(s => (ulong)s).ToArray();
+        var deepSize = parse.GetValue(_deepSize);
+        var configurations = AccuracyBenchmark.Standard;
+        var cases = RandomScene.Kinds.SelectMany(k => sizes.Where(s => k != RandomSceneKind.Deep || s <= deepSize).Select(s => (Kind: k, Size: s))).ToArray();
+
+        var cells = new List<AccuracyCell>();
+        AnsiConsole.Progress().AutoClear(true).Start(progress =>
+        {
+            var task = progress.AddTask("accuracy", maxValue: cases.Length);
+            foreach (var (kind, size) in cases)
+            {
+                cells.AddRange(AccuracyBenchmark.Measure(kind, size, seeds, configurations));
+                task.Increment(1);
+            }
+        });
+
+        var text = new StringBuilder();
+        text.AppendLine("# Accuracy of the default pipeline at every image size");
+        text.AppendLine();
+        text.AppendLine($"Random scenes the pipeline was not tuned on (`RandomScene`, {seeds.Length} seeds per kind and size), analytic engine. *Wrong pixels*: pixels whose");
+        text.AppendLine("8-bit RGB differs from the classical render of the same scene and size, summed over the seeds, and their share. *Expected*: the");
+        text.AppendLine("wrong pixels the default's searches allow, summed over the seeds (`render` prints it per image; see docs/optimised-tracing.md).");
+        text.AppendLine($"Int/Ray in the conservative count (r + 1 per Grover run), over all rays of all seeds. The budget: at most {AccuracyBudget.Target:P1} of pixels wrong, in expectation.");
+        text.AppendLine("*Default*: `render` with no options (lattice levels from the image size); *--lattice 0*: the same without lattice-first tracing;");
+        text.AppendLine("*paper, plain*: 4 TracePass rounds, 2 DirectPass rounds, no neighbours, no termination, the paper's M sets (round(c^l)).");
+        text.AppendLine();
+        text.Append("| scene kind | size | lattice levels |");
+        foreach (var c in configurations) text.Append($" {c.Name}: wrong pixels | share | Int/Ray |");
+        text.AppendLine(" default: expected wrong |");
+        text.Append("|---|---|---|");
+        foreach (var _ in configurations) text.Append("---|---|---|");
+        text.AppendLine("---|");
+        foreach (var group in cells.GroupBy(c => (c.Kind, c.Size)))
+        {
+            var row = group.ToArray();
+            text.Append($"| {RandomSceneKindName(group.Key.Kind)} | {group.Key.Size}x{group.Key.Size} | {RenderDefaults.LatticeLevelsFor(group.Key.Size, group.Key.Size)} |");
+            foreach (var cell in row) text.Append($" {cell.WrongPixels} of {cell.Pixels:N0} | {cell.WrongShare:P2} | {cell.IntPerRay:0.0} |");
+            text.AppendLine($" {row[0].AllowedWrong:0.0} |");
+        }
+        text.AppendLine();
+        var byConfiguration = cells.GroupBy(c => c.Configuration).Select(g => (g.Key, Wrong: g.Sum(c => c.WrongPixels), Pixels: g.Sum(c => c.Pixels))).ToArray();
+        text.AppendLine("All kinds and sizes together: " + string.Join("; ", byConfiguration.Select(c => $"{c.Key} {c.Wrong} of {c.Pixels:N0} pixels wrong ({(double)c.Wrong / c.Pixels:P3})")) + ".");
+        BenchReportOptions.Publish(report, text);
+        return 0;
+    }
+
+    private static string RandomSceneKindName(RandomSceneKind kind) => kind switch
+    {
+        RandomSceneKind.Scattered => "scattered, N = 37",
+        RandomSceneKind.Ties => "ties, N = 24",
+        RandomSceneKind.SharedEdges => "shared edges",
+        RandomSceneKind.Deep => "deep, N = 4,000",
+        RandomSceneKind.Fractional => "fractional grid, N = 29",
+        _ => kind.ToString(),
+    };
+}
