@@ -14,7 +14,7 @@ public enum RandomSceneKind
     /// <summary>Closed boxes in front of a tiled back wall: faces meeting along shared edges and tiles sharing sides.</summary>
     SharedEdges,
 
-    /// <summary>4,000 overlapping rectangles facing the camera: hundreds of layers on every ray.</summary>
+    /// <summary>4,000 small overlapping rectangles facing the camera: dozens of layers on a ray.</summary>
     Deep,
 
     /// <summary>Rectangles on a grid with 2 fraction bits (quarter units), random orientation.</summary>
