@@ -97,6 +97,21 @@ public sealed class BenchAccuracyCommand : Command
             text.AppendLine($" {row[0].AllowedWrong:0.0} |");
         }
         text.AppendLine();
+        text.AppendLine("## The Qornell box, 64 primitives (`render`'s built-in scene, seed 1)");
+        text.AppendLine();
+        text.AppendLine("| size | configuration | wrong pixels | Int/Ray (conservative) | expected wrong pixels |");
+        text.AppendLine("|---|---|---|---|---|");
+        var qornell = RenderCommand.LoadScene(null);
+        foreach (var size in new[] { 8, 128 })
+        {
+            var reference = RenderMeasurement.Reference(qornell, new RenderOptions(size, size));
+            foreach (var c in configurations)
+            {
+                var m = RenderMeasurement.Run(qornell, Engines.EngineKind.Analytic, c.Options(size, 1), c.QSearch, 1, 1, reference);
+                text.AppendLine($"| {size}x{size} | {c.Name} | {m.Error.DifferentPixels} of {size * size:N0} | {m.Result.Total.PerRayConservative:0.00} | {m.Result.Budget.ExpectedWrongPixels:0.0} |");
+            }
+        }
+        text.AppendLine();
         var byConfiguration = cells.GroupBy(c => c.Configuration).Select(g => (g.Key, Wrong: g.Sum(c => c.WrongPixels), Pixels: g.Sum(c => c.Pixels))).ToArray();
         text.AppendLine("All kinds and sizes together: " + string.Join("; ", byConfiguration.Select(c => $"{c.Key} {c.Wrong} of {c.Pixels:N0} pixels wrong ({(double)c.Wrong / c.Pixels:P3})")) + ".");
         BenchReportOptions.Publish(report, text);

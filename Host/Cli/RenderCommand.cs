@@ -254,7 +254,9 @@ public sealed class RenderCommand : Command
         AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
         var sameSamples = sampled ? " with the same samples (search error alone)" : "";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
-        AnsiConsole.WriteLine($"accuracy budget: expected wrong pixels {result.Budget.ExpectedWrongPixels:0.0} ({result.Budget.ExpectedShare:P3}; an expectation estimated from each search path's miss rate and finds, before neighbour gathering repairs any, docs/accuracy.md), measured {error.DifferentPixels} ({error.DifferentShare:P3}); the default pipeline's budget is {AccuracyBudget.Target:P1}");
+        // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
+        AnsiConsole.WriteLine($"wrong pixels: expected {result.Budget.ExpectedWrongPixels:0.0} ({result.Budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); budget {AccuracyBudget.Target:P1}");
+        AnsiConsole.WriteLine("(expected: an expectation from each search path's miss rate and finds)");
         if (convergedReference is not null)
         {
             var toConverged = ImageError.Between(result.Image, convergedReference.Image);
