@@ -20,6 +20,9 @@ public sealed class SceneBuilder(string name, int integerBits, int fractionBits 
 
     public int Count => _rectangles.Count;
 
+    /// <summary>Where the camera stands, so generators can keep rectangles off it.</summary>
+    public double[] CameraPosition => _camera.Position;
+
     public SceneBuilder Material(string material, double r, double g, double b, double mirror = 0)
     {
         _materials.Add((material, [r, g, b], mirror));
