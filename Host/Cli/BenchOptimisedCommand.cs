@@ -117,8 +117,9 @@ public sealed class BenchOptimisedCommand : Command
             text.AppendLine("## Scalability, optimised (the paper's table 7)");
             text.AppendLine();
             text.AppendLine("*Paper's configuration*: NeighOpt on primary and specular rays, termination with the paper's p̄, up to 8 rounds, paper count.");
-            text.AppendLine($"*Our default* (`render` with no options): NeighOpt, occluder gathering for shadow rays, termination with the exact p̄, a {RenderDefaults.LatticeLevels}-level lattice");
-            text.AppendLine($"traced first with cheap confirmations (miss ≤ {RenderDefaults.AgreedMiss} for t ≤ {RenderOptions.ConfirmationMaxT}) where coarser neighbours agree, conservative count. *Classical, same pipeline*:");
+            text.AppendLine($"*Our default* (`render` with no options): NeighOpt, occluder gathering for shadow rays, termination with the exact p̄, up to {RenderDefaults.Iterations} rounds, a lattice of");
+            text.AppendLine($"{RenderDefaults.LatticeLevelsFor(size, size)} levels (from the image size) traced first with cheap confirmations (miss ≤ {RenderDefaults.AgreedMiss} for t ≤ {RenderOptions.ConfirmationMaxT}) where all coarser neighbours agree,");
+            text.AppendLine($"and rays no neighbour vouches for stopped only after the misses the {AccuracyBudget.Target:P1} accuracy budget asks (docs/rendering.md), conservative count. *Classical, same pipeline*:");
             text.AppendLine("the classical engine through our default configuration — what the pipeline saves without any quantum search (DESIGN.md §5).");
             text.AppendLine();
             text.AppendLine("| scene | N | paper's config: Int/Ray (paper count) | #Dpix | paper's table 7: Int/Ray | #Dpix | our default: Int/Ray (conservative) | #Dpix | classical, same pipeline: Int/Ray | analytic / classical wall time |");

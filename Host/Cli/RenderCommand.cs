@@ -184,7 +184,7 @@ public sealed class RenderCommand : Command
         var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
             parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
             parse.GetValue(_lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
-            parse.GetValue(_areaSamples), parse.GetValue(_vpl));
+            parse.GetValue(_areaSamples), parse.GetValue(_vpl), RequiredMisses: null);
         var sampled = RenderDefaults.SamplesLight(scene, options);
         var referenceSamples = parse.GetValue(_referenceSamples);
         var withConverged = sampled && referenceSamples > 0;

@@ -9,6 +9,7 @@ public static class RenderDefaults
     public const bool Neighbours = true;
     public const bool ShadowNeighbours = true;
     public const StopMode Stop = StopMode.Exact;
+
     /// <summary>The most lattice levels the default uses: measured best at 128x128 (docs/optimised-tracing.md).</summary>
     public const int LatticeLevels = 4;
 
@@ -32,12 +33,13 @@ public static class RenderDefaults
         return levels;
     }
 
+    /// <summary>Lattice points the coarsest lattice keeps along the image's shorter side, at least.</summary>
     public const int LatticePointsPerSide = 8;
 
     /// <summary>The options `render` uses with no options given, at a size.</summary>
     public static RenderOptions Options(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
         Neighbours: Neighbours, ShadowNeighbours: ShadowNeighbours, Stop: Stop,
-        LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss);
+        LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss, RequiredMisses: null);
 
     /// <summary>Shadow rays per surface point and area light: the paper's 32 (sec. 7, fig. 13).</summary>
     public const int AreaSamples = 32;

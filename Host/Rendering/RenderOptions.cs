@@ -13,7 +13,8 @@ namespace QuantumRayTracing.Rendering;
 /// 1..<see cref="ConfirmationMaxT"/> hits. <see cref="AreaSamples"/> is S, the shadow rays per surface point
 /// and area light; <see cref="Vpl"/> the virtual point lights per surface point for single-bounce indirect light (0: none).
 /// <see cref="RequiredMisses"/>: the consecutive empty searches a ray its lattice neighbours do not vouch for needs before
-/// the stop rule may end it; null derives it from the accuracy budget (<see cref="AccuracyBudget.RequiredMisses"/>).
+/// the stop rule may end it (1: the paper's rule); null derives it from the accuracy budget (<see cref="AccuracyBudget.RequiredMisses"/>),
+/// as the default pipeline does.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -30,7 +31,7 @@ public sealed record RenderOptions(
     double? PlannedMiss = null,
     int AreaSamples = RenderDefaults.AreaSamples,
     int Vpl = RenderDefaults.Vpl,
-    int? RequiredMisses = null)
+    int? RequiredMisses = 1)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;
