@@ -82,6 +82,18 @@ public sealed class RenderCommandTests : IDisposable
     }
 
     [Fact]
+    public void PrintsTheExpectedAndTheMeasuredShareOfWrongPixels()
+    {
+        // A process of its own: Spectre.Console keeps the first writer it found, so an in-process run's table is not captured.
+        var (code, output, _) = QrtProcess.Run(new Dictionary<string, string>(), _scratch.Path, "render", Scene, "--size", "8", "-o", _scratch.File("b.png"));
+        Assert.Equal(0, code);
+        var lines = output.Split('\n').Select(l => l.TrimEnd('\r')).ToArray();
+        var line = lines.Single(l => l.StartsWith("wrong pixels: expected ", StringComparison.Ordinal));
+        Assert.Contains("measured 0 (0.000 %); budget 0.1 %", line);
+        Assert.Contains(lines, l => l.StartsWith("(expected: an expectation", StringComparison.Ordinal));
+    }
+
+    [Fact]
     public void OwnPngIsReplaced()
     {
         var output = _scratch.File("x.png");
@@ -142,6 +154,8 @@ public sealed class RenderCommandTests : IDisposable
     [InlineData("--shadow-passes", "0")]
     [InlineData("--engine", "bogus")]
     [InlineData("--growth", "2")]
+    [InlineData("--lattice", "7")]
+    [InlineData("--lattice", "-1")]
     public void UsageErrorsExitWithOne(string option, string value)
     {
         Assert.Equal(1, CommandLine.Run(["render", Scene, "-e", "classical", option, value, "-o", _scratch.File("x.png")]));

@@ -73,5 +73,12 @@ public sealed class NeighbourGatheringTests
         Assert.Equal([Ray(0, 4), Ray(4, 4)], layout.CoarserNeighbours(Ray(2, 4), 2).Order());
         // (3, 5) at level 0: the 2-lattice pixels around it are the four diagonals.
         Assert.Equal([Ray(2, 4), Ray(4, 4), Ray(2, 6), Ray(4, 6)], layout.CoarserNeighbours(Ray(3, 5), 2).Order());
+        // Slots: 2 on a lattice edge's midpoint, 4 at a cell's centre, whatever the border cuts off.
+        Assert.Equal(2, layout.CoarserNeighbourSlots(Ray(2, 4), 2));
+        Assert.Equal(4, layout.CoarserNeighbourSlots(Ray(3, 5), 2));
+        // In a 10x10 image the corner pixel (9, 9) has 4 slots but only (8, 8) inside the image: it cannot be vouched for.
+        var wide = PixelLayout.Image(10, 10);
+        Assert.Equal(4, wide.CoarserNeighbourSlots(9 * 10 + 9, 2));
+        Assert.Equal([8 * 10 + 8], wide.CoarserNeighbours(9 * 10 + 9, 2));
     }
 }

@@ -71,7 +71,7 @@ public sealed record SoakSettings(
     /// <summary>`render`'s default pipeline at <paramref name="size"/> with <paramref name="seed"/>, as `render --seed` sets it.</summary>
     public RenderOptions Options(int size, ulong seed) => new(size, size, Iterations, ShadowIterations, TieBreak.Strict,
         RenderDefaults.Neighbours, RenderDefaults.ShadowNeighbours, RenderDefaults.Stop, seed,
-        RenderDefaults.LatticeLevels, RenderDefaults.AgreedMiss, RenderDefaults.PlannedMiss, AreaSamples, Vpl);
+        RenderDefaults.LatticeLevelsFor(size, size), RenderDefaults.AgreedMiss, RenderDefaults.PlannedMiss, AreaSamples, Vpl, RequiredMisses: null);
 
     /// <summary>Whether <paramref name="kind"/> runs on the Q# simulator (its outcomes cannot be seeded).</summary>
     public static bool IsSimulator(EngineKind kind) => kind is EngineKind.FullState or EngineKind.Gate;

@@ -160,7 +160,7 @@ public sealed class BenchLightsCommand : Command
             }
         });
         text.AppendLine("Rows: *default* is `render` with no options but the sample count (NeighOpt, occluder gathering with a layout channel per light and sample");
-        text.AppendLine($"or VPL index, exact termination, a {RenderDefaults.LatticeLevels}-level lattice with cheap confirmations where neighbours agree; the VPL shadow pass runs without");
+        text.AppendLine($"or VPL index, exact termination, a lattice of {RenderDefaults.LatticeLevelsFor(size, size)} levels with cheap confirmations where neighbours agree; the VPL shadow pass runs without");
         text.AppendLine("termination, see docs/rendering.md); *paper's configuration* is NeighOpt on primary and specular rays with the paper's termination and up to 8");
         text.AppendLine("rounds, in the paper's count (as in optimised-tracing.md's table 7); *no optimisation* is 4 TracePass and 2 DirectPass rounds. The classical");
         text.AppendLine("engine through our default pipeline shows what the pipeline alone saves (docs/conventions.md); plain classical costs N per ray. The paper's");
@@ -178,10 +178,9 @@ public sealed class BenchLightsCommand : Command
     }
 
     // Our default pipeline: what `render` uses with no options.
-    private static RenderOptions Default(RenderOptions options) => options with
+    private static RenderOptions Default(RenderOptions options) => RenderDefaults.Options(options.Width, options.Height, options.Seed) with
     {
-        Neighbours = RenderDefaults.Neighbours, ShadowNeighbours = RenderDefaults.ShadowNeighbours, Stop = RenderDefaults.Stop,
-        LatticeLevels = RenderDefaults.LatticeLevels, AgreedMiss = RenderDefaults.AgreedMiss, PlannedMiss = RenderDefaults.PlannedMiss,
+        AreaSamples = options.AreaSamples, Vpl = options.Vpl,
     };
 
     private static Row[] Rows(RenderOptions options)

@@ -41,8 +41,8 @@ public sealed class RenderCommand : Command
 
     private readonly Option<int> _passes = new("--passes", "-p")
     {
-        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray.",
-        DefaultValueFactory = _ => RenderOptions.DefaultIterations,
+        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray, at most (the stop rule ends most rays sooner).",
+        DefaultValueFactory = _ => RenderDefaults.Iterations,
     };
 
     private readonly Option<int> _shadowPasses = new("--shadow-passes")
@@ -88,10 +88,9 @@ public sealed class RenderCommand : Command
         HelpName = "off|paper|exact|scene",
     };
 
-    private readonly Option<int> _lattice = new("--lattice")
+    private readonly Option<int?> _lattice = new("--lattice")
     {
-        Description = "Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where those neighbours agree, full where they disagree. Applies to passes with --neighbours / --shadow-neighbours.",
-        DefaultValueFactory = _ => RenderDefaults.LatticeLevels,
+        Description = $"Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where all its neighbours agree, full where they disagree or some are missing. Applies to passes with --neighbours / --shadow-neighbours. Default: from the image size, as many levels (up to {RenderDefaults.LatticeLevels}) as keep {RenderDefaults.LatticePointsPerSide} lattice points along the shorter side.",
     };
 
     private readonly Option<double> _agreedMiss = new("--agreed-miss")
@@ -187,8 +186,8 @@ public sealed class RenderCommand : Command
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
         var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
             parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
-            parse.GetValue(_lattice), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
-            parse.GetValue(_areaSamples), parse.GetValue(_vpl));
+            parse.GetValue(_lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
+            parse.GetValue(_areaSamples), parse.GetValue(_vpl), RequiredMisses: null);
         var sampled = RenderDefaults.SamplesLight(scene, options);
         var referenceSamples = parse.GetValue(_referenceSamples);
         var withConverged = sampled && referenceSamples > 0;
@@ -258,7 +257,7 @@ public sealed class RenderCommand : Command
         ImageFiles.Write(images);
 
         var figures = new RenderFigures(scene.Name, geometry.Count, width, height, geometry.IndexBits, scene.Grid.Bits, gateRegisters, result.Passes, result.Total, reference.Total,
-            ImageError.Between(result.Image, reference.Image),
+            ImageError.Between(result.Image, reference.Image), result.Budget,
             convergedReference is null ? null : referenceSamples,
             convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),
             convergedReference is null ? null : ImageError.Between(reference.Image, convergedReference.Image),
@@ -274,6 +273,9 @@ public sealed class RenderCommand : Command
         var error = figures.Error;
         var sameSamples = sampled ? " with the same samples (search error alone)" : "";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
+        // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
+        AnsiConsole.WriteLine($"wrong pixels: expected {figures.Budget.ExpectedWrongPixels:0.0} ({figures.Budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); budget {AccuracyBudget.Target:P1}");
+        AnsiConsole.WriteLine("(expected: an expectation from each search path's miss rate and finds)");
         if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } noise })
             AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {noise.Nrmse:P2} (Monte Carlo noise alone)");
         var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";

@@ -21,12 +21,13 @@ public static class DirectPass
         IRenderProgress? progress = null)
     {
         var occluders = new int?[shadowRays.Count];
+        bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[shadowRays.Count];
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
             occluders[i] ??= outcome.Primitive;
             misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
-            return occluders[i] is not null || outcome.Certain || options.Stop?.Continue(misses[i]) == false;
+            return occluders[i] is not null || outcome.Certain || options.Stop?.Continue(misses[i], vouched?[i] == true) == false;
         }
         Func<(long, long)>? gather = options.Neighbours is { } neighbours
             ? () => NeighbourGathering.ForOcclusion(geometry, shadowRays, occluders, neighbours)
@@ -42,6 +43,7 @@ public static class DirectPass
 
         var phased = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
         {
+            vouched = agreed;
             var inLevel = levelRays.ToHashSet();
             var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                 : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);

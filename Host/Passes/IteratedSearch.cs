@@ -40,6 +40,8 @@ public static class IteratedSearch
         var kept = new RayTable?[rays.Count];
         var cost = default(SearchCost);
         long tableRows = 0, updated = 0;
+        var tallies = new Dictionary<QSearchSchedule, (long Searches, long Found)>();
+        (long Searches, long Found) engineOwn = default;
         var round = 0;
         for (; round < iterations; round++)
         {
@@ -56,6 +58,13 @@ public static class IteratedSearch
                 for (var k = 0; k < block.Length; k++)
                 {
                     cost += outcomes[k].Cost;
+                    if (!outcomes[k].Certain)
+                    {
+                        var found = outcomes[k].Primitive is null ? 0 : 1;
+                        if (queries[k].Schedule is { } own)
+                            tallies[own] = (tallies.GetValueOrDefault(own).Searches + 1, tallies.GetValueOrDefault(own).Found + found);
+                        else engineOwn = (engineOwn.Searches + 1, engineOwn.Found + found);
+                    }
                     finished[block[k]] = observe(block[k], tables[k], outcomes[k]);
                     kept[block[k]] = finished[block[k]] ? null : tables[k].Compact();
                 }
@@ -66,6 +75,10 @@ public static class IteratedSearch
             cost += new SearchCost(0, 0, tests, 0);
             updated += changed;
         }
-        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated);
+        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated)
+        {
+            Tallies = [.. tallies.Select(t => new SearchTally(t.Key, t.Value.Searches, t.Value.Found)),
+                .. engineOwn.Searches > 0 ? [new SearchTally(null, engineOwn.Searches, engineOwn.Found)] : Array.Empty<SearchTally>()],
+        };
     }
 }

@@ -59,7 +59,8 @@ public static class NeighbourGathering
 
     /// <summary>
     /// Lattice-first tracing, closest hits: every ray of one lattice level is tested against the
-    /// primitives its next-coarser lattice neighbours hold. It "agrees" when it has lattice neighbours, they all hold the same
+    /// primitives its next-coarser lattice neighbours hold. It "agrees" when it has all its lattice neighbours (a ray at the
+    /// border, or beside pixels without a ray of its channel, has fewer and gets a full search), they all hold the same
     /// result (one primitive, or all nothing) and the ray accepted that primitive.
     /// </summary>
     public static (long Tests, long Updated) FromLattice(
@@ -77,14 +78,14 @@ public static class NeighbourGathering
                 hits[i] = new Hit(p, row.Depth, row.Distance, rays[i].At(row.Distance));
             }
             if (hits[i] is not null) updated++;
-            agreed[i] = held.Length > 0 && held.Distinct().Count() == 1 && hits[i]?.Primitive == held[0];
+            agreed[i] = held.Length == layout.CoarserNeighbourSlots(i, levels) && held.Distinct().Count() == 1 && hits[i]?.Primitive == held[0];
         }
         return (tests, updated);
     }
 
     /// <summary>
     /// Lattice-first tracing, shadow rays: every unoccluded ray of one lattice level is tested against
-    /// its next-coarser lattice neighbours' occluders. It "agrees" when it has lattice neighbours and none is occluded.
+    /// its next-coarser lattice neighbours' occluders. It "agrees" when it has all its lattice neighbours and none is occluded.
     /// </summary>
     public static (long Tests, long Updated) FromLatticeOccluders(
         SceneGeometry geometry, IReadOnlyList<Ray> rays, IEnumerable<int> level, int?[] occluders, PixelLayout layout, int levels, bool[] agreed)
@@ -102,7 +103,7 @@ public static class NeighbourGathering
                 updated++;
                 break;
             }
-            agreed[i] = held.Length > 0 && held.All(o => o is null);
+            agreed[i] = held.Length == layout.CoarserNeighbourSlots(i, levels) && held.All(o => o is null);
         }
         return (tests, updated);
     }

@@ -9,6 +9,9 @@ namespace QuantumRayTracing.Passes;
 /// </summary>
 public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchCost Cost, long TableRows, TimeSpan Elapsed, long UpdatedPixels = 0)
 {
+    /// <summary>The pass's searches by schedule, for the expected share of wrong pixels (see <see cref="SearchTally"/>).</summary>
+    public IReadOnlyList<SearchTally> Tallies { get; init; } = [];
+
     /// <summary>#Int = #Eval + #C_Int, in the conservative query count.</summary>
     public long IntersectionsConservative => Cost.QueriesConservative + Cost.ClassicalTests;
 
@@ -26,7 +29,10 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     public static PassMetrics Phases(PassMetrics first, PassMetrics second, long tests, long updated) => new(
         first.Name, first.Rays, first.Iterations + second.Iterations,
         first.Cost + second.Cost + new SearchCost(0, 0, tests, 0), first.TableRows + second.TableRows,
-        first.Elapsed + second.Elapsed, first.UpdatedPixels + second.UpdatedPixels + updated);
+        first.Elapsed + second.Elapsed, first.UpdatedPixels + second.UpdatedPixels + updated)
+    {
+        Tallies = SearchTally.Join(first.Tallies.Concat(second.Tallies)),
+    };
 
     /// <summary>The metrics of several passes together; #It is the largest of theirs.</summary>
     public static PassMetrics Total(string name, IReadOnlyCollection<PassMetrics> passes) => new(
@@ -36,5 +42,8 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
         passes.Aggregate(default(SearchCost), (sum, p) => sum + p.Cost),
         passes.Sum(p => p.TableRows),
         TimeSpan.FromTicks(passes.Sum(p => p.Elapsed.Ticks)),
-        passes.Sum(p => p.UpdatedPixels));
+        passes.Sum(p => p.UpdatedPixels))
+    {
+        Tallies = SearchTally.Join(passes.SelectMany(p => p.Tallies)),
+    };
 }

@@ -57,6 +57,18 @@ public sealed class PixelLayout
             }
     }
 
+    /// <summary>
+    /// How many coarser lattice neighbours ray <paramref name="ray"/> has away from the image's border:
+    /// 2 on a lattice edge's midpoint, 4 at a cell's centre. Fewer in <see cref="CoarserNeighbours"/>
+    /// means the border cut some off or their pixels have no ray of this channel.
+    /// </summary>
+    public int CoarserNeighbourSlots(int ray, int levels)
+    {
+        var step = 1 << LatticeLevel(ray, levels);
+        var (x, y) = (_pixelOf[ray] % _width / step, _pixelOf[ray] / _width / step);
+        return (x % 2 == 1 ? 2 : 1) * (y % 2 == 1 ? 2 : 1);
+    }
+
     /// <summary>The rays of the same channel at the pixels left, right, above and below ray <paramref name="ray"/>'s.</summary>
     public IEnumerable<int> Neighbours(int ray)
     {

@@ -19,6 +19,7 @@ public static class TracePass
         IRenderProgress? progress = null)
     {
         var hits = new Hit?[rays.Count];
+        bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[rays.Count];
         HitWindow Window(int i, RayTable table) =>
             Hit.Beyond(rays[i], hits[i], table.Count, options.TieBreak);
@@ -26,7 +27,7 @@ public static class TracePass
         {
             if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);
             misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
-            return outcome.Certain || options.Stop?.Continue(misses[i]) == false;
+            return outcome.Certain || options.Stop?.Continue(misses[i], vouched?[i] == true) == false;
         }
         Func<(long, long)>? gather = options.Neighbours is { } neighbours
             ? () => NeighbourGathering.ForClosest(geometry, rays, hits, neighbours, options.TieBreak)
@@ -38,6 +39,7 @@ public static class TracePass
 
         var metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
         {
+            vouched = agreed;
             var inLevel = levelRays.ToHashSet();
             var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                 : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);

@@ -9,9 +9,37 @@ public static class RenderDefaults
     public const bool Neighbours = true;
     public const bool ShadowNeighbours = true;
     public const StopMode Stop = StopMode.Exact;
+
+    /// <summary>The most lattice levels the default uses: measured best at 128x128 (docs/optimised-tracing.md).</summary>
     public const int LatticeLevels = 4;
+
+    /// <summary>
+    /// TracePass rounds at most. With termination the stop rule ends rays, so the rounds only cap the rays
+    /// that keep finding closer hits: deep scenes need more than the paper's 4 (docs/accuracy.md).
+    /// </summary>
+    public const int Iterations = 8;
     public const double AgreedMiss = 0.4;
     public static readonly double? PlannedMiss = null;
+
+    /// <summary>
+    /// Lattice levels for an image: the coarsest lattice keeps at least <see cref="LatticePointsPerSide"/>
+    /// points along the shorter side, at most <see cref="LatticeLevels"/> levels (none below 16 pixels,
+    /// where agreeing neighbours several pixels away say little about a pixel).
+    /// </summary>
+    public static int LatticeLevelsFor(int width, int height)
+    {
+        var levels = 0;
+        while (levels < LatticeLevels && (LatticePointsPerSide << (levels + 1)) <= Math.Min(width, height)) levels++;
+        return levels;
+    }
+
+    /// <summary>Lattice points the coarsest lattice keeps along the image's shorter side, at least.</summary>
+    public const int LatticePointsPerSide = 8;
+
+    /// <summary>The options `render` uses with no options given, at a size.</summary>
+    public static RenderOptions Options(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
+        Neighbours: Neighbours, ShadowNeighbours: ShadowNeighbours, Stop: Stop,
+        LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss, RequiredMisses: null);
 
     /// <summary>Shadow rays per surface point and area light: the paper's 32 (sec. 7, fig. 13).</summary>
     public const int AreaSamples = 32;

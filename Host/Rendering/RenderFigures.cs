@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Rendering;
 /// Everything `render` prints about a run, in one record its text and its --json file are both written from:
 /// the scene and what a search models (index qubits, coordinate bits; with the gate engine the centre ray's oracle
 /// registers), each pass's metrics and their total (docs/conventions.md), the classical reference's, the error
-/// against it, with sampled light the error against the converged reference and that reference's own Monte Carlo
+/// against it and the accuracy budget's expected wrong pixels, with sampled light the error against the converged reference and that reference's own Monte Carlo
 /// noise, the wall times and the files written.
 /// </summary>
 public sealed record RenderFigures(
@@ -23,6 +23,7 @@ public sealed record RenderFigures(
     PassMetrics Total,
     PassMetrics ClassicalReference,
     ImageError Error,
+    AccuracyBudget Budget,
     int? ConvergedSamples,
     ImageError? ConvergedError,
     ImageError? ConvergedNoise,

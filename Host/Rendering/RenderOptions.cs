@@ -12,6 +12,9 @@ namespace QuantumRayTracing.Rendering;
 /// schedule in every other search by the cheapest fixed list missing at most that share of rays with
 /// 1..<see cref="ConfirmationMaxT"/> hits. <see cref="AreaSamples"/> is S, the shadow rays per surface point
 /// and area light; <see cref="Vpl"/> the virtual point lights per surface point for single-bounce indirect light (0: none).
+/// <see cref="RequiredMisses"/>: the consecutive empty searches a ray its lattice neighbours do not vouch for needs before
+/// the stop rule may end it (1: the paper's rule); null derives it from the accuracy budget (<see cref="AccuracyBudget.RequiredMisses"/>),
+/// as the default pipeline does.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -27,7 +30,8 @@ public sealed record RenderOptions(
     double AgreedMiss = RenderOptions.DefaultAgreedMiss,
     double? PlannedMiss = null,
     int AreaSamples = RenderDefaults.AreaSamples,
-    int Vpl = RenderDefaults.Vpl)
+    int Vpl = RenderDefaults.Vpl,
+    int? RequiredMisses = 1)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;

@@ -11,5 +11,8 @@ public sealed record RenderResult(RgbImage Image, IReadOnlyList<PassMetrics> Pas
 {
     public IReadOnlyList<Scenes.Vec3> Radiance { get; init; } = [];
 
+    /// <summary>The expected wrong pixels the render's searches allow (<see cref="AccuracyBudget"/>).</summary>
+    public AccuracyBudget Budget { get; init; } = new(0, 0);
+
     public PassMetrics Total => PassMetrics.Total("total", Passes.ToArray());
 }

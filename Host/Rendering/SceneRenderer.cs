@@ -133,7 +133,11 @@ public static class SceneRenderer
             var c = radiance[y * options.Width + x];
             return (WhittedShading.Encode(c.X), WhittedShading.Encode(c.Y), WhittedShading.Encode(c.Z));
         });
-        return new RenderResult(image, passes) { Radiance = radiance };
+        return new RenderResult(image, passes)
+        {
+            Radiance = radiance,
+            Budget = AccuracyBudget.From(passes, search, geometry.Count, lattice?.Agreed, stop?.RequiredMisses ?? 1, primaryRays.Length),
+        };
     }
 
     // The termination criterion's rule, or null; Scene mode first measures t on a lattice of primary rays.
@@ -148,6 +152,8 @@ public static class SceneRenderer
             passes.Add(calibration);
         }
         var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper, planned);
-        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop));
+        var required = options.RequiredMisses ?? AccuracyBudget.RequiredMisses(
+            AccuracyBudget.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
+        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop), required);
     }
 }

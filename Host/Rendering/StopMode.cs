@@ -6,7 +6,7 @@ public enum StopMode
     /// <summary>Every ray runs all its rounds.</summary>
     Off,
 
-    /// <summary>p̄ from the paper's formula (eq. 10 at r = M_l, which reproduces its table 6; eq. 11 for the randomized engine), t uniform on 1..N.</summary>
+    /// <summary>p̄ from the paper's formula (eq. 10 at r = M_l, close to its table 6; eq. 11 for the randomized engine), t uniform on 1..N.</summary>
     Paper,
 
     /// <summary>p̄ the exact miss rate of our search, t uniform on 1..N.</summary>

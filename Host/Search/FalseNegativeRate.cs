@@ -6,7 +6,7 @@ namespace QuantumRayTracing.Search;
 /// The probability that a search reports nothing although t &gt; 0 primitives are accepted, for the
 /// termination criterion of the paper's sec. 6.2. For QSearch three ways: eq. 10 as printed
 /// (cos²((M_l+1)θ) per bound), eq. 10 evaluated at r = M_l (cos²((2M_l+1)θ), which reproduces the
-/// paper's table 6), and the exact rate of our QSearch (the initial sample, then r_l uniform on 1..M_l
+/// paper's table 6 closely wherever our round-rule M set is the paper's: not at N = 32), and the exact rate of our QSearch (the initial sample, then r_l uniform on 1..M_l
 /// per bound). For the randomized classical search, eq. 11. Each averages over a distribution p_t of t
 /// (the paper's is uniform on 1..N).
 /// </summary>

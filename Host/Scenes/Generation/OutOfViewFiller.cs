@@ -13,27 +13,37 @@ public static class OutOfViewFiller
     private const int FacingCamera = 512;
     private const int PerSide = 32 * 31 * 2; // planes 0..31, unit cells 0..30 along the other axis, z cells 0 and 1
 
-    /// <summary>The most filler squares a 5-bit grid holds this way.</summary>
+    /// <summary>The most filler squares a 5-bit grid holds this way (a few fewer where the camera stands on one).</summary>
     public const int Capacity = FacingCamera + 2 * PerSide;
 
     public static void Fill(SceneBuilder scene, int primitives, string material)
     {
         var needed = primitives - scene.Count;
-        if (needed > Capacity) throw new ArgumentOutOfRangeException(nameof(primitives), primitives, $"at most {Capacity} filler squares fit behind the camera");
-        for (var k = 0; k < needed; k++)
+        var camera = scene.CameraPosition;
+        // A square the camera stands on (the loader refuses it) is skipped for the next one.
+        bool HoldsCamera(double[] min, double[] max) => Enumerable.Range(0, 3).All(a => min[a] <= camera[a] && camera[a] <= max[a]);
+        var placed = 0;
+        for (var k = 0; placed < needed; k++)
         {
+            if (k >= Capacity) throw new ArgumentOutOfRangeException(nameof(primitives), primitives, $"at most {Capacity} filler squares fit behind the camera");
+            double[] min, max;
             if (k < FacingCamera)
             {
                 var layer = k / 256;
                 var x = k % 16 * 2;
                 var y = k % 256 / 16 * 2;
-                scene.Rectangle([x, y, layer], [x + 1, y + 1, layer], material);
-                continue;
+                (min, max) = ([x, y, layer], [x + 1, y + 1, layer]);
             }
-            var j = (k - FacingCamera) % PerSide;
-            var (plane, cell, z) = (j / 62, j % 62 / 2, j % 2);
-            if (k - FacingCamera < PerSide) scene.Rectangle([plane, cell, z], [plane, cell + 1, z + 1], material);
-            else scene.Rectangle([cell, plane, z], [cell + 1, plane, z + 1], material);
+            else
+            {
+                var j = (k - FacingCamera) % PerSide;
+                var (plane, cell, z) = (j / 62, j % 62 / 2, j % 2);
+                if (k - FacingCamera < PerSide) (min, max) = ([plane, cell, z], [plane, cell + 1, z + 1]);
+                else (min, max) = ([cell, plane, z], [cell + 1, plane, z + 1]);
+            }
+            if (HoldsCamera(min, max)) continue;
+            scene.Rectangle(min, max, material);
+            placed++;
         }
     }
 }

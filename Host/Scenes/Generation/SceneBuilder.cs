@@ -5,9 +5,10 @@ namespace QuantumRayTracing.Scenes.Generation;
 
 /// <summary>
 /// Collects materials, lights and rectangles in order and writes them as a scene file in the
-/// documented format, one rectangle per line so the files stay readable and diffable.
+/// documented format, one rectangle per line so the files stay readable and diffable. Coordinates
+/// lie on a grid of <c>integerBits</c>.<c>fractionBits</c> (fractions only when a scene needs them).
 /// </summary>
-public sealed class SceneBuilder(string name, int integerBits)
+public sealed class SceneBuilder(string name, int integerBits, int fractionBits = 0)
 {
     private readonly List<(string Name, double[] Diffuse, double Mirror)> _materials = [];
     private readonly List<(double[] Position, double[] Intensity)> _lights = [];
@@ -18,6 +19,9 @@ public sealed class SceneBuilder(string name, int integerBits)
     private (double[] Position, double[] LookAt, double Fov) _camera = ([0, 0, -1], [0, 0, 0], 40);
 
     public int Count => _rectangles.Count;
+
+    /// <summary>Where the camera stands, so generators can keep rectangles off it.</summary>
+    public double[] CameraPosition => _camera.Position;
 
     public SceneBuilder Material(string material, double r, double g, double b, double mirror = 0)
     {
@@ -71,7 +75,7 @@ public sealed class SceneBuilder(string name, int integerBits)
         text.AppendLine("{");
         text.AppendLine($"  \"name\": \"{name}\",");
         text.AppendLine("  \"image\": { \"width\": 128, \"height\": 128 },");
-        text.AppendLine($"  \"grid\": {{ \"integerBits\": {integerBits}, \"fractionBits\": 0 }},");
+        text.AppendLine($"  \"grid\": {{ \"integerBits\": {integerBits}, \"fractionBits\": {fractionBits} }},");
         text.AppendLine($"  \"camera\": {{ \"position\": {V(_camera.Position)}, \"lookAt\": {V(_camera.LookAt)}, \"up\": [0, 1, 0], \"verticalFov\": {N(_camera.Fov)} }},");
         text.AppendLine($"  \"ambient\": {N(_ambient)},");
         text.AppendLine("  \"materials\": {");

@@ -1,0 +1,92 @@
+using QuantumRayTracing.Metrics;
+using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>A pipeline configuration measured by <see cref="AccuracyBenchmark"/>: its options at a size, and its QSearch rule.</summary>
+public sealed record AccuracyConfiguration(string Name, Func<int, ulong, RenderOptions> Options, QSearchOptions QSearch);
+
+/// <summary>
+/// One cell of the accuracy table: a configuration on one scene kind at one size, over several seeds.
+/// Wrong pixels are those whose 8-bit RGB differs from the classical render of the same scene and size;
+/// <see cref="AllowedWrong"/> sums the expected wrong pixels each render's configuration allows.
+/// </summary>
+public sealed record AccuracyCell(
+    RandomSceneKind Kind, int Size, string Configuration, int Seeds, long Pixels, long WrongPixels, double AllowedWrong,
+    long IntersectionsConservative, long Rays)
+{
+    public double WrongShare => (double)WrongPixels / Pixels;
+
+    public double IntPerRay => Rays == 0 ? 0 : (double)IntersectionsConservative / Rays;
+}
+
+/// <summary>
+/// The default pipeline's accuracy on scenes it was not tuned on: random scenes of every
+/// <see cref="RandomSceneKind"/>, rendered on the analytic engine at several sizes and seeds by several
+/// configurations, each compared pixel by pixel with the classical render.
+/// </summary>
+public static class AccuracyBenchmark
+{
+    /// <summary>Our default, the default without the lattice, and the paper's plain pipeline (4 rounds, 2 shadow rounds, no optimisation, its M sets).</summary>
+    public static IReadOnlyList<AccuracyConfiguration> Standard { get; } =
+    [
+        new("default", (size, seed) => RenderDefaults.Options(size, size, seed), new QSearchOptions()),
+        new("--lattice 0", (size, seed) => RenderDefaults.Options(size, size, seed) with { LatticeLevels = 0 }, new QSearchOptions()),
+        new("paper, plain", (size, seed) => new RenderOptions(size, size, Seed: seed), new QSearchOptions(Rule: MSetRule.Round)),
+    ];
+
+    /// <summary>
+    /// The ways to keep the budget that were measured against each other: the pipeline before it (4 lattice
+    /// levels at every size, any one agreeing neighbour vouches, a ray stopped after one empty search, 4
+    /// rounds; only the vouching rule cannot be had again), and the default with one of its rules undone or
+    /// a tighter cheap confirmation.
+    /// </summary>
+    public static IReadOnlyList<AccuracyConfiguration> Alternatives { get; } =
+    [
+        Standard[0],
+        new("4 levels at every size, 1 miss, 4 rounds", (size, seed) => RenderDefaults.Options(size, size, seed) with
+        {
+            LatticeLevels = RenderDefaults.LatticeLevels, RequiredMisses = 1, Iterations = RenderOptions.DefaultIterations,
+        }, new QSearchOptions()),
+        new("default, 1 required miss", (size, seed) => RenderDefaults.Options(size, size, seed) with { RequiredMisses = 1 }, new QSearchOptions()),
+        new("default, one level fewer", (size, seed) => RenderDefaults.Options(size, size, seed) with
+        {
+            LatticeLevels = Math.Max(0, RenderDefaults.LatticeLevelsFor(size, size) - 1),
+        }, new QSearchOptions()),
+        new("default, --agreed-miss 0.2", (size, seed) => RenderDefaults.Options(size, size, seed) with { AgreedMiss = 0.2 }, new QSearchOptions()),
+    ];
+
+    public static IReadOnlyList<AccuracyCell> Measure(
+        RandomSceneKind kind, int size, IReadOnlyList<ulong> seeds, IReadOnlyList<AccuracyConfiguration> configurations)
+    {
+        var cells = configurations.Select(c => new AccuracyCell(kind, size, c.Name, 0, 0, 0, 0, 0, 0)).ToArray();
+        foreach (var seed in seeds)
+        {
+            var scene = RandomScene.Build(kind, seed);
+            using var classical = new ClassicalHitSearch();
+            var reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(new RenderOptions(size, size, Seed: seed)));
+            for (var c = 0; c < configurations.Count; c++)
+            {
+                var options = configurations[c].Options(size, seed);
+                using var search = Cli.EngineOptions.CreateHitSearch(Engines.EngineKind.Analytic, new SeededRandom(seed), 1, configurations[c].QSearch);
+                var result = SceneRenderer.Render(scene, search, options);
+                var error = ImageError.Between(result.Image, reference.Image);
+                var total = result.Total;
+                cells[c] = cells[c] with
+                {
+                    Seeds = cells[c].Seeds + 1,
+                    Pixels = cells[c].Pixels + (long)size * size,
+                    WrongPixels = cells[c].WrongPixels + error.DifferentPixels,
+                    AllowedWrong = cells[c].AllowedWrong + result.Budget.ExpectedWrongPixels,
+                    IntersectionsConservative = cells[c].IntersectionsConservative + total.IntersectionsConservative,
+                    Rays = cells[c].Rays + total.Rays,
+                };
+            }
+        }
+        return cells;
+    }
+}
