@@ -1,0 +1,56 @@
+using System.Diagnostics;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Estimates;
+
+/// <summary>
+/// A frame's cost on fault-tolerant machines beside its classical cost on this machine: the recorded
+/// analytic render, the price of each distinct run, the frame's cost, and the classical brute-force
+/// render of the same frame (the reference `render` compares with) with its wall time per pass.
+/// </summary>
+public sealed record FrameEstimate(FrameSettings Settings, FrameRecording Recording, FrameCost Cost, RenderResult Classical)
+{
+    /// <summary>Distinct (oracle shape, r) priced: Resource Estimator jobs.</summary>
+    public int DistinctRuns { get; init; }
+
+    /// <summary>Wall time of the recorded render, the classical render and the pricing.</summary>
+    public (TimeSpan Render, TimeSpan Classical, TimeSpan Pricing) WallTimes { get; init; }
+
+    /// <summary>
+    /// Records the frame, prices its runs on <paramref name="pool"/> (one job per distinct shape and r,
+    /// each on every model at ε / R and at ε), sums them, and renders the same frame classically.
+    /// </summary>
+    public static FrameEstimate Run(FrameSettings settings, BridgePool pool, IRenderProgress? progress = null, Action<int>? onPricing = null, Action? onJobDone = null)
+    {
+        var clock = Stopwatch.StartNew();
+        var recording = FrameRecording.Record(settings.Scene, settings.Render, settings.Search, progress);
+        var renderTime = clock.Elapsed;
+
+        clock.Restart();
+        var budget = FrameCost.BudgetFor(recording, settings.ErrorBudget);
+        var jobs = RunPricing.Jobs(recording, settings.Construction).Where(j => j.Key.Iterations > 0).ToArray();
+        onPricing?.Invoke(jobs.Length);
+        var estimator = new ResourceEstimator(pool, RunPricing.Models(settings.Models, budget), withCircuits: false);
+        var estimates = estimator.Estimate(jobs.Select(j => j.Job).ToArray(), onJobDone);
+        var prices = RunPricing.Prices(jobs.Select(j => j.Key).ToArray(), estimates, settings.Models.Count);
+        var cost = FrameCost.Of(recording, prices, settings.Models, budget, settings.Qpus);
+        var pricingTime = clock.Elapsed;
+
+        clock.Restart();
+        using var classicalSearch = new ClassicalHitSearch();
+        var classical = SceneRenderer.Render(settings.Scene, classicalSearch, RenderDefaults.Reference(settings.Render));
+        return new FrameEstimate(settings, recording, cost, classical)
+        {
+            DistinctRuns = jobs.Length,
+            WallTimes = (renderTime, clock.Elapsed, pricingTime),
+        };
+    }
+
+    /// <summary>The classical render's wall time for a pass of the frame, or for the whole render, shading included ("total").</summary>
+    public TimeSpan ClassicalTime(string pass) => pass == Cost.Total.Name
+        ? WallTimes.Classical
+        : Classical.Passes.Where(p => p.Name == pass).Aggregate(TimeSpan.Zero, (sum, p) => sum + p.Elapsed);
+}
