@@ -36,6 +36,55 @@ public sealed class EstimateCommandTests : IDisposable
     public void UsageErrors(params string[] options) =>
         Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
 
+    [Theory]
+    [InlineData("--error-budget", "0")]
+    [InlineData("--error-budget", "1")]
+    [InlineData("--error-budget", "-0.01")]
+    [InlineData("--error-budget", "2")]
+    [InlineData("--error-budget", "NaN")]
+    [InlineData("--error-budget", "lots")]
+    [InlineData("--qpus", "0")]
+    [InlineData("--qpus", "-3")]
+    [InlineData("--models", "qubit_gate_ns_e9")]
+    [InlineData("--models", "qubit_gate_us_e4:floquet_code")]
+    [InlineData("--pixel", "1,1")]         // one ray and a frame
+    [InlineData("--iterations", "3")]
+    [InlineData("--seed", "-1")]
+    [InlineData("--passes", "0")]
+    public void FrameUsageErrors(params string[] options) =>
+        Assert.Equal(1, ConsoleCapture.Run(["estimate", "--frame", Scene, "--size", "4", .. options]).Code);
+
+    [Theory]
+    [InlineData("--error-budget", "0.01")]
+    [InlineData("--qpus", "4")]
+    [InlineData("-o", "frame.md")]
+    public void FrameOptionsNeedTheFrame(params string[] options) =>
+        Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
+
+    [Fact]
+    public void FrameWritesItsTableAsMarkdownAndCsvAndKeepsOtherFiles()
+    {
+        var markdown = Path.Combine(_scratch.Path, "frame.md");
+        string[] frame = ["estimate", "--frame", Scene, "--size", "4", "--qpus", "2", "--workers", "1"];
+        Assert.Equal(0, ConsoleCapture.Run([.. frame, "-o", markdown]).Code);
+        var lines = File.ReadAllLines(markdown);
+        Assert.Equal(GeneratedReport.MarkdownMarker("qrt estimate --frame"), lines[0]);
+        var header = lines.Single(l => l.StartsWith("| measure |", StringComparison.Ordinal));
+        Assert.EndsWith("| total |", header);
+        Assert.Contains(lines, l => l.StartsWith("| qubit_gate_ns_e3, surface_code: runtime, 2 QPUs |", StringComparison.Ordinal));
+
+        var csv = Path.Combine(_scratch.Path, "frame.csv");
+        Assert.Equal(0, ConsoleCapture.Run([.. frame, "--format", "csv", "-o", csv]).Code);
+        var rows = File.ReadAllLines(csv).Where(l => !l.StartsWith('#')).ToArray();
+        Assert.StartsWith("measure,", rows[0]);
+        Assert.Contains(rows, r => r.StartsWith("CCZ,", StringComparison.Ordinal));
+
+        var notes = Path.Combine(_scratch.Path, "notes.md");
+        File.WriteAllText(notes, "# my notes\n");
+        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run([.. frame, "-o", notes]).Code);
+        Assert.Equal("# my notes\n", File.ReadAllText(notes));
+    }
+
     [Fact]
     public void SweepWritesItsReportWithThePapersFigure()
     {

@@ -109,7 +109,7 @@ public sealed class EstimateCommand : Command
         _qpus.Between(1, 1_000_000);
         _errorBudget.Validators.Add(r =>
         {
-            if (FrameBudget.Problem(r.GetValueOrDefault<double>()) is { } problem) r.AddError($"--error-budget {problem}");
+            if (r.TryGetValue<double>(out var budget) && FrameBudget.Problem(budget) is { } problem) r.AddError($"--error-budget {problem}");
         });
         _pixel.Validators.Add(r =>
         {
