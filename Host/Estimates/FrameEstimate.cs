@@ -13,17 +13,17 @@ namespace QuantumRayTracing.Estimates;
 /// </summary>
 public sealed record FrameEstimate(FrameSettings Settings, FrameRecording Recording, FrameCost Cost, RenderResult Classical)
 {
-    /// <summary>Distinct (oracle shape, r) priced: Resource Estimator jobs.</summary>
-    public int DistinctRuns { get; init; }
+    /// <summary>Resource Estimator jobs the pricing took: two traced circuits per distinct oracle shape, one per distinct set of counts.</summary>
+    public int EstimatorJobs { get; init; }
 
     /// <summary>Wall time of the recorded render, the classical render and the pricing.</summary>
     public (TimeSpan Render, TimeSpan Classical, TimeSpan Pricing) WallTimes { get; init; }
 
     /// <summary>
-    /// Records the frame, prices its runs on <paramref name="pool"/> (one job per distinct shape and r,
-    /// each on every model at ε / R and at ε), sums them, and renders the same frame classically.
+    /// Records the frame, prices its runs on <paramref name="pool"/> (<see cref="RunPricing"/>), sums
+    /// them, and renders the same frame classically.
     /// </summary>
-    public static FrameEstimate Run(FrameSettings settings, BridgePool pool, IRenderProgress? progress = null, Action<int>? onPricing = null, Action? onJobDone = null)
+    public static FrameEstimate Run(FrameSettings settings, BridgePool pool, IRenderProgress? progress = null, Action? onJobDone = null)
     {
         var clock = Stopwatch.StartNew();
         var recording = FrameRecording.Record(settings.Scene, settings.Render, settings.Search, progress);
@@ -31,11 +31,7 @@ public sealed record FrameEstimate(FrameSettings Settings, FrameRecording Record
 
         clock.Restart();
         var budget = FrameCost.BudgetFor(recording, settings.ErrorBudget);
-        var jobs = RunPricing.Jobs(recording, settings.Construction).Where(j => j.Key.Iterations > 0).ToArray();
-        onPricing?.Invoke(jobs.Length);
-        var estimator = new ResourceEstimator(pool, RunPricing.Models(settings.Models, budget), withCircuits: false);
-        var estimates = estimator.Estimate(jobs.Select(j => j.Job).ToArray(), onJobDone);
-        var prices = RunPricing.Prices(jobs.Select(j => j.Key).ToArray(), estimates, settings.Models.Count);
+        var (prices, jobs) = RunPricing.Price(recording, settings.Construction, settings.Models, budget, pool, onJobDone);
         var cost = FrameCost.Of(recording, prices, settings.Models, budget, settings.Qpus);
         var pricingTime = clock.Elapsed;
 
@@ -44,7 +40,7 @@ public sealed record FrameEstimate(FrameSettings Settings, FrameRecording Record
         var classical = SceneRenderer.Render(settings.Scene, classicalSearch, RenderDefaults.Reference(settings.Render));
         return new FrameEstimate(settings, recording, cost, classical)
         {
-            DistinctRuns = jobs.Length,
+            EstimatorJobs = jobs,
             WallTimes = (renderTime, clock.Elapsed, pricingTime),
         };
     }
