@@ -133,6 +133,7 @@ public sealed class EstimateCommand : Command
                 if (!frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} needs --frame");
         });
         Subcommands.Add(new EstimateSweepCommand());
+        Subcommands.Add(new EstimateFrameSweepCommand());
         SetAction(Execute);
     }
 

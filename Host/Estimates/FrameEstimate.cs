@@ -16,7 +16,10 @@ public sealed record FrameEstimate(FrameSettings Settings, FrameRecording Record
     /// <summary>Resource Estimator jobs the pricing took: two traced circuits per distinct oracle shape, one per distinct set of counts.</summary>
     public int EstimatorJobs { get; init; }
 
-    /// <summary>Wall time of the recorded render, the classical render and the pricing.</summary>
+    /// <summary>Classical renders timed; the fastest counts.</summary>
+    public const int ClassicalRepeats = 3;
+
+    /// <summary>Wall time of the recorded render, the classical render (fastest of <see cref="ClassicalRepeats"/>) and the pricing.</summary>
     public (TimeSpan Render, TimeSpan Classical, TimeSpan Pricing) WallTimes { get; init; }
 
     /// <summary>
@@ -35,13 +38,18 @@ public sealed record FrameEstimate(FrameSettings Settings, FrameRecording Record
         var cost = FrameCost.Of(recording, prices, settings.Models, budget, settings.Qpus);
         var pricingTime = clock.Elapsed;
 
-        clock.Restart();
+        // The classical render, best of three: the first run also pays for compiling the code it runs.
         using var classicalSearch = new ClassicalHitSearch();
-        var classical = SceneRenderer.Render(settings.Scene, classicalSearch, RenderDefaults.Reference(settings.Render));
+        var (classical, classicalTime) = Enumerable.Range(0, ClassicalRepeats).Select(_ =>
+        {
+            clock.Restart();
+            var result = SceneRenderer.Render(settings.Scene, classicalSearch, RenderDefaults.Reference(settings.Render));
+            return (result, clock.Elapsed);
+        }).MinBy(r => r.Elapsed);
         return new FrameEstimate(settings, recording, cost, classical)
         {
             EstimatorJobs = jobs,
-            WallTimes = (renderTime, clock.Elapsed, pricingTime),
+            WallTimes = (renderTime, classicalTime, pricingTime),
         };
     }
 
