@@ -86,6 +86,26 @@ public sealed class EstimateCommandTests : IDisposable
     }
 
     [Fact]
+    public void FrameSweepWritesItsReportAndPlot()
+    {
+        var output = Path.Combine(_scratch.Path, "hardware.md");
+        string[] sweep = ["estimate", "frame-sweep", "--sizes", "4", "--primitives", "8", "--scaling-size", "4", "--detailed-size", "4", "--models", "qubit_gate_ns_e3", "--workers", "1", "-o", output];
+        Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
+        var lines = File.ReadAllLines(output);
+        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine), lines[0]);
+        // Each scene at the one size in the logical table, the model's table and the per-pixel table; N in the
+        // logical, runtime and qubit tables.
+        foreach (var scene in new[] { "Qornell-64", "Depth Complexity 64" })
+            Assert.Equal(3, lines.Count(l => l.StartsWith($"| {scene} | 4x4 |", StringComparison.Ordinal)));
+        Assert.Equal(3, lines.Count(l => l.StartsWith("| 8 | ", StringComparison.Ordinal)));
+        var plot = Path.Combine(_scratch.Path, "hardware-runtime-vs-primitives.png");
+        Assert.Contains(lines, l => l.Contains("(hardware-runtime-vs-primitives.png)", StringComparison.Ordinal));
+        Assert.Equal(QuantumRayTracing.Estimates.FramePlots.Width, Output.PngTestDecoder.Decode(File.ReadAllBytes(plot)).Image.Width);
+        // Regenerating replaces both files it wrote.
+        Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
+    }
+
+    [Fact]
     public void SweepWritesItsReportWithThePapersFigure()
     {
         var output = Path.Combine(_scratch.Path, "estimates.md");
