@@ -49,6 +49,7 @@ public sealed class EstimateCommandTests : IDisposable
     [InlineData("--models", "qubit_gate_us_e4:floquet_code")]
     [InlineData("--pixel", "1,1")]         // one ray and a frame
     [InlineData("--iterations", "3")]
+    [InlineData("--subpixels", "4")]
     [InlineData("--seed", "-1")]
     [InlineData("--passes", "0")]
     public void FrameUsageErrors(params string[] options) =>
@@ -58,6 +59,8 @@ public sealed class EstimateCommandTests : IDisposable
     [InlineData("--error-budget", "0.01")]
     [InlineData("--qpus", "4")]
     [InlineData("-o", "frame.md")]
+    [InlineData("--passes", "2")]
+    [InlineData("--seed", "3")]
     public void FrameOptionsNeedTheFrame(params string[] options) =>
         Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
 

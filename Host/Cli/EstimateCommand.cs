@@ -76,7 +76,7 @@ public sealed class EstimateCommand : Command
 
     private readonly Option<FileInfo?> _output = new("--output", "-o")
     {
-        Description = "With --frame: also write the table here, as Markdown, or CSV with --format csv. It replaces only a file this command wrote.",
+        Description = "With --frame: also write the table here, as Markdown, or CSV with --format csv. It replaces only a file this command wrote. Default: the table is printed only.",
     };
 
     private readonly RenderOptionSet _render = new();
@@ -87,7 +87,7 @@ public sealed class EstimateCommand : Command
 
     private readonly EstimateOptions _options = new();
 
-    public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model.")
+    public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model. With --frame: what every Grover run of a whole frame costs, per pass.")
     {
         Arguments.Add(_scene);
         Options.Add(_pixel);
@@ -127,9 +127,9 @@ public sealed class EstimateCommand : Command
         {
             if (r.GetResult(_pixel) is not null && r.GetValue(_worstCase)) r.AddError("--pixel and --worst-case choose the ray two ways; give one");
             var frame = r.GetValue(_frame);
-            foreach (var option in new Option[] { _pixel, _worstCase, _iterations })
-                if (frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} chooses one ray; --frame prices every run of the frame");
-            foreach (var option in new Option[] { _errorBudget, _qpus, _output })
+            foreach (var option in new Option[] { _pixel, _worstCase, _iterations, _subpixels, _counterBits, _options.NoCircuit })
+                if (frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} applies to one ray's estimates; --frame prices every run of a frame");
+            foreach (var option in new Option[] { _errorBudget, _qpus, _output, _engine.Seed, _qsearch.Growth, _qsearch.Rule }.Concat(_render.All))
                 if (!frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} needs --frame");
         });
         Subcommands.Add(new EstimateSweepCommand());

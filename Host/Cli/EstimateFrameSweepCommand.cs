@@ -59,7 +59,7 @@ public sealed class EstimateFrameSweepCommand : Command
 
     private readonly Option<FileInfo?> _output = new("--output", "-o")
     {
-        Description = "Write the Markdown report here (e.g. docs/hardware.md), the plot beside it as <report>-runtime-vs-primitives.png. It replaces only files this command wrote.",
+        Description = "Write the Markdown report here (e.g. docs/hardware.md), the plot beside it as <report>-runtime-vs-primitives.png. It replaces only files this command wrote. Default: the report is printed only.",
     };
 
     private readonly Option<ulong> _seed = new("--seed")

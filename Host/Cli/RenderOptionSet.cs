@@ -98,10 +98,12 @@ public sealed class RenderOptionSet
         ShadowPasses.Between(1, 64);
     }
 
+    /// <summary>Every option of the set, in help order.</summary>
+    public IReadOnlyList<Option> All => [Passes, ShadowPasses, TieBreak, Neighbours, ShadowNeighbours, Stop, Lattice, AgreedMiss, PlannedMiss, AreaSamples, Vpl];
+
     public void AddTo(Command command)
     {
-        foreach (var option in new Option[] { Passes, ShadowPasses, TieBreak, Neighbours, ShadowNeighbours, Stop, Lattice, AgreedMiss, PlannedMiss, AreaSamples, Vpl })
-            command.Options.Add(option);
+        foreach (var option in All) command.Options.Add(option);
     }
 
     public RenderOptions Get(ParseResult parse, int width, int height, ulong seed) => new(width, height, parse.GetValue(Passes), parse.GetValue(ShadowPasses),
