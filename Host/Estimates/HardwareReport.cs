@@ -35,7 +35,17 @@ public sealed record HardwareReport(
         text.AppendLine("same options and seed), records every Grover run at the engine seam (pass, engine batch, N, r, oracle shape), prices each run's");
         text.AppendLine("gate-level circuit with the Microsoft Resource Estimator, and sums. This report applies it to the paper's scenes.");
         text.AppendLine();
-        text.AppendLine($"Regenerate: `{command}`. Machine: {machine}. The machine was shared with other work while it ran: classical wall times are the fastest of {FrameEstimate.ClassicalRepeats} renders each, and still noisy.");
+        text.AppendLine($"Regenerate: `{command}`. Machine: {machine}. The machine was shared with other work while it ran: a classical wall time is the fastest of at least {FrameEstimate.ClassicalRepeats} renders (more while they took under {FrameEstimate.ClassicalTimingBudget.TotalSeconds} s together), and still noisy.");
+        text.AppendLine();
+        var headline = Detailed.Cost.Total;
+        var options = Detailed.Settings.Render;
+        text.AppendLine($"In short: a {options.Width}x{options.Height} frame of the {Detailed.Settings.Scene.Name} makes {N(headline.QuantumRuns)} Grover runs ({N(headline.Logical.Ccz)} CCZ in all).");
+        for (var m = 0; m < models.Count; m++)
+        {
+            var p = headline.Split[m];
+            text.AppendLine($"On {models[m]} it needs {N(p.PhysicalQubits)} physical qubits at code distance up to {p.MaxCodeDistance} and {Duration(p.SequentialNanoseconds)} on one QPU ({Duration(p.ParallelNanoseconds)} on {qpus}),");
+            text.AppendLine($"{FrameTable.Ratio(p.SequentialNanoseconds, Detailed.ClassicalTime(headline.Name))} the classical render's {Duration(Detailed.ClassicalTime(headline.Name).TotalNanoseconds)} here.");
+        }
         text.AppendLine();
         text.AppendLine("## How a frame is priced");
         text.AppendLine();
