@@ -61,7 +61,9 @@ public sealed record HardwareReport(
         text.AppendLine("  cheaper machine of a frame that may fail R times as often.");
         text.AppendLine($"- Physical qubits: the widest run's, algorithm and T factories (what each processor holds). Runtime, 1 QPU: the runs one after another.");
         text.AppendLine($"  Runtime, {qpus} QPUs: the render's engine batches (a round of a pass) one after another, each batch's runs placed longest first on the");
-        text.AppendLine("  processor free earliest. Code distance: the largest any run needs (a range when runs differ).");
+        text.AppendLine("  processor free earliest. Code distance: the range the estimator chose over the runs; each run is priced at its own. A machine");
+        text.AppendLine("  fixed at the largest stays within the budget and runs a run of distance d up to d_max / d slower (a logical cycle lasts in");
+        text.AppendLine("  proportion to the distance).");
         text.AppendLine("- Classical: the brute-force reference render of the same frame (every primitive tested, no pipeline tricks) on this machine, whole render");
         text.AppendLine("  wall time. The ratio is quantum runtime on one QPU over it. Lookup-table preparation and the host's classical work are not in the quantum runtime.");
         text.AppendLine("- Queries: a run with r ≥ 1 is r + 1 oracle queries in the conservative count, r in the paper's; both are the render's own #Eval.");
