@@ -36,6 +36,78 @@ public sealed class EstimateCommandTests : IDisposable
     public void UsageErrors(params string[] options) =>
         Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
 
+    [Theory]
+    [InlineData("--error-budget", "0")]
+    [InlineData("--error-budget", "1")]
+    [InlineData("--error-budget", "-0.01")]
+    [InlineData("--error-budget", "2")]
+    [InlineData("--error-budget", "NaN")]
+    [InlineData("--error-budget", "lots")]
+    [InlineData("--qpus", "0")]
+    [InlineData("--qpus", "-3")]
+    [InlineData("--models", "qubit_gate_ns_e9")]
+    [InlineData("--models", "qubit_gate_us_e4:floquet_code")]
+    [InlineData("--pixel", "1,1")]         // one ray and a frame
+    [InlineData("--iterations", "3")]
+    [InlineData("--subpixels", "4")]
+    [InlineData("--seed", "-1")]
+    [InlineData("--passes", "0")]
+    public void FrameUsageErrors(params string[] options) =>
+        Assert.Equal(1, ConsoleCapture.Run(["estimate", "--frame", Scene, "--size", "4", .. options]).Code);
+
+    [Theory]
+    [InlineData("--error-budget", "0.01")]
+    [InlineData("--qpus", "4")]
+    [InlineData("-o", "frame.md")]
+    [InlineData("--passes", "2")]
+    [InlineData("--seed", "3")]
+    public void FrameOptionsNeedTheFrame(params string[] options) =>
+        Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
+
+    [Fact]
+    public void FrameWritesItsTableAsMarkdownAndCsvAndKeepsOtherFiles()
+    {
+        var markdown = Path.Combine(_scratch.Path, "frame.md");
+        string[] frame = ["estimate", "--frame", Scene, "--size", "4", "--qpus", "2", "--workers", "1"];
+        Assert.Equal(0, ConsoleCapture.Run([.. frame, "-o", markdown]).Code);
+        var lines = File.ReadAllLines(markdown);
+        Assert.Equal(GeneratedReport.MarkdownMarker("qrt estimate --frame"), lines[0]);
+        var header = lines.Single(l => l.StartsWith("| measure |", StringComparison.Ordinal));
+        Assert.EndsWith("| total |", header);
+        Assert.Contains(lines, l => l.StartsWith("| qubit_gate_ns_e3, surface_code: runtime, 2 QPUs |", StringComparison.Ordinal));
+
+        var csv = Path.Combine(_scratch.Path, "frame.csv");
+        Assert.Equal(0, ConsoleCapture.Run([.. frame, "--format", "csv", "-o", csv]).Code);
+        var rows = File.ReadAllLines(csv).Where(l => !l.StartsWith('#')).ToArray();
+        Assert.StartsWith("measure,", rows[0]);
+        Assert.Contains(rows, r => r.StartsWith("CCZ,", StringComparison.Ordinal));
+
+        var notes = Path.Combine(_scratch.Path, "notes.md");
+        File.WriteAllText(notes, "# my notes\n");
+        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run([.. frame, "-o", notes]).Code);
+        Assert.Equal("# my notes\n", File.ReadAllText(notes));
+    }
+
+    [Fact]
+    public void FrameSweepWritesItsReportAndPlot()
+    {
+        var output = Path.Combine(_scratch.Path, "hardware.md");
+        string[] sweep = ["estimate", "frame-sweep", "--sizes", "4", "--primitives", "8", "--scaling-size", "4", "--detailed-size", "4", "--models", "qubit_gate_ns_e3", "--workers", "1", "-o", output];
+        Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
+        var lines = File.ReadAllLines(output);
+        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine), lines[0]);
+        // Each scene at the one size in the logical table, the model's table and the per-pixel table; N in the
+        // logical, runtime and qubit tables.
+        foreach (var scene in new[] { "Qornell-64", "Depth Complexity 64" })
+            Assert.Equal(3, lines.Count(l => l.StartsWith($"| {scene} | 4x4 |", StringComparison.Ordinal)));
+        Assert.Equal(3, lines.Count(l => l.StartsWith("| 8 | ", StringComparison.Ordinal)));
+        var plot = Path.Combine(_scratch.Path, "hardware-runtime-vs-primitives.png");
+        Assert.Contains(lines, l => l.Contains("(hardware-runtime-vs-primitives.png)", StringComparison.Ordinal));
+        Assert.Equal(QuantumRayTracing.Estimates.FramePlots.Width, ImageReader.Read(plot).Width);
+        // Regenerating replaces both files it wrote.
+        Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
+    }
+
     [Fact]
     public void SweepWritesItsReportWithThePapersFigure()
     {

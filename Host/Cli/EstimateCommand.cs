@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Globalization;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
@@ -56,11 +57,39 @@ public sealed class EstimateCommand : Command
         DefaultValueFactory = _ => 4,
     };
 
+    private readonly Option<bool> _frame = new("--frame")
+    {
+        Description = "Price a whole frame instead of one ray: render it with the analytic engine (the same scene, --size, render options and --seed as `render`), record every Grover run, and sum the runs' estimates per pass on every model, beside the classical render's time.",
+    };
+
+    private readonly Option<double> _errorBudget = new("--error-budget")
+    {
+        Description = "With --frame: the largest probability that the whole frame fails, shared equally by its Grover runs (union bound).",
+        DefaultValueFactory = _ => FrameBudget.DefaultFrame,
+    };
+
+    private readonly Option<int> _qpus = new("--qpus")
+    {
+        Description = "With --frame: quantum processors running each batch of independent runs in parallel (the runtime is also given on one).",
+        DefaultValueFactory = _ => 1,
+    };
+
+    private readonly Option<FileInfo?> _output = new("--output", "-o")
+    {
+        Description = "With --frame: also write the table here, as Markdown, or CSV with --format csv. It replaces only a file this command wrote. Default: the table is printed only.",
+    };
+
+    private readonly RenderOptionSet _render = new();
+
+    private readonly QSearchOptionSet _qsearch = new();
+
+    private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic);
+
     private readonly EstimateOptions _options = new();
 
     private readonly JsonOption _json = new();
 
-    public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model.")
+    public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model. With --frame: what every Grover run of a whole frame costs, per pass.")
     {
         Arguments.Add(_scene);
         Options.Add(_pixel);
@@ -73,6 +102,18 @@ public sealed class EstimateCommand : Command
         _counterBits.Between(1, 10);
         _options.AddTo(this);
         _json.AddTo(this);
+        Options.Add(_frame);
+        Options.Add(_errorBudget);
+        Options.Add(_qpus);
+        Options.Add(_output);
+        Options.Add(_engine.Seed);
+        _render.AddTo(this);
+        _qsearch.AddTo(this);
+        _qpus.Between(1, 1_000_000);
+        _errorBudget.Validators.Add(r =>
+        {
+            if (r.TryGetValue<double>(out var budget) && FrameBudget.Problem(budget) is { } problem) r.AddError($"--error-budget {problem}");
+        });
         _pixel.Validators.Add(r =>
         {
             if (ParsePixel(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--pixel: {error}");
@@ -88,14 +129,21 @@ public sealed class EstimateCommand : Command
         Validators.Add(r =>
         {
             if (r.GetResult(_pixel) is not null && r.GetValue(_worstCase)) r.AddError("--pixel and --worst-case choose the ray two ways; give one");
+            var frame = r.GetValue(_frame);
+            foreach (var option in new Option[] { _pixel, _worstCase, _iterations, _subpixels, _counterBits, _options.NoCircuit })
+                if (frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} applies to one ray's estimates; --frame prices every run of a frame");
+            foreach (var option in new Option[] { _errorBudget, _qpus, _output, _engine.Seed, _qsearch.Growth, _qsearch.Rule }.Concat(_render.All))
+                if (!frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} needs --frame");
         });
         Subcommands.Add(new EstimateSweepCommand());
+        Subcommands.Add(new EstimateFrameSweepCommand());
         SetAction(Execute);
     }
 
     private int Execute(ParseResult parse)
     {
         _json.EnsureWritable(parse, parse.GetValue(_scene) is { } sceneFile ? [sceneFile.FullName] : []);
+        if (parse.GetValue(_frame)) return ExecuteFrame(parse);
         var scene = RenderCommand.LoadScene(parse.GetValue(_scene));
         var geometry = new SceneGeometry(scene);
         var (width, height) = RenderCommand.ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
@@ -121,6 +169,37 @@ public sealed class EstimateCommand : Command
         _json.Write(parse, EstimateFigures.Of(table, estimates));
         return 0;
     }
+
+    private int ExecuteFrame(ParseResult parse)
+    {
+        var format = parse.GetValue(_options.Format);
+        var output = parse.GetValue(_output);
+        var report = new GeneratedReport(output?.FullName, format == ReportFormat.Csv ? $"# generated by `{FrameCommandLine}`" : GeneratedReport.MarkdownMarker(FrameCommandLine));
+        report.EnsureWritable();
+        var scene = RenderCommand.LoadScene(parse.GetValue(_scene));
+        var (width, height) = RenderCommand.ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
+        var settings = new FrameSettings(scene, _render.Get(parse, width, height, parse.GetValue(_engine.Seed)), _qsearch.Get(parse),
+            _options.Construction(parse), _options.QubitModels(parse), parse.GetValue(_errorBudget), parse.GetValue(_qpus));
+
+        FrameEstimate frame;
+        string machine;
+        using (var pool = new BridgePool(parse.GetValue(_options.Workers)))
+        {
+            var progress = new ConsoleProgress("analytic");
+            frame = FrameEstimate.Run(settings, pool, progress);
+            progress.Finish();
+            var versions = pool.Bridges[0].Version();
+            machine = Benchmarks.MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
+        }
+        var table = FrameTable.For(frame, machine);
+        _options.Write(parse, table);
+        report.Write(format == ReportFormat.Csv ? table.ToCsv() : table.ToMarkdown());
+        if (output is not null) AnsiConsole.WriteLine($"wrote {output.FullName}");
+        _json.Write(parse, new { frame.Cost, ClassicalSeconds = frame.WallTimes.Classical.TotalSeconds }, _engine);
+        return 0;
+    }
+
+    private const string FrameCommandLine = "qrt estimate --frame";
 
     /// <summary>The lines that say what was estimated: scene, ray, registers, construction, r.</summary>
     public static IReadOnlyList<string> Context(Scene scene, SceneGeometry geometry, EstimateSubject subject)

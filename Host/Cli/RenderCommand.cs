@@ -39,29 +39,10 @@ public sealed class RenderCommand : Command
         Description = "PNG to write. Default: <scene>-<engine>.png in the current directory. An existing file is replaced only if this program wrote it.",
     };
 
-    private readonly Option<int> _passes = new("--passes", "-p")
-    {
-        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray, at most (the stop rule ends most rays sooner).",
-        DefaultValueFactory = _ => RenderDefaults.Iterations,
-    };
-
-    private readonly Option<int> _shadowPasses = new("--shadow-passes")
-    {
-        Description = "DirectPass rounds: QOccluded searches per shadow ray not yet found occluded.",
-        DefaultValueFactory = _ => DirectPass.DefaultIterations,
-    };
-
     private readonly Option<string?> _size = new("--size")
     {
         Description = "Image size, WIDTHxHEIGHT or one number for a square. Default: the scene's.",
         HelpName = "WxH",
-    };
-
-    private readonly Option<TieBreak> _tieBreak = new("--tie-break")
-    {
-        Description = "Equal quantised depths: strict (the smaller primitive id wins, deterministic) or random (the paper: whichever is found first). The classical reference is always strict.",
-        DefaultValueFactory = _ => TieBreak.Strict,
-        HelpName = "strict|random",
     };
 
     private readonly Option<bool> _reference = new("--reference")
@@ -69,59 +50,13 @@ public sealed class RenderCommand : Command
         Description = "Also write the classical reference (<output>-reference.png) and a difference image (<output>-difference.png: differing pixels red).",
     };
 
-    private readonly Option<bool> _neighbours = new("--neighbours")
-    {
-        Description = "NeighOpt (Algorithm 5): after each round, test every primary and specular ray against the primitives its 4 neighbours hold (classical tests, counted in #C_Int; changed pixels in #Cpix).",
-        DefaultValueFactory = _ => RenderDefaults.Neighbours,
-    };
-
-    private readonly Option<bool> _shadowNeighbours = new("--shadow-neighbours")
-    {
-        Description = "After each shadow round, test every unoccluded shadow ray against the occluders its neighbours' rays to the same light found.",
-        DefaultValueFactory = _ => RenderDefaults.ShadowNeighbours,
-    };
-
-    private readonly Option<StopMode> _stop = new("--stop")
-    {
-        Description = "Termination criterion (sec. 6.2): after sn empty searches a ray is searched again with probability p̄^sn. off; paper (p̄ from eq. 10 at r = M_l / eq. 11, t uniform); exact (our search's exact miss rate, t uniform); scene (exact, for the t measured on a lattice of primary rays).",
-        DefaultValueFactory = _ => RenderDefaults.Stop,
-        HelpName = "off|paper|exact|scene",
-    };
-
-    private readonly Option<int?> _lattice = new("--lattice")
-    {
-        Description = $"Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where all its neighbours agree, full where they disagree or some are missing. Applies to passes with --neighbours / --shadow-neighbours. Default: from the image size, as many levels (up to {RenderDefaults.LatticeLevels}) as keep {RenderDefaults.LatticePointsPerSide} lattice points along the shorter side.",
-    };
-
-    private readonly Option<double> _agreedMiss = new("--agreed-miss")
-    {
-        Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used).",
-        DefaultValueFactory = _ => RenderDefaults.AgreedMiss,
-    };
-
-    private readonly Option<double?> _plannedMiss = new("--planned-miss")
-    {
-        Description = $"Replace Algorithm 1's random schedule in every search (but the cheap confirmations) by the cheapest fixed list of Grover runs that misses at most this share of rays with 1..{RenderOptions.ConfirmationMaxT} hits. Default: Algorithm 1.",
-        DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
-    };
-
-    private readonly Option<int> _areaSamples = new("--area-samples")
-    {
-        Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
-        DefaultValueFactory = _ => RenderDefaults.AreaSamples,
-    };
-
-    private readonly Option<int> _vpl = new("--vpl")
-    {
-        Description = "Virtual point lights per surface point for single-bounce indirect light: cosine-weighted rays traced to their closest hit, each lit by the scene's lights through shadow rays (0: no indirect light; the paper: 4).",
-        DefaultValueFactory = _ => RenderDefaults.Vpl,
-    };
-
     private readonly Option<int> _referenceSamples = new("--reference-samples")
     {
         Description = "Area samples and VPLs per point of the converged classical reference the render is also compared with when it samples light (area lights or --vpl); 0 skips it. It costs about this many / --area-samples (or --vpl) times a classical render.",
         DefaultValueFactory = _ => RenderDefaults.ReferenceSamples,
     };
+
+    private readonly RenderOptionSet _render = new();
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
         EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
@@ -134,38 +69,14 @@ public sealed class RenderCommand : Command
     {
         Arguments.Add(_scene);
         Options.Add(_output);
-        Options.Add(_passes);
-        Options.Add(_shadowPasses);
         Options.Add(_size);
-        Options.Add(_tieBreak);
         Options.Add(_reference);
-        Options.Add(_neighbours);
-        Options.Add(_shadowNeighbours);
-        Options.Add(_stop);
-        Options.Add(_lattice);
-        Options.Add(_agreedMiss);
-        Options.Add(_plannedMiss);
-        Options.Add(_areaSamples);
-        Options.Add(_vpl);
         Options.Add(_referenceSamples);
+        _render.AddTo(this);
         _engine.AddTo(this);
-        _areaSamples.Between(1, MaxSamples);
-        _vpl.Between(0, MaxSamples);
         _referenceSamples.Between(0, MaxSamples);
-        _plannedMiss.Validators.Add(r =>
-        {
-            if (r.GetValueOrDefault<double?>() is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
-        });
-        _lattice.Between(0, 6);
-        _agreedMiss.Validators.Add(r =>
-        {
-            var p = r.GetValueOrDefault<double>();
-            if (!(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
-        });
         _qsearch.AddTo(this);
         _json.AddTo(this);
-        _passes.Between(1, 64);
-        _shadowPasses.Between(1, 64);
         _size.Validators.Add(r =>
         {
             if (ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
@@ -184,10 +95,7 @@ public sealed class RenderCommand : Command
         var withReference = parse.GetValue(_reference);
 
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
-        var options = new RenderOptions(width, height, parse.GetValue(_passes), parse.GetValue(_shadowPasses), parse.GetValue(_tieBreak),
-            parse.GetValue(_neighbours), parse.GetValue(_shadowNeighbours), parse.GetValue(_stop), parse.GetValue(_engine.Seed),
-            parse.GetValue(_lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(_agreedMiss), parse.GetValue(_plannedMiss),
-            parse.GetValue(_areaSamples), parse.GetValue(_vpl), RequiredMisses: null);
+        var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed));
         var sampled = RenderDefaults.SamplesLight(scene, options);
         var referenceSamples = parse.GetValue(_referenceSamples);
         var withConverged = sampled && referenceSamples > 0;

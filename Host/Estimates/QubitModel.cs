@@ -18,8 +18,14 @@ public sealed record QubitModel(string Name, string QecScheme)
     public static readonly IReadOnlyList<QubitModel> Defaults =
         [new("qubit_gate_ns_e3", "surface_code"), new("qubit_maj_ns_e6", "floquet_code")];
 
-    /// <summary>The estimator's default error budget, which every estimate here uses.</summary>
+    /// <summary>The estimator's default error budget, which every estimate of one circuit uses.</summary>
     public const double ErrorBudget = 1e-3;
+
+    /// <summary>
+    /// The error budget of the estimates on this model: the largest probability that one execution of
+    /// the circuit fails, which the estimator splits between logical errors, T states and rotations.
+    /// </summary>
+    public double Budget { get; init; } = ErrorBudget;
 
     /// <summary>"qubit_gate_ns_e3" or "qubit_maj_ns_e6:floquet_code"; null with a message when the text names no valid pair.</summary>
     public static (QubitModel? Model, string? Error) Parse(string text)
@@ -40,7 +46,7 @@ public sealed record QubitModel(string Name, string QecScheme)
     {
         ["qubitParams"] = new JsonObject { ["name"] = Name },
         ["qecScheme"] = new JsonObject { ["name"] = QecScheme },
-        ["errorBudget"] = ErrorBudget,
+        ["errorBudget"] = Budget,
     };
 
     public override string ToString() => $"{Name}, {QecScheme}";

@@ -27,16 +27,10 @@ public sealed class ResourceEstimator(BridgePool pool, IReadOnlyList<QubitModel>
     public IReadOnlyList<CircuitEstimate> Estimate(IReadOnlyList<(EstimatedCircuit Circuit, EstimateSubject Subject)> jobs, Action? onDone = null)
     {
         var results = new CircuitEstimate[jobs.Count];
-        var parameters = new JsonArray(models.Select(m => (JsonNode)m.Parameters()).ToArray());
         pool.ForEach(Enumerable.Range(0, jobs.Count).ToArray(), (k, bridge) =>
         {
             var (circuit, subject) = jobs[k];
-            var expression = circuit.Expression(subject);
-            var estimates = bridge.Estimate(expression, (JsonArray)parameters.DeepClone());
-            if (estimates.Count != models.Count)
-                throw new BridgeException($"the estimator returned {estimates.Count} results for {models.Count} qubit models");
-            var logical = LogicalCounts.Parse(estimates[0]!);
-            var physical = models.Select((m, i) => PhysicalEstimate.Parse(m, estimates[i]!)).ToArray();
+            var (logical, physical) = Measure(bridge, circuit.Expression(subject));
             CircuitCounts Trace(EstimateSubject s) => CircuitCounts.Parse(bridge.Circuit(circuit.Expression(s)));
             var counts = !withCircuits ? null
                 : circuit.RepeatsIterations && subject.Iterations > TracedRepeats
@@ -46,5 +40,33 @@ public sealed class ResourceEstimator(BridgePool pool, IReadOnlyList<QubitModel>
             onDone?.Invoke();
         });
         return results;
+    }
+
+    /// <summary>
+    /// The physical figures of circuits known only by their logical counts, on every model, in order:
+    /// the estimator prices the counts themselves (<c>AccountForLogicalCounts</c>), which gives what it
+    /// gives the traced circuit with those counts.
+    /// </summary>
+    public IReadOnlyList<IReadOnlyList<PhysicalEstimate>> EstimateCounts(IReadOnlyList<LogicalCounts> counts, Action? onDone = null)
+    {
+        var results = new IReadOnlyList<PhysicalEstimate>[counts.Count];
+        pool.ForEach(Enumerable.Range(0, counts.Count).ToArray(), (k, bridge) =>
+        {
+            var (logical, physical) = Measure(bridge, counts[k].AccountingExpression);
+            if (logical with { Ccix = counts[k].Ccix } != counts[k])
+                throw new BridgeException($"the estimator counted {logical} for the counts {counts[k]}");
+            results[k] = physical;
+            onDone?.Invoke();
+        });
+        return results;
+    }
+
+    private (LogicalCounts Logical, PhysicalEstimate[] Physical) Measure(QSharpBridge bridge, string expression)
+    {
+        var parameters = new JsonArray(models.Select(m => (JsonNode)m.Parameters()).ToArray());
+        var estimates = bridge.Estimate(expression, parameters);
+        if (estimates.Count != models.Count)
+            throw new BridgeException($"the estimator returned {estimates.Count} results for {models.Count} qubit models");
+        return (LogicalCounts.Parse(estimates[0]!), models.Select((m, i) => PhysicalEstimate.Parse(m, estimates[i]!)).ToArray());
     }
 }

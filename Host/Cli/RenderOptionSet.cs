@@ -1,0 +1,112 @@
+using System.CommandLine;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Rendering;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// How a frame is rendered beyond its scene, size and seed: passes, tie-breaking, neighbours,
+/// termination, lattice, planned searches, light samples. `render` and `estimate --frame` share them,
+/// so the same words give both the same frame.
+/// </summary>
+public sealed class RenderOptionSet
+{
+    public readonly Option<int> Passes = new("--passes", "-p")
+    {
+        Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray, at most (the stop rule ends most rays sooner).",
+        DefaultValueFactory = _ => RenderDefaults.Iterations,
+    };
+
+    public readonly Option<int> ShadowPasses = new("--shadow-passes")
+    {
+        Description = "DirectPass rounds: QOccluded searches per shadow ray not yet found occluded.",
+        DefaultValueFactory = _ => DirectPass.DefaultIterations,
+    };
+
+    public readonly Option<TieBreak> TieBreak = new("--tie-break")
+    {
+        Description = "Equal quantised depths: strict (the smaller primitive id wins, deterministic) or random (the paper: whichever is found first). The classical reference is always strict.",
+        DefaultValueFactory = _ => Intersection.TieBreak.Strict,
+        HelpName = "strict|random",
+    };
+
+    public readonly Option<bool> Neighbours = new("--neighbours")
+    {
+        Description = "NeighOpt (Algorithm 5): after each round, test every primary and specular ray against the primitives its 4 neighbours hold (classical tests, counted in #C_Int; changed pixels in #Cpix).",
+        DefaultValueFactory = _ => RenderDefaults.Neighbours,
+    };
+
+    public readonly Option<bool> ShadowNeighbours = new("--shadow-neighbours")
+    {
+        Description = "After each shadow round, test every unoccluded shadow ray against the occluders its neighbours' rays to the same light found.",
+        DefaultValueFactory = _ => RenderDefaults.ShadowNeighbours,
+    };
+
+    public readonly Option<StopMode> Stop = new("--stop")
+    {
+        Description = "Termination criterion (sec. 6.2): after sn empty searches a ray is searched again with probability p̄^sn. off; paper (p̄ from eq. 10 at r = M_l / eq. 11, t uniform); exact (our search's exact miss rate, t uniform); scene (exact, for the t measured on a lattice of primary rays).",
+        DefaultValueFactory = _ => RenderDefaults.Stop,
+        HelpName = "off|paper|exact|scene",
+    };
+
+    public readonly Option<int?> Lattice = new("--lattice")
+    {
+        Description = $"Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where all its neighbours agree, full where they disagree or some are missing. Applies to passes with --neighbours / --shadow-neighbours. Default: from the image size, as many levels (up to {RenderDefaults.LatticeLevels}) as keep {RenderDefaults.LatticePointsPerSide} lattice points along the shorter side.",
+    };
+
+    public readonly Option<double> AgreedMiss = new("--agreed-miss")
+    {
+        Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used).",
+        DefaultValueFactory = _ => RenderDefaults.AgreedMiss,
+    };
+
+    public readonly Option<double?> PlannedMiss = new("--planned-miss")
+    {
+        Description = $"Replace Algorithm 1's random schedule in every search (but the cheap confirmations) by the cheapest fixed list of Grover runs that misses at most this share of rays with 1..{RenderOptions.ConfirmationMaxT} hits. Default: Algorithm 1.",
+        DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
+    };
+
+    public readonly Option<int> AreaSamples = new("--area-samples")
+    {
+        Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
+        DefaultValueFactory = _ => RenderDefaults.AreaSamples,
+    };
+
+    public readonly Option<int> Vpl = new("--vpl")
+    {
+        Description = "Virtual point lights per surface point for single-bounce indirect light: cosine-weighted rays traced to their closest hit, each lit by the scene's lights through shadow rays (0: no indirect light; the paper: 4).",
+        DefaultValueFactory = _ => RenderDefaults.Vpl,
+    };
+
+    public RenderOptionSet()
+    {
+        AreaSamples.Between(1, RenderCommand.MaxSamples);
+        Vpl.Between(0, RenderCommand.MaxSamples);
+        PlannedMiss.Validators.Add(r =>
+        {
+            if (r.GetValueOrDefault<double?>() is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
+        });
+        Lattice.Between(0, 6);
+        AgreedMiss.Validators.Add(r =>
+        {
+            var p = r.GetValueOrDefault<double>();
+            if (!(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
+        });
+        Passes.Between(1, 64);
+        ShadowPasses.Between(1, 64);
+    }
+
+    /// <summary>Every option of the set, in help order.</summary>
+    public IReadOnlyList<Option> All => [Passes, ShadowPasses, TieBreak, Neighbours, ShadowNeighbours, Stop, Lattice, AgreedMiss, PlannedMiss, AreaSamples, Vpl];
+
+    public void AddTo(Command command)
+    {
+        foreach (var option in All) command.Options.Add(option);
+    }
+
+    public RenderOptions Get(ParseResult parse, int width, int height, ulong seed) => new(width, height, parse.GetValue(Passes), parse.GetValue(ShadowPasses),
+        parse.GetValue(TieBreak), parse.GetValue(Neighbours), parse.GetValue(ShadowNeighbours), parse.GetValue(Stop), seed,
+        parse.GetValue(Lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(AgreedMiss), parse.GetValue(PlannedMiss),
+        parse.GetValue(AreaSamples), parse.GetValue(Vpl), RequiredMisses: null);
+}
