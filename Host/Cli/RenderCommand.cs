@@ -195,12 +195,15 @@ public sealed class RenderCommand : Command
             : [output];
         ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
 
+        var noise = _engine.GetNoise(parse);
+        EngineOptions.CheckNoise(kind, noise);
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {LightSummary(scene)}, {width}x{height} pixels, {scene.Grid}");
         if (sampled)
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+        if (kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic) AnsiConsole.WriteLine($"noise model: {noise.Description()}");
         if (kind == EngineKind.Gate)
         {
             // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
@@ -212,7 +215,7 @@ public sealed class RenderCommand : Command
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits)))
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits), noise: noise))
         {
             try
             {
@@ -252,14 +255,14 @@ public sealed class RenderCommand : Command
         }
         ImageFiles.Write(images);
 
-        AnsiConsole.Write(MetricsTable(engineName, result, reference.Total));
+        AnsiConsole.Write(MetricsTable(noise.IsNoiseless ? engineName : $"{engineName} under {noise.Description()}", result, reference.Total));
         var sameSamples = sampled ? " with the same samples (search error alone)" : "";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         if (convergedReference is not null)
         {
             var toConverged = ImageError.Between(result.Image, convergedReference.Image);
-            var noise = ImageError.Between(reference.Image, convergedReference.Image);
-            AnsiConsole.WriteLine($"error against the converged classical reference ({referenceSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {noise.Nrmse:P2} (Monte Carlo noise alone)");
+            var sampleNoise = ImageError.Between(reference.Image, convergedReference.Image);
+            AnsiConsole.WriteLine($"error against the converged classical reference ({referenceSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {sampleNoise.Nrmse:P2} (Monte Carlo noise alone)");
         }
         var convergedWall = convergedReference is null ? "" : $", converged reference {convergedTime.TotalSeconds:0.00} s";
         AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s{convergedWall}");

@@ -179,7 +179,11 @@ public sealed class SupersampleCommand : Command
         var clock = Stopwatch.StartNew();
         SupersampleResult result;
         var supersampling = new ConsoleProgress(EngineOptions.Name(kind));
-        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits)))
+        var noise = _engine.GetNoise(parse);
+        if (!noise.IsNoiseless && kind != EngineKind.FullState)
+            throw new UserError("--noise and --qubit-loss: supersampling models noise on the fullstate engine only; use --engine fullstate");
+        if (kind == EngineKind.FullState) Console.WriteLine($"noise model: {noise.Description()}");
+        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), noise))
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         supersampling.Finish();
         var elapsed = clock.Elapsed;
@@ -195,7 +199,7 @@ public sealed class SupersampleCommand : Command
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (result.Confidence is { } confidence)
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {confidence.Average():0.000}, lowest {confidence.Min():0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {elapsed.TotalSeconds:0.00} s on the {EngineOptions.Name(kind)} engine");
+        Console.WriteLine($"wall time: {elapsed.TotalSeconds:0.00} s on the {EngineOptions.Name(kind)} engine{(noise.IsNoiseless ? "" : $" under {noise.Description()}")}");
         foreach (var (_, path) in images) Console.WriteLine($"wrote {path}");
         return 0;
     }
@@ -237,9 +241,9 @@ public sealed class SupersampleCommand : Command
             throw new UserError($"--engine fullstate simulates every pixel and takes about a second per output pixel: at most {MaxFullStatePixels} output pixels (e.g. 16x16), this input has {pixels}; use --engine analytic (the same distributions, seeded) or a smaller input");
     }
 
-    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null) => kind switch
+    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, Noise.NoiseModel? noise = null) => kind switch
     {
-        EngineKind.FullState => new FullStateSupersamplingEngine(new Bridge.BridgePool(workers), maxQubits: maxQubits),
+        EngineKind.FullState => new FullStateSupersamplingEngine(new Bridge.BridgePool(workers), maxQubits: maxQubits, noise: noise),
         _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine)),
     };
 
