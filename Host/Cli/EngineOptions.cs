@@ -135,20 +135,22 @@ public sealed class EngineOptions
         {
             EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise),
             EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null, noise: noise),
-            EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine)),
+            EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise),
             _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
         };
     }
+
+    /// <summary>The noise model as results on <paramref name="kind"/> name it: the analytic engine adds its approximation.</summary>
+    public static string NoiseDescription(EngineKind kind, NoiseModel noise) =>
+        kind == EngineKind.Analytic ? DepolarizingApproximation.Default.Description(noise) : noise.Description();
 
     /// <summary>Refuses, as a usage error naming the option, a noise model the engine cannot run.</summary>
     public static void CheckNoise(EngineKind kind, NoiseModel noise)
     {
         if (noise.QubitLoss > 0 && kind != EngineKind.FullState)
-            throw new UserError(kind == EngineKind.Gate ? $"--qubit-loss: {GateEngine.LossUnsupported}" : $"--qubit-loss: the {Name(kind)} engine does not model qubit loss; use --engine fullstate");
+            throw new UserError(kind == EngineKind.Gate ? $"--qubit-loss: {GateEngine.LossUnsupported}" : $"--qubit-loss: the {Name(kind)} engine does not model qubit loss (its depolarizing approximation covers Pauli noise); use --engine fullstate");
         if (!noise.IsNoiseless && kind is EngineKind.Classical or EngineKind.Randomized)
             throw new UserError($"--noise: the {Name(kind)} engine runs no quantum circuit");
-        if (!noise.IsNoiseless && kind == EngineKind.Analytic)
-            throw new UserError("--noise: the analytic engine does not model noise yet; use --engine fullstate or gate");
     }
 
     /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>

@@ -203,7 +203,7 @@ public sealed class RenderCommand : Command
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
-        if (kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic) AnsiConsole.WriteLine($"noise model: {noise.Description()}");
+        if (kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic) AnsiConsole.WriteLine($"noise model: {EngineOptions.NoiseDescription(kind, noise)}");
         if (kind == EngineKind.Gate)
         {
             // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
@@ -255,7 +255,7 @@ public sealed class RenderCommand : Command
         }
         ImageFiles.Write(images);
 
-        AnsiConsole.Write(MetricsTable(noise.IsNoiseless ? engineName : $"{engineName} under {noise.Description()}", result, reference.Total));
+        AnsiConsole.Write(MetricsTable(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(kind, noise)}", result, reference.Total));
         var sameSamples = sampled ? " with the same samples (search error alone)" : "";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         if (convergedReference is not null)

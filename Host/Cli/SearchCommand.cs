@@ -75,8 +75,8 @@ public sealed class SearchCommand : Command
         AnsiConsole.WriteLine($"N = {count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", schedule.Bounds)}}}");
         AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index + {registers.FlagQubits} flag qubits (+ {registers.AuxiliaryQubits} auxiliary inside multi-controlled gates)");
 
-        var noise = _engine.GetNoise(parse);
-        AnsiConsole.WriteLine($"noise model: {noise.Description()}");
+        var noise = EngineOptions.NoiseDescription(parse.GetValue(_engine.Engine), _engine.GetNoise(parse));
+        AnsiConsole.WriteLine($"noise model: {noise}");
 
         var clock = Stopwatch.StartNew();
         int rounds;
@@ -102,7 +102,7 @@ public sealed class SearchCommand : Command
         table.AddRow("#C_Int per search", Per(total.ClassicalTests, searches.Length));
         table.AddRow("Grover runs per search", Per(total.GroverRuns, searches.Length));
         table.AddRow("engine calls (rounds)", rounds.ToString());
-        table.AddRow("noise model", noise.Description());
+        table.AddRow("noise model", noise);
         table.AddRow("wall time", $"{clock.Elapsed.TotalSeconds:0.000} s");
         AnsiConsole.Write(table);
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (DESIGN.md §5).[/]");
