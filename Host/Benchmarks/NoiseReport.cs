@@ -187,8 +187,9 @@ public static class NoiseReport
             text.AppendLine();
             var a = sweep.Crossing(q => q.Measurement.Result.Total.PerRayConservative - classicalPerRay);
             var b = sweep.Crossing(q => sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is { } r ? q.Measurement.Error.Nrmse - r : double.NaN);
-            text.AppendLine($"- (a) quantum loses to classical brute force in Int/Ray at p ≈ {(a is { } x ? Rate(x) : $"never up to {Rate(sweep.Quantum.Max(q => q.PerGate))} (Int/Ray stays below {F(classicalPerRay, "0")})")}{(a is null ? "" : " per gate")};");
-            text.AppendLine($"- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE at p ≈ {(b is { } y ? Rate(y) + " per gate" : "no rate measured")}.");
+            var highest = Rate(sweep.Quantum.Max(q => q.PerGate));
+            text.AppendLine("- (a) quantum loses to classical brute force in Int/Ray " + (a is { } x ? $"at p ≈ {Rate(x)} per gate;" : $"at no rate up to p = {highest} (its Int/Ray stays below {F(classicalPerRay, "0")});"));
+            text.AppendLine("- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y ? $"at p ≈ {Rate(y)} per gate." : $"at no rate up to p = {highest}."));
             text.AppendLine();
             text.AppendLine(plot($"render-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: NRMSE against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "NRMSE (%)", machine,
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Error.Nrmse * 100)).ToArray()),
