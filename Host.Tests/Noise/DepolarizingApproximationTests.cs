@@ -68,4 +68,22 @@ public class DepolarizingApproximationTests
         // More than half marked: the complement is the oracle set, as in the Q# operation.
         Assert.Equal(NoiseLocations.LookupIteration(new MarkedSet(8, [3])), NoiseLocations.LookupIteration(new MarkedSet(8, [0, 1, 2, 4, 5, 6, 7])));
     }
+
+    [Fact]
+    public void QSearchTakesAReadoutPastNAsAMissWithoutATest()
+    {
+        // N = 12 has 4 index qubits: a noisy machine can read 12..15, which names no primitive.
+        var search = new QSearch(new MarkedSet(12, [5]), new QSearchSchedule(12), new SeededRandom(2));
+        search.NextRequest();
+        search.Observe(14);
+        Assert.Null(search.Found);
+        Assert.Equal(0, search.Cost.ClassicalTests);
+        search.NextRequest();
+        search.Observe(5);
+        Assert.Equal(5, search.Found);
+        Assert.Equal(1, search.Cost.ClassicalTests);
+        var other = new QSearch(new MarkedSet(12, [5]), new QSearchSchedule(12), new SeededRandom(2));
+        other.NextRequest();
+        Assert.Throws<ArgumentOutOfRangeException>(() => other.Observe(16));
+    }
 }
