@@ -1,5 +1,6 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Scenes.Generation;
@@ -13,6 +14,66 @@ namespace QuantumRayTracing.Benchmarks;
 /// </summary>
 public static class NoiseBenchmark
 {
+    /// <summary>
+    /// Runs the parts <paramref name="settings"/> asks for, in order: the model check and the device experiment on
+    /// one bridge pool, then the analytic renders and the fullstate confirmations.
+    /// </summary>
+    public static NoiseBenchResult Run(NoiseBenchSettings settings, Action<string> progress)
+    {
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        void Say(string message) => progress($"{message} ({clock.Elapsed.TotalSeconds:0} s so far)");
+        string machine;
+        IReadOnlyList<NoiseCheckRow> check = [];
+        IReadOnlyList<DeviceRun> device = [];
+        CircuitCounts? deviceSearch = null, deviceOracle = null;
+        using (var pool = new BridgePool(settings.Workers))
+        {
+            var versions = pool.Bridges[0].Version();
+            machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>()) + " (shared with other work while measured)";
+            if (settings.Parts.Contains("model"))
+            {
+                Say($"model check: {CheckRequests().Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
+                check = NoiseCheck.Measure(pool, CheckRequests(), CheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots);
+            }
+            if (settings.Parts.Contains("device"))
+            {
+                Say($"device experiment: {NoiseBenchSettings.DeviceRates.Length} error rates x {settings.DeviceShots} shots");
+                device = DeviceExperiment(pool, NoiseBenchSettings.DeviceRates, settings.DeviceShots);
+                var argument = GateEngine.OracleArgument(DeviceExperimentScene.Ray());
+                deviceSearch = Trace(pool, $"QuantumRayTracing.Intersection.MeasureGateGroverSearch({argument}, 1)");
+                deviceOracle = Trace(pool, $"QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters({argument})");
+            }
+        }
+        var sweeps = new List<NoisyRenderBenchmark.Sweep>();
+        var confirmations = new List<(string, double, RenderMeasurement, RenderMeasurement)>();
+        if (settings.Parts.Contains("render"))
+        {
+            foreach (var (name, scene) in settings.Scenes)
+                sweeps.Add(NoisyRenderBenchmark.Run(name, scene, settings.Size, NoisyRenderBenchmark.Rates, 16, Say));
+            if (settings.ConfirmSize > 0 && settings.Scenes.Count > 0)
+            {
+                var (name, scene) = settings.Scenes[0];
+                var options = NoisyRenderBenchmark.Defaults(settings.ConfirmSize);
+                var classical = RenderMeasurement.Reference(scene, options);
+                foreach (var p in settings.ConfirmRates)
+                {
+                    Say($"{name} at {settings.ConfirmSize}x{settings.ConfirmSize}: analytic and fullstate, p = {p}");
+                    var analytic = RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, classical, NoiseModel.Depolarizing(p));
+                    confirmations.Add((name, p, analytic, NoisyRenderBenchmark.FullState(scene, settings.ConfirmSize, p, settings.Workers, classical)));
+                }
+            }
+        }
+        return new NoiseBenchResult(machine, clock.Elapsed, check, device, deviceSearch, deviceOracle, sweeps, confirmations);
+    }
+
+    /// <summary>Gate counts and depth of a Q# call's circuit, as the bridge summarises it.</summary>
+    private static CircuitCounts Trace(BridgePool pool, string expression)
+    {
+        CircuitCounts? counts = null;
+        pool.ForEach([expression], (e, bridge) => counts = CircuitCounts.Parse(bridge.Circuit(e)));
+        return counts!;
+    }
+
     /// <summary>Per-gate error rates of the model check.</summary>
     public static readonly double[] CheckRates = [1e-3, 3e-3, 1e-2];
 

@@ -19,6 +19,23 @@ public static class NoiseReport
     /// <summary>Adds a plot (file name, image, caption) and returns the Markdown that shows it.</summary>
     public delegate string PlotSink(string name, RgbImage image, string caption);
 
+    /// <summary>docs/noise.md: the parts measured, each with its tables and plots, the command and the machine.</summary>
+    public static string Markdown(NoiseBenchResult result, NoiseBenchSettings settings, string command, PlotSink plot)
+    {
+        var text = new StringBuilder();
+        text.AppendLine("# Hardware noise");
+        text.AppendLine();
+        text.AppendLine("What Pauli noise does to the quantum searches: the analytic noise model proven against the noisy simulator, the ray tracing");
+        text.AppendLine("paper's device experiment (sec. 8, fig. 15) reproduced on the simulator, and what noise costs a render.");
+        text.AppendLine();
+        text.AppendLine($"Regenerate: `{command}` ({F(result.Elapsed.TotalMinutes, "0.0")} min). Machine: {result.Machine}.");
+        text.AppendLine();
+        if (settings.Parts.Contains("model")) Model(text, result.Check, settings.Shots, plot, result.Machine);
+        if (settings.Parts.Contains("device")) Device(text, result.Device, settings.DeviceShots, result.DeviceSearch!, result.DeviceOracle!, plot, result.Machine);
+        if (settings.Parts.Contains("render")) Render(text, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize, plot, result.Machine);
+        return text.ToString();
+    }
+
     private static string F(double value, string format) => value.ToString(format, CultureInfo.InvariantCulture);
 
     private static string Rate(double p) => p == 0 ? "0" : p.ToString("0.#e0", CultureInfo.InvariantCulture);
@@ -218,6 +235,5 @@ public static class NoiseReport
         }
     }
 
-    private static double NoiseLocationsOf(CircuitCounts counts) =>
-        counts.Native.Gates.Sum(g => g.Value * (g.Key.TakeWhile(c => c == 'C').Count() + (g.Key.Contains("SWAP") ? 2 : 1))) + counts.Native.Measurements;
+    private static double NoiseLocationsOf(CircuitCounts counts) => NoiseLocations.FromCounts(counts.Native.Gates, counts.Native.Measurements);
 }

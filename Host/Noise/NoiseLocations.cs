@@ -78,15 +78,21 @@ public static class NoiseLocations
     public static long FromCircuit(JsonObject native)
     {
         ArgumentNullException.ThrowIfNull(native);
+        var gates = native["gates"]!.AsObject().ToDictionary(g => g.Key, g => g.Value!.GetValue<long>());
+        return FromCounts(gates, native["measurements"]!.GetValue<long>());
+    }
+
+    /// <summary>The same count from gate kinds and their counts, as a circuit summary lists them, and the measurements.</summary>
+    public static long FromCounts(IReadOnlyDictionary<string, long> gates, long measurements)
+    {
         var total = 0L;
-        foreach (var (kind, count) in native["gates"]!.AsObject())
+        foreach (var (kind, count) in gates)
         {
+            // "CCX" is X with two controls; no intrinsic gate's own name starts with C.
             var controls = kind.TakeWhile(c => c == 'C').Count();
-            var name = kind[controls..].TrimEnd('†');
-            // A kind that is only C's (a bare "C") cannot occur; "CZ" is Z with one control.
-            var targets = name == "SWAP" ? 2 : 1;
-            total += count!.GetValue<long>() * (controls + targets);
+            var targets = kind[controls..].TrimEnd('†') == "SWAP" ? 2 : 1;
+            total += count * (controls + targets);
         }
-        return total + native["measurements"]!.GetValue<long>();
+        return total + measurements;
     }
 }
