@@ -83,8 +83,11 @@ public static class NoiseReport
             text.AppendLine("Where the approximation misses by more than sampling error (|gap| > z·σ), it is the approximation's own error, and the");
             text.AppendLine("fitted s of that shape below is the model to use: " + string.Join("; ", beyond.Select(r =>
                 $"{r.Oracle} N = {r.Count}, t = {r.Marked}, r = {r.Iterations}, p = {Rate(r.Noise.PerGate)}: {F(r.Observed - r.Predicted(model), "+0.000;-0.000")} ({F((r.Observed - r.Predicted(model)) / r.StandardError(model), "+0.0;-0.0")}σ)")) + ".");
-            text.AppendLine("The global depolarizing picture is coarsest for the gate-level oracle at N = 8, whose many ancillas sit in basis states most");
-            text.AppendLine("of the time, so fewer of their errors reach the index register than s = 2/3 assumes.");
+            if (beyond.Any(r => r.Oracle == "gate"))
+            {
+                text.AppendLine("On the gate-level oracle most qubits are ancillas that sit in basis states most of the time; how many of their errors reach");
+                text.AppendLine("the index register depends on the circuit, which one s per circuit shape captures and one global s does not.");
+            }
         }
         text.AppendLine();
         text.AppendLine("**Fitted s per circuit shape** (least squares in units of σ over the shape's rows; F per iteration = (1 − p)^(s · L_iteration)):");
