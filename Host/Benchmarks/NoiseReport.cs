@@ -186,7 +186,7 @@ public static class NoiseReport
         text.AppendLine("render of the same options (RMS of 8-bit channel differences over the reference's range); #Dpix pixels whose 8-bit colour differs.");
         text.AppendLine("QSearch verifies every candidate, so noise never makes a false hit: it lowers the success probability of each Grover run,");
         text.AppendLine("which costs queries, and it makes the termination rule and the lattice's cheap confirmations (which assume the ideal miss");
-        text.AppendLine("rates) stop searches that would have hit, which costs pixels.");
+        text.AppendLine("rates) stop searches that would have hit, which costs pixels. Wall time: the fastest of three identical renders (same seed).");
         text.AppendLine();
         foreach (var sweep in sweeps)
         {
