@@ -56,7 +56,7 @@ public static class NoiseReport
         text.AppendLine("P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n, with Φ = (1 − p)^(s · L). L counts the run's noise locations (one per");
         text.AppendLine("qubit per operation: a CCX is 3, a measurement 1): for the lookup oracle in closed form (`NoiseLocations`, checked against");
         text.AppendLine("the circuits the QDK extracts), for the gate-level oracle from the extracted circuit of one iteration. Per iteration that");
-        text.AppendLine("is F = (1 − p)^(s · L_iteration), the F^r of the issue's formula, with the preparation and measurement as one more factor.");
+        text.AppendLine("is F = (1 − p)^(s · L_iteration), the F^r of the usual depolarizing form, with the preparation and measurement as one more factor.");
         text.AppendLine($"s is the share of errors that harm the run: {F(model.HarmfulShare, "0.###")} by default, since a Z error on a qubit in a basis state");
         text.AppendLine("(the flag, every ancilla) changes nothing. Where that misses, s is fitted per circuit shape below.");
         text.AppendLine();
