@@ -8,6 +8,7 @@
 // Requests carry an "id" that the reply echoes, and a "method":
 //   {"id":1,"method":"version"}                               -> {"id":1,"ok":true,"result":{"qsharp":"1.32.5-dev","node":"v20..."}}
 //   {"id":2,"method":"run","expr":"Ns.Op(1, [2])","shots":1}  -> {"id":2,"ok":true,"result":["<Q# value of shot 1>", ...]}
+//     optional "noise":[px,py,pz] and "qubitLoss":L run the same simulator with Pauli noise and loss (runWithNoise)
 //   {"id":3,"method":"estimate","expr":"Ns.Op(8)","params":[{}]} -> {"id":3,"ok":true,"result":[<estimator result per params item>]}
 //   {"id":4,"method":"circuit","expr":"Ns.Op(8)","maxOperations":1000000}
 //                                                             -> {"id":4,"ok":true,"result":<circuit summary, see circuit-summary.mjs>}
@@ -112,6 +113,19 @@ function requireString(request, field) {
   return request[field];
 }
 
+/** The run's noise ({pauli, qubitLoss}), or null when the request asks for none (the ideal path). */
+function requestNoise(request) {
+  if (request.noise === undefined && request.qubitLoss === undefined) return null;
+  const pauli = request.noise ?? [0, 0, 0];
+  const loss = request.qubitLoss ?? 0;
+  const probability = (p) => typeof p === "number" && Number.isFinite(p) && p >= 0 && p <= 1;
+  if (!Array.isArray(pauli) || pauli.length !== 3 || !pauli.every(probability) || pauli[0] + pauli[1] + pauli[2] > 1) {
+    throw new RequestError(`request field "noise" must be [px, py, pz], probabilities summing to at most 1`);
+  }
+  if (!probability(loss) || loss >= 1) throw new RequestError(`request field "qubitLoss" must be a probability below 1`);
+  return { pauli, qubitLoss: loss };
+}
+
 async function answer(compiler, program, versions, request) {
   switch (request.method) {
     case "version":
@@ -120,9 +134,11 @@ async function answer(compiler, program, versions, request) {
       const expr = requireString(request, "expr");
       const shots = request.shots ?? 1;
       if (!Number.isInteger(shots) || shots < 1) throw new RequestError(`request field "shots" must be a positive integer`);
+      const noise = requestNoise(request);
       const events = new QscEventTarget(true);
       try {
-        await compiler.run(program, expr, shots, events);
+        if (noise) await compiler.runWithNoise(program, expr, shots, noise.pauli, noise.qubitLoss, events);
+        else await compiler.run(program, expr, shots, events);
       } catch {
         // The failure is also recorded as a shot result, with its location; reported below.
       }

@@ -58,7 +58,7 @@ public sealed class EstimateCommandTests : IDisposable
     [Theory]
     [InlineData("--error-budget", "0.01")]
     [InlineData("--qpus", "4")]
-    [InlineData("-o", "frame.md")]
+    [InlineData("-o", "frame.csv")]
     [InlineData("--passes", "2")]
     [InlineData("--seed", "3")]
     public void FrameOptionsNeedTheFrame(params string[] options) =>
@@ -67,7 +67,7 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void FrameWritesItsTableAsMarkdownAndCsvAndKeepsOtherFiles()
     {
-        var markdown = Path.Combine(_scratch.Path, "frame.md");
+        var markdown = Path.ChangeExtension(Path.Combine(_scratch.Path, "frame"), "md");
         string[] frame = ["estimate", "--frame", Scene, "--size", "4", "--qpus", "2", "--workers", "1"];
         Assert.Equal(0, ConsoleCapture.Run([.. frame, "-o", markdown]).Code);
         var lines = File.ReadAllLines(markdown);
@@ -82,7 +82,7 @@ public sealed class EstimateCommandTests : IDisposable
         Assert.StartsWith("measure,", rows[0]);
         Assert.Contains(rows, r => r.StartsWith("CCZ,", StringComparison.Ordinal));
 
-        var notes = Path.Combine(_scratch.Path, "notes.md");
+        var notes = Path.ChangeExtension(Path.Combine(_scratch.Path, "notes"), "md");
         File.WriteAllText(notes, "# my notes\n");
         Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run([.. frame, "-o", notes]).Code);
         Assert.Equal("# my notes\n", File.ReadAllText(notes));

@@ -14,7 +14,7 @@ public sealed class RunJsonFileTests : IDisposable
     private sealed record Figures(long Rays, double Share, TimeSpan Elapsed, int[] Ids, string? Missing = null);
 
     private static readonly RunRecord Run = new("render", new Dictionary<string, object?> { ["size"] = "16", ["reference"] = false, ["max-qubits"] = null },
-        7, "analytic", NoiseReport.None, new Figures(835, 0.25, TimeSpan.FromMilliseconds(1500), [3, 1]));
+        7, "analytic", RunNoise.None, new Figures(835, 0.25, TimeSpan.FromMilliseconds(1500), [3, 1]));
 
     [Fact]
     public void DocumentHoldsTheRunTheVersionsAndTheNoiseModel()
@@ -45,7 +45,7 @@ public sealed class RunJsonFileTests : IDisposable
     [Fact]
     public void NoiseModelWithRatesIsRecorded()
     {
-        var noisy = Run with { Noise = new NoiseReport("pauli", new Dictionary<string, double> { ["px"] = 0.001, ["py"] = 0, ["pz"] = 0.002 }) };
+        var noisy = Run with { Noise = new RunNoise("pauli", new Dictionary<string, double> { ["px"] = 0.001, ["py"] = 0, ["pz"] = 0.002 }) };
         var noise = JsonNode.Parse(RunJsonFile.Compose(noisy, new ToolVersions("1", null, "v20.0.0", null)))!["noise"]!;
         Assert.Equal("pauli", (string?)noise["model"]);
         Assert.Equal(0.002, (double)noise["rates"]!["pz"]!);

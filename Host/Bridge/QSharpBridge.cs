@@ -3,6 +3,7 @@ using System.Diagnostics;
 using System.Text;
 using System.Text.Json;
 using System.Text.Json.Nodes;
+using QuantumRayTracing.Noise;
 
 namespace QuantumRayTracing.Bridge;
 
@@ -33,10 +34,19 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     /// <summary>The qsharp-lang version the bridge reported when it started.</summary>
     public string? QSharpVersion { get; private set; }
 
-    /// <summary>Runs a Q# expression for <paramref name="shots"/> shots; one Q# value (as the QDK prints it) per shot.</summary>
-    public IReadOnlyList<string> Run(string expression, int shots = 1, TimeSpan? timeout = null)
+    /// <summary>
+    /// Runs a Q# expression for <paramref name="shots"/> shots; one Q# value (as the QDK prints it) per shot.
+    /// A <paramref name="noise"/> model other than the ideal one runs it on the noisy simulator.
+    /// </summary>
+    public IReadOnlyList<string> Run(string expression, int shots = 1, TimeSpan? timeout = null, NoiseModel? noise = null)
     {
-        var result = Send(new JsonObject { ["method"] = "run", ["expr"] = expression, ["shots"] = shots }, timeout);
+        var request = new JsonObject { ["method"] = "run", ["expr"] = expression, ["shots"] = shots };
+        if (noise is { IsNoiseless: false })
+        {
+            request["noise"] = new JsonArray(noise.Px, noise.Py, noise.Pz);
+            request["qubitLoss"] = noise.QubitLoss;
+        }
+        var result = Send(request, timeout);
         return result.AsArray().Select(v => v!.GetValue<string>()).ToArray();
     }
 

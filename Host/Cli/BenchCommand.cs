@@ -25,6 +25,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchCapacityCommand());
         Subcommands.Add(new BenchSoakCommand());
         Subcommands.Add(new BenchAccuracyCommand());
+        Subcommands.Add(new BenchNoiseCommand());
     }
 
     private sealed class GroverBenchCommand : Command

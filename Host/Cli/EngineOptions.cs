@@ -1,6 +1,7 @@
 using System.CommandLine;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
@@ -44,6 +45,18 @@ public sealed class EngineOptions
         HelpName = "qubits",
     };
 
+    public readonly Option<string?> Noise = new("--noise")
+    {
+        Description = "Pauli noise after every gate, on each qubit it touches (the QDK's noisy simulator; the analytic engine's depolarizing model): P for P/3 each of X, Y and Z, or px,py,pz. Default 0: the ideal machine.",
+        HelpName = "P|px,py,pz",
+    };
+
+    public readonly Option<double> QubitLoss = new("--qubit-loss")
+    {
+        Description = "Probability that an operation loses a qubit it touches, in [0, 1); a lost qubit reads Zero. Fullstate engines only. Default 0.",
+        HelpName = "L",
+    };
+
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
         _accepted = accepted;
@@ -70,12 +83,38 @@ public sealed class EngineOptions
         });
         Workers.AtLeast(1);
         MaxQubits.Between(1, 100_000);
+        Noise.Validators.Add(result =>
+        {
+            if (result.TryGetValue<string?>(out var text) && text is not null && NoiseModel.ParsePauli(text, out var problem) is null)
+                result.AddError($"--noise: {problem}");
+        });
+        QubitLoss.Validators.Add(result =>
+        {
+            if (result.TryGetValue<double>(out var loss) && NoiseModel.LossProblem(loss) is { } problem)
+                result.AddError($"--qubit-loss: {problem}");
+        });
+    }
+
+    /// <summary>The noise model a parse result asks for (validated at parse time).</summary>
+    public NoiseModel GetNoise(ParseResult parse)
+    {
+        var loss = parse.GetValue(QubitLoss);
+        if (parse.GetValue(Noise) is not { } text) return loss == 0 ? NoiseModel.None : new NoiseModel(0, 0, 0, loss);
+        var (px, py, pz) = NoiseModel.ParsePauli(text, out var problem) ?? throw new UserError($"--noise: {problem}");
+        return new NoiseModel(px, py, pz, loss);
     }
 
     public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();
 
     /// <summary>The noise model the engine runs under, as reports name it: the one place results take it from.</summary>
-    public NoiseReport Noise(ParseResult parse) => NoiseReport.None;
+    public RunNoise NoiseRecord(ParseResult parse)
+    {
+        var noise = GetNoise(parse);
+        if (noise.IsNoiseless) return RunNoise.None;
+        var kind = parse.GetValue(Engine);
+        var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
+        return new RunNoise(kind == EngineKind.Analytic ? "pauli, depolarizing approximation" : "pauli", rates, NoiseDescription(kind, noise));
+    }
 
     public void AddTo(Command command)
     {
@@ -83,31 +122,58 @@ public sealed class EngineOptions
         command.Options.Add(Seed);
         command.Options.Add(Workers);
         if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate)) command.Options.Add(MaxQubits);
+        if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic))
+        {
+            command.Options.Add(Noise);
+            command.Options.Add(QubitLoss);
+        }
     }
 
     /// <summary>The Grover engine a parse result asks for; its randomness is the seed's engine stream.</summary>
     public IGroverEngine Create(ParseResult parse) =>
-        Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits));
+        Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits), noise: GetNoise(parse));
 
     /// <summary>
     /// A Grover engine; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines start
     /// bridges of their own, or use <paramref name="pool"/> without stopping it when they are disposed.
     /// </summary>
-    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null, BridgePool? pool = null) => kind switch
+    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null)
     {
-        EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null),
-        EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null),
-        EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine)),
-        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
-    };
+        noise ??= NoiseModel.None;
+        CheckNoise(kind, noise);
+        return kind switch
+        {
+            EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise),
+            EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null, noise: noise),
+            EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise),
+            _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
+        };
+    }
+
+    /// <summary>The noise model as results on <paramref name="kind"/> name it: the analytic engine adds its approximation.</summary>
+    public static string NoiseDescription(EngineKind kind, NoiseModel noise) =>
+        kind == EngineKind.Analytic ? DepolarizingApproximation.Default.Description(noise) : noise.Description();
+
+    /// <summary>Refuses, as a usage error naming the option, a noise model the engine cannot run.</summary>
+    public static void CheckNoise(EngineKind kind, NoiseModel noise)
+    {
+        if (noise.QubitLoss > 0 && kind != EngineKind.FullState)
+            throw new UserError(kind == EngineKind.Gate ? $"--qubit-loss: {GateEngine.LossUnsupported}" : $"--qubit-loss: the {Name(kind)} engine does not model qubit loss (its depolarizing approximation covers Pauli noise); use --engine fullstate");
+        if (!noise.IsNoiseless && kind is EngineKind.Classical or EngineKind.Randomized)
+            throw new UserError($"--noise: the {Name(kind)} engine runs no quantum circuit");
+    }
 
     /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>
-    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null) => kind switch
+    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null)
     {
-        EngineKind.FullState or EngineKind.Analytic or EngineKind.Gate =>
-            new QuantumHitSearch(Create(kind, root, workers, maxQubits, pool), root.Fork(RandomStreams.Search), options, gateLevel: kind == EngineKind.Gate),
-        EngineKind.Classical => new ClassicalHitSearch(),
-        EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
-        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),
-    };
+        CheckNoise(kind, noise ?? NoiseModel.None);
+        return kind switch
+        {
+            EngineKind.FullState or EngineKind.Analytic or EngineKind.Gate =>
+                new QuantumHitSearch(Create(kind, root, workers, maxQubits, pool, noise), root.Fork(RandomStreams.Search), options, gateLevel: kind == EngineKind.Gate),
+            EngineKind.Classical => new ClassicalHitSearch(),
+            EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
+            _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),
+        };
+    }
 }

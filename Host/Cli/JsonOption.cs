@@ -35,7 +35,7 @@ public sealed class JsonOption
         var record = new RunRecord(parse.CommandResult.Command.Name, Values(parse),
             engine is null ? null : parse.GetValue(engine.Seed),
             engine is null ? null : EngineOptions.Name(parse.GetValue(engine.Engine)),
-            engine?.Noise(parse) ?? NoiseReport.None, figures);
+            engine?.NoiseRecord(parse) ?? RunNoise.None, figures);
         RunJsonFile.Write(path, record);
     }
 

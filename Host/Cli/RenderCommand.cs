@@ -106,12 +106,15 @@ public sealed class RenderCommand : Command
         ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
         _json.EnsureWritable(parse, sceneFile is null ? outputs : [.. outputs, sceneFile.FullName]);
 
+        var noise = _engine.GetNoise(parse);
+        EngineOptions.CheckNoise(kind, noise);
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {LightSummary(scene)}, {width}x{height} pixels, {scene.Grid}");
         if (sampled)
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+        if (kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic) AnsiConsole.WriteLine($"noise model: {EngineOptions.NoiseDescription(kind, noise)}");
         OracleRegisters? gateRegisters = null;
         if (kind == EngineKind.Gate)
         {
@@ -125,7 +128,7 @@ public sealed class RenderCommand : Command
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits)))
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits), noise: noise))
         {
             try
             {
@@ -170,7 +173,7 @@ public sealed class RenderCommand : Command
             convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),
             convergedReference is null ? null : ImageError.Between(reference.Image, convergedReference.Image),
             renderTime, referenceTime, convergedReference is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
-        Print(engineName, figures, sampled);
+        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(kind, noise)}", figures, sampled);
         _json.Write(parse, figures, _engine);
         return 0;
     }

@@ -80,6 +80,9 @@ public sealed class SearchCommand : Command
         AnsiConsole.WriteLine($"N = {count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", schedule.Bounds)}}}");
         AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index + {registers.FlagQubits} flag qubits (+ {registers.AuxiliaryQubits} auxiliary inside multi-controlled gates)");
 
+        var noise = EngineOptions.NoiseDescription(parse.GetValue(_engine.Engine), _engine.GetNoise(parse));
+        AnsiConsole.WriteLine($"noise model: {noise}");
+
         var clock = Stopwatch.StartNew();
         int rounds;
         using (var engine = _engine.Create(parse))
@@ -104,6 +107,7 @@ public sealed class SearchCommand : Command
         table.AddRow("#C_Int per search", Per(figures.ClassicalTestsPerSearch));
         table.AddRow("Grover runs per search", Per(figures.GroverRunsPerSearch));
         table.AddRow("engine calls (rounds)", N(figures.Rounds));
+        table.AddRow("noise model", noise);
         table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
         AnsiConsole.Write(table);
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");

@@ -1,5 +1,6 @@
 using System.Text.Json;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Engines;
@@ -11,30 +12,37 @@ namespace QuantumRayTracing.Engines;
 /// </summary>
 internal static class BridgeBatches
 {
-    /// <summary>One measured index per request, in order, each checked to lie below its request's N.</summary>
+    /// <summary>
+    /// One measured index per request, in order, each checked to lie below its request's N; under noise, below
+    /// 2^ceil(log2 N) (a flipped top bit can read an index past N, as a device would).
+    /// </summary>
     /// <remarks><paramref name="operation"/> names the Q# operation in error messages; <paramref name="expression"/>
-    /// builds the Q# call of one chunk, which must return one index per request.</remarks>
+    /// builds the Q# call of one chunk, which must return one index per request. <paramref name="noise"/> runs
+    /// the calls on the noisy simulator unless it is the ideal model.</remarks>
     public static int[] Measure(
         BridgePool pool,
         IReadOnlyList<GroverRequest> requests,
         ChunkLimits limits,
         string operation,
-        Func<IReadOnlyList<GroverRequest>, string> expression)
+        Func<IReadOnlyList<GroverRequest>, string> expression,
+        NoiseModel? noise = null)
     {
+        var noisy = noise is { IsNoiseless: false };
         var measured = new int[requests.Count];
         if (requests.Count == 0) return measured;
         pool.ForEach(Chunks(requests, pool.Workers, limits), (chunk, bridge) =>
         {
             var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => requests[k]).ToArray();
-            var shots = bridge.Run(expression(slice));
+            var shots = bridge.Run(expression(slice), noise: noise);
             var indices = JsonSerializer.Deserialize<int[]>(shots[0])
                 ?? throw new BridgeException($"{operation} returned no value");
             if (indices.Length != slice.Length)
                 throw new BridgeException($"{operation} returned {indices.Length} indices for {slice.Length} requests");
             for (var k = 0; k < slice.Length; k++)
             {
-                if (indices[k] < 0 || indices[k] >= slice[k].Marked.Count)
-                    throw new BridgeException($"{operation} measured index {indices[k]} outside 0..{slice[k].Marked.Count - 1}");
+                var readable = noisy ? 1 << SearchRegisters.For(slice[k].Marked.Count).IndexQubits : slice[k].Marked.Count;
+                if (indices[k] < 0 || indices[k] >= readable)
+                    throw new BridgeException($"{operation} measured index {indices[k]} outside 0..{readable - 1}");
                 measured[chunk.Start + k] = indices[k];
             }
         });

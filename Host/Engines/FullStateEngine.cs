@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Text;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Engines;
@@ -11,8 +12,9 @@ namespace QuantumRayTracing.Engines;
 /// on all workers at once (<see cref="BridgeBatches"/>). Registers are sized per request (see
 /// <see cref="SearchRegisters"/>). Measurement outcomes come from the simulator and cannot be seeded.
 /// A batch holding a search wider than <see cref="MaxQubits"/> is refused before any of it is sent.
+/// Under a <see cref="NoiseModel"/> other than the ideal one the calls run on the noisy simulator.
 /// </summary>
-public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null, bool ownsPool = true) : IGroverEngine
+public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null, bool ownsPool = true, NoiseModel? noise = null) : IGroverEngine
 {
     /// <summary>Large enough to amortise the ~60 ms compile of every QDK call, small enough to spread over workers.</summary>
     public const int DefaultMaxRequestsPerCall = 500;
@@ -20,6 +22,9 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
     public const string BatchOperation = "QuantumRayTracing.Search.MeasureGroverBatch";
 
     public string Name => "fullstate";
+
+    /// <summary>The noise every call runs under.</summary>
+    public NoiseModel Noise { get; } = noise ?? NoiseModel.None;
 
     /// <summary>Qubits a search may use: by default the widest dense state this machine holds (<see cref="SimulatorCapacity"/>).</summary>
     public int MaxQubits { get; } = maxQubits ?? SimulatorCapacity.DefaultMaxQubits(pool.Workers);
@@ -33,7 +38,7 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
             var registers = SearchRegisters.For(widest);
             SimulatorCapacity.Check($"a search over N = {widest} indices", registers.PeakQubits, registers.IndexQubits, MaxQubits);
         }
-        return BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression);
+        return BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression, Noise);
     }
 
     /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>.</summary>

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Engines;
@@ -12,10 +13,22 @@ namespace QuantumRayTracing.Engines;
 /// validation on single rays or small images and for resource estimates. Every request must carry
 /// its <see cref="GroverRequest.Oracle"/>; the marked set is then what the circuit computes, not an
 /// input. Batches are cut and spread over the workers as in <see cref="FullStateEngine"/>, with each
-/// call also held to a simulation budget (<see cref="MaxCostPerCall"/>).
+/// call also held to a simulation budget (<see cref="MaxCostPerCall"/>). Under a <see cref="NoiseModel"/>
+/// the calls run on the noisy simulator; qubit loss is refused (see <see cref="Noise"/>).
 /// </summary>
-public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall, int maxQubits = GateEngine.DefaultMaxQubits, bool ownsPool = true) : IGroverEngine
+public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEngine.DefaultMaxRequestsPerCall, int maxQubits = GateEngine.DefaultMaxQubits, bool ownsPool = true, NoiseModel? noise = null) : IGroverEngine
 {
+    /// <summary>
+    /// The noise every call runs under. Pauli noise only: the oracle uncomputes with mid-circuit
+    /// measurements (the library's <c>Adjoint AND</c> and unlookup) whose results a lost qubit leaves undefined.
+    /// </summary>
+    public NoiseModel Noise { get; } = noise is { QubitLoss: > 0 }
+        ? throw new ArgumentException(LossUnsupported, nameof(noise))
+        : noise ?? NoiseModel.None;
+
+    /// <summary>Why the gate engine refuses qubit loss, as the command line reports it.</summary>
+    public const string LossUnsupported = "the gate engine cannot simulate qubit loss: its oracle uncomputes with mid-circuit measurements, which a lost qubit leaves without a result";
+
     /// <summary>
     /// Default of <see cref="MaxQubits"/>. The QDK's simulator is sparse: it stores only the nonzero
     /// amplitudes (at most N here, as every work register is a function of the index), so width alone
@@ -65,7 +78,7 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         // The whole batch is checked before any of it is sent, so a refused render allocates nothing.
         if (widest is { } wide && wide.Registers.PeakQubits > maxQubits)
             throw new QubitLimitException(wide.Input, wide.Registers, maxQubits);
-        return BridgeBatches.Measure(pool, requests, new ChunkLimits(maxRequestsPerCall, Cost, MaxCostPerCall), BatchOperation, BatchExpression);
+        return BridgeBatches.Measure(pool, requests, new ChunkLimits(maxRequestsPerCall, Cost, MaxCostPerCall), BatchOperation, BatchExpression, Noise);
     }
 
     /// <summary>The Q# call for a batch: <c>MeasureGateGroverBatch([(input, r), …])</c>.</summary>

@@ -10,5 +10,5 @@ public sealed record RunRecord(
     IReadOnlyDictionary<string, object?> Options,
     ulong? Seed,
     string? Engine,
-    NoiseReport Noise,
+    RunNoise Noise,
     object Figures);

@@ -58,15 +58,21 @@ public sealed class QSearch
         return new GroverRequest(Marked, _pendingIterations, _oracle);
     }
 
+    /// <summary>
+    /// Takes the measured index of the pending run. A noisy machine can read an index in N..2^n − 1 (n
+    /// index qubits): it names no primitive, so it is a miss that needs no classical test.
+    /// </summary>
     public void Observe(int measured)
     {
         if (_pendingIterations < 0) throw new InvalidOperationException("no Grover run is pending");
-        if (measured < 0 || measured >= Marked.Count)
-            throw new ArgumentOutOfRangeException(nameof(measured), measured, $"measured index outside 0..{Marked.Count - 1}");
-        Cost += SearchCost.OfGroverRun(_pendingIterations) + SearchCost.OfClassicalTest;
+        var readable = 1 << SearchRegisters.For(Marked.Count).IndexQubits;
+        if (measured < 0 || measured >= readable)
+            throw new ArgumentOutOfRangeException(nameof(measured), measured, $"measured index outside 0..{readable - 1}");
+        var inRange = measured < Marked.Count;
+        Cost += SearchCost.OfGroverRun(_pendingIterations) + (inRange ? SearchCost.OfClassicalTest : default);
         _pendingIterations = -1;
         LastMeasured = measured;
-        if (Marked.Contains(measured))
+        if (inRange && Marked.Contains(measured))
         {
             Found = measured;
             IsDone = true;

@@ -3,6 +3,7 @@ using System.Text;
 using System.Text.Json;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
 
 namespace QuantumRayTracing.Supersampling;
 
@@ -10,10 +11,14 @@ namespace QuantumRayTracing.Supersampling;
 /// Runs the supersampling circuits as Q# on the QDK full-state simulator: a batch is cut into chunks of
 /// bounded simulation work, each chunk is one call of <c>CountCoinHeadsBatch</c> or <c>MeasureQssBatch</c>
 /// on its own bridge, and the chunks run on all workers at once. Outcomes cannot be seeded. A batch
-/// holding a circuit wider than <see cref="MaxQubits"/> is refused before any of it is sent.
+/// holding a circuit wider than <see cref="MaxQubits"/> is refused before any of it is sent. Under a
+/// <see cref="NoiseModel"/> other than the ideal one the calls run on the noisy simulator.
 /// </summary>
-public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true, int? maxQubits = null) : ISupersamplingEngine
+public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true, int? maxQubits = null, NoiseModel? noise = null) : ISupersamplingEngine
 {
+    /// <summary>The noise every call runs under.</summary>
+    public NoiseModel Noise { get; } = noise ?? NoiseModel.None;
+
     public const string CoinOperation = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
     public const string QssOperation = "QuantumRayTracing.Supersampling.MeasureQssBatch";
 
@@ -80,7 +85,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         pool.ForEach(Chunks(requests, cost, pool.Workers), (chunk, bridge) =>
         {
             var slice = requests.Skip(chunk.Start).Take(chunk.Length).ToArray();
-            accept(slice, chunk.Start, bridge.Run(expression(slice))[0]);
+            accept(slice, chunk.Start, bridge.Run(expression(slice), noise: Noise)[0]);
         });
     }
 

@@ -1,6 +1,5 @@
 namespace QuantumRayTracing.Search {
     import Std.Math.BitSizeI;
-    import Std.Measurement.MeasureInteger;
 
     /// # Summary
     /// Prepares the uniform superposition over `count` indices, applies `iterations` Grover
@@ -15,7 +14,7 @@ namespace QuantumRayTracing.Search {
     /// Number of Grover iterations r ≥ 0; r = 0 samples the uniform superposition.
     ///
     /// # Output
-    /// The measured index, always below `count`.
+    /// The measured index, below `count` on an ideal machine (noise can flip it past; a lost qubit reads Zero).
     ///
     /// # Remarks
     /// Allocates ceil(log2 count) index qubits and one flag qubit; the standard library's
@@ -45,7 +44,7 @@ namespace QuantumRayTracing.Search {
                 ApplyGroverIteration(count, oracleSet, index, flag);
             }
         }
-        MeasureInteger(index)
+        MeasureIntegerReadingLossAsZero(index)
     }
 
     /// # Summary

@@ -1,7 +1,8 @@
 namespace QuantumRayTracing.Supersampling {
     import Std.Arrays.Most;
     import Std.Arrays.Tail;
-    import Std.Measurement.MeasureInteger;
+    import QuantumRayTracing.Search.MeasureBitReadingLossAsZero;
+    import QuantumRayTracing.Search.MeasureIntegerReadingLossAsZero;
 
     /// # Summary
     /// Flips a coin `flips` times, each time preparing it afresh and amplifying it `iterations`
@@ -34,8 +35,8 @@ namespace QuantumRayTracing.Supersampling {
             for _ in 1..iterations {
                 ApplyCoinGroverOperator(prepare, markHead, register);
             }
-            let coin = M(Tail(register)) == One;
-            let index = MeasureInteger(Most(register));
+            let coin = MeasureBitReadingLossAsZero(Tail(register));
+            let index = MeasureIntegerReadingLossAsZero(Most(register));
             if coin and (not shifted or index == 0) {
                 set heads += 1;
             }

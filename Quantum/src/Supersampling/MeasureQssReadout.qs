@@ -1,7 +1,7 @@
 namespace QuantumRayTracing.Supersampling {
     import Std.Canon.ApplyQFT;
     import Std.Canon.SwapReverseRegister;
-    import Std.Measurement.MeasureInteger;
+    import QuantumRayTracing.Search.MeasureIntegerReadingLossAsZero;
 
     /// # Summary
     /// Quantum supersampling (paper 003 sec. 3.3, thesis 004 sec. 1.5.1): the counter register in
@@ -37,7 +37,7 @@ namespace QuantumRayTracing.Supersampling {
         // ApplyQFT leaves the qubits in reversed order; the inverse of the whole transform reverses first.
         SwapReverseRegister(counter);
         Adjoint ApplyQFT(counter);
-        let readout = MeasureInteger(counter);
+        let readout = MeasureIntegerReadingLossAsZero(counter);
         ResetAll(register);
         readout
     }

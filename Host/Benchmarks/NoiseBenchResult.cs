@@ -1,0 +1,15 @@
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Noise;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>Everything `bench noise` measured; the parts not asked for are empty.</summary>
+public sealed record NoiseBenchResult(
+    string Machine,
+    TimeSpan Elapsed,
+    IReadOnlyList<NoiseCheckRow> Check,
+    IReadOnlyList<NoiseBenchmark.DeviceRun> Device,
+    CircuitCounts? DeviceSearch,
+    CircuitCounts? DeviceOracle,
+    IReadOnlyList<NoisyRenderBenchmark.Sweep> Sweeps,
+    IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> Confirmations);

@@ -1,0 +1,50 @@
+using QuantumRayTracing.Scenes;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>What `bench noise` measures.</summary>
+/// <param name="Parts">Any of "model" (the approximation against the simulator), "device" (fig. 15), "render" (rendering under noise).</param>
+/// <param name="Shots">Runs per case of the model check.</param>
+/// <param name="DeviceShots">Measurements per error rate of the device experiment.</param>
+/// <param name="Scenes">The scenes rendered under noise, by name.</param>
+/// <param name="Size">Pixels per side of the analytic renders.</param>
+/// <param name="ConfirmSize">Pixels per side of the fullstate confirmation renders; 0 skips them.</param>
+/// <param name="ConfirmRates">Per-gate error rates of the confirmation renders.</param>
+/// <param name="Workers">Node bridge processes.</param>
+public sealed record NoiseBenchSettings(
+    IReadOnlySet<string> Parts,
+    int Shots,
+    int DeviceShots,
+    IReadOnlyList<(string Name, Scene Scene)> Scenes,
+    int Size,
+    int ConfirmSize,
+    IReadOnlyList<double> ConfirmRates,
+    int Workers)
+{
+    public static readonly string[] AllParts = ["model", "device", "render"];
+
+    /// <summary>The scenes the render part uses, from the scene directory.</summary>
+    public static readonly string[] RenderScenes = ["qornell-64", "depth-complexity-64"];
+
+    /// <summary>Per-gate error rates of the device experiment.</summary>
+    public static readonly double[] DeviceRates = [0, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1];
+
+    /// <summary>Names of the plots the parts draw (each written as &lt;report&gt;-&lt;name&gt;.png).</summary>
+    public IEnumerable<string> PlotNames()
+    {
+        if (Parts.Contains("model")) yield return "model-check";
+        if (Parts.Contains("device"))
+        {
+            yield return "device-histograms";
+            yield return "device-distance";
+        }
+        if (Parts.Contains("render"))
+        {
+            foreach (var (name, _) in Scenes)
+            {
+                yield return $"render-{name}";
+                yield return $"int-per-ray-{name}";
+            }
+        }
+    }
+}

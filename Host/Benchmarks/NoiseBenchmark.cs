@@ -1,0 +1,168 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Noise;
+using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>
+/// The measurements behind docs/noise.md: the depolarizing approximation against the noisy simulator, and
+/// the paper's device experiment (fig. 15) on the noisy simulator.
+/// </summary>
+public static class NoiseBenchmark
+{
+    /// <summary>
+    /// Runs the parts <paramref name="settings"/> asks for, in order: the model check and the device experiment on
+    /// one bridge pool, then the analytic renders and the fullstate confirmations.
+    /// </summary>
+    public static NoiseBenchResult Run(NoiseBenchSettings settings, Action<string> progress)
+    {
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        void Say(string message) => progress($"{message} ({clock.Elapsed.TotalSeconds:0} s so far)");
+        string machine;
+        IReadOnlyList<NoiseCheckRow> check = [];
+        IReadOnlyList<DeviceRun> device = [];
+        CircuitCounts? deviceSearch = null, deviceOracle = null;
+        using (var pool = new BridgePool(settings.Workers))
+        {
+            var versions = pool.Bridges[0].Version();
+            machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>()) + " (shared with other work while measured)";
+            if (settings.Parts.Contains("model"))
+            {
+                Say($"model check: {CheckRequests().Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
+                check = NoiseCheck.Measure(pool, CheckRequests(), CheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots);
+            }
+            if (settings.Parts.Contains("device"))
+            {
+                Say($"device experiment: {NoiseBenchSettings.DeviceRates.Length} error rates x {settings.DeviceShots} shots");
+                device = DeviceExperiment(pool, NoiseBenchSettings.DeviceRates, settings.DeviceShots);
+                var argument = GateEngine.OracleArgument(DeviceExperimentScene.Ray());
+                deviceSearch = Trace(pool, $"QuantumRayTracing.Intersection.MeasureGateGroverSearch({argument}, 1)");
+                deviceOracle = Trace(pool, $"QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters({argument})");
+            }
+        }
+        var sweeps = new List<NoisyRenderBenchmark.Sweep>();
+        var confirmations = new List<(string, double, RenderMeasurement, RenderMeasurement)>();
+        if (settings.Parts.Contains("render"))
+        {
+            foreach (var (name, scene) in settings.Scenes)
+                sweeps.Add(NoisyRenderBenchmark.Run(name, scene, settings.Size, NoisyRenderBenchmark.Rates, 16, Say));
+            if (settings.ConfirmSize > 0 && settings.Scenes.Count > 0)
+            {
+                var (name, scene) = settings.Scenes[0];
+                var options = NoisyRenderBenchmark.Defaults(settings.ConfirmSize);
+                var classical = RenderMeasurement.Reference(scene, options);
+                foreach (var p in settings.ConfirmRates)
+                {
+                    Say($"{name} at {settings.ConfirmSize}x{settings.ConfirmSize}: analytic and fullstate, p = {p}");
+                    var analytic = RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, classical, NoiseModel.Depolarizing(p));
+                    confirmations.Add((name, p, analytic, NoisyRenderBenchmark.FullState(scene, settings.ConfirmSize, p, settings.Workers, classical)));
+                }
+            }
+        }
+        return new NoiseBenchResult(machine, clock.Elapsed, check, device, deviceSearch, deviceOracle, sweeps, confirmations);
+    }
+
+    /// <summary>Gate counts and depth of a Q# call's circuit, as the bridge summarises it.</summary>
+    private static CircuitCounts Trace(BridgePool pool, string expression)
+    {
+        CircuitCounts? counts = null;
+        pool.ForEach([expression], (e, bridge) => counts = CircuitCounts.Parse(bridge.Circuit(e)));
+        return counts!;
+    }
+
+    /// <summary>Per-gate error rates of the model check.</summary>
+    public static readonly double[] CheckRates = [1e-3, 3e-3, 1e-2];
+
+    /// <summary>
+    /// The model check's runs: the lookup oracle at N = 16 and 64 with t = 1 to 3 and r near and below
+    /// the optimum, and the gate-level oracle on the device experiment's ray (N = 4, r = 1) and on an
+    /// 8-primitive ray (r = 1 and 2).
+    /// </summary>
+    public static IReadOnlyList<GroverRequest> CheckRequests()
+    {
+        var device = DeviceExperimentScene.Ray();
+        var eight = EightPrimitiveRay();
+        return
+        [
+            new(new MarkedSet(16, [3]), 3),
+            new(new MarkedSet(16, [3, 9]), 2),
+            new(new MarkedSet(64, [17]), 2),
+            new(new MarkedSet(64, [17]), 6),
+            new(new MarkedSet(64, [5, 17, 40]), 3),
+            new(device.Table.Marked(device.Window), 1, device),
+            new(eight.Table.Marked(eight.Window), 1, eight),
+            new(eight.Table.Marked(eight.Window), 2, eight),
+        ];
+    }
+
+    /// <summary>The first camera ray of an 8x8 image of the 8-primitive Qornell box whose full-range search marks exactly one primitive.</summary>
+    public static OracleInput EightPrimitiveRay()
+    {
+        var scene = Scenes.SceneLoader.Parse(QornellBox.Build(8).ToJson(), "qornell-8.json");
+        var geometry = new SceneGeometry(scene);
+        foreach (var ray in Rays.CameraRays.For(scene.Camera, 8, 8))
+        {
+            var table = RayTable.Build(geometry, ray);
+            if (table.Marked(table.FullRange).MarkedCount == 1) return new OracleInput(table, table.FullRange);
+        }
+        throw new InvalidOperationException("no camera ray of qornell-8 meets exactly one primitive");
+    }
+
+    /// <summary>One noise level of the device experiment: the measured histogram over the index register.</summary>
+    public sealed record DeviceRun(double PerGate, int[] Histogram)
+    {
+        public int Shots => Histogram.Sum();
+
+        /// <summary>Total variation distance from the uniform distribution: half the summed |share − 1/K|.</summary>
+        public double DistanceFromUniform => TotalVariationFromUniform(Histogram);
+    }
+
+    public static double TotalVariationFromUniform(IReadOnlyList<int> histogram)
+    {
+        var shots = (double)histogram.Sum();
+        return 0.5 * histogram.Sum(h => Math.Abs(h / shots - 1.0 / histogram.Count));
+    }
+
+    /// <summary>
+    /// The paper's fig. 15 on the noisy simulator: the device experiment's ray, one gate-level Grover iteration
+    /// (the optimum at N = 4, t = 1), <paramref name="shots"/> measurements per per-gate error rate.
+    /// </summary>
+    public static IReadOnlyList<DeviceRun> DeviceExperiment(BridgePool pool, IReadOnlyList<double> rates, int shots)
+    {
+        var ray = DeviceExperimentScene.Ray();
+        var request = new GroverRequest(ray.Table.Marked(ray.Window), 1, ray);
+        var states = 1 << SearchRegisters.For(request.Marked.Count).IndexQubits;
+        var runs = new List<DeviceRun>();
+        foreach (var p in rates)
+        {
+            using var engine = new GateEngine(pool, ownsPool: false, noise: NoiseModel.Depolarizing(p));
+            var histogram = new int[states];
+            foreach (var index in engine.Measure(Enumerable.Repeat(request, shots).ToArray())) histogram[index]++;
+            runs.Add(new DeviceRun(p, histogram));
+        }
+        return runs;
+    }
+
+    /// <summary>
+    /// The per-gate error at which the device experiment's distance from uniform falls to <paramref name="target"/>:
+    /// log-linear interpolation between the measured rates around the crossing; null when it never crosses.
+    /// </summary>
+    public static double? RateAtDistance(IReadOnlyList<DeviceRun> runs, double target)
+    {
+        var sorted = runs.Where(r => r.PerGate > 0).OrderBy(r => r.PerGate).ToArray();
+        for (var k = 1; k < sorted.Length; k++)
+        {
+            var (a, b) = (sorted[k - 1], sorted[k]);
+            if (a.DistanceFromUniform > target && b.DistanceFromUniform <= target)
+            {
+                var f = (a.DistanceFromUniform - target) / (a.DistanceFromUniform - b.DistanceFromUniform);
+                return Math.Exp(Math.Log(a.PerGate) + f * (Math.Log(b.PerGate) - Math.Log(a.PerGate)));
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,95 @@
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>
+/// Rendering under noise: the default pipeline on the analytic engine at per-gate error rates, beside the
+/// classical brute force (Int/Ray) and the randomized classical renderer at equal Int/Ray (NRMSE).
+/// </summary>
+public static class NoisyRenderBenchmark
+{
+    /// <summary>Per-gate error rates of the sweep, 0 the ideal machine.</summary>
+    public static readonly double[] Rates = [0, 1e-6, 1e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1];
+
+    public sealed record Point(double PerGate, RenderMeasurement Measurement);
+
+    /// <summary>One scene's sweep: the quantum points, the classical reference, and the randomized renderer at 1 … k passes.</summary>
+    public sealed record Sweep(string Scene, RenderMeasurement Classical, IReadOnlyList<Point> Quantum, IReadOnlyList<(int Passes, RenderMeasurement Measurement)> Randomized)
+    {
+        /// <summary>
+        /// The randomized renderer's NRMSE at the Int/Ray <paramref name="perRay"/> (conservative): linear between the
+        /// pass counts around it; null outside the range its pass counts reach.
+        /// </summary>
+        public double? RandomizedNrmseAt(double perRay)
+        {
+            var points = Randomized.Select(r => (X: r.Measurement.Result.Total.PerRayConservative, Y: r.Measurement.Error.Nrmse)).OrderBy(p => p.X).ToArray();
+            for (var k = 1; k < points.Length; k++)
+                if (perRay >= points[k - 1].X && perRay <= points[k].X)
+                    return points[k].X == points[k - 1].X ? points[k].Y : points[k - 1].Y + (perRay - points[k - 1].X) / (points[k].X - points[k - 1].X) * (points[k].Y - points[k - 1].Y);
+            return null;
+        }
+
+        /// <summary>The first rate at which <paramref name="margin"/> reaches 0 (quantum has lost), log-linearly interpolated from the rate before; null if never.</summary>
+        public double? Crossing(Func<Point, double> margin)
+        {
+            // margin < 0: quantum still ahead; ≥ 0: it has lost.
+            var sorted = Quantum.Where(p => p.PerGate > 0).OrderBy(p => p.PerGate).ToArray();
+            for (var k = 0; k < sorted.Length; k++)
+            {
+                var m = margin(sorted[k]);
+                if (double.IsNaN(m) || m < 0) continue;
+                if (k == 0) return sorted[0].PerGate;
+                var before = margin(sorted[k - 1]);
+                if (double.IsNaN(before)) return sorted[k].PerGate;
+                var f = -before / (m - before);
+                return Math.Exp(Math.Log(sorted[k - 1].PerGate) + f * (Math.Log(sorted[k].PerGate) - Math.Log(sorted[k - 1].PerGate)));
+            }
+            return null;
+        }
+    }
+
+    public static Sweep Run(string name, Scene scene, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null)
+    {
+        var options = Defaults(size);
+        var classical = RenderMeasurement.Reference(scene, options);
+        // One untimed render first, so the first timed one does not pay for loading and compiling the code.
+        RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, null);
+        var quantum = new List<Point>();
+        foreach (var p in rates)
+        {
+            progress?.Invoke($"{name}: analytic, p = {p}");
+            // Same seed, same render: of three, the fastest is the cost least disturbed by other work on the machine.
+            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, classical, NoiseModel.Depolarizing(p))).ToArray();
+            quantum.Add(new Point(p, runs.MinBy(r => r.WallTime)!));
+        }
+        // The termination rule stops the randomized renderer's rays after a miss or two, so its Int/Ray would
+        // level off below the quantum one: it runs the same pipeline without it, pass counts rising until its
+        // Int/Ray passes every quantum point's.
+        var randomized = new List<(int, RenderMeasurement)>();
+        var highest = quantum.Max(q => q.Measurement.Result.Total.PerRayConservative);
+        for (var passes = 1; passes <= maxRandomizedPasses; passes++)
+        {
+            progress?.Invoke($"{name}: randomized, {passes} passes");
+            var m = RenderMeasurement.Run(scene, EngineKind.Randomized, RandomizedOptions(size, passes), new QSearchOptions(), 1, 1, classical);
+            randomized.Add((passes, m));
+            if (m.Result.Total.PerRayConservative > highest) break;
+        }
+        return new Sweep(name, classical, quantum, randomized);
+    }
+
+    /// <summary>The randomized renderer's pipeline: the default without the termination rule, <paramref name="passes"/> passes of each kind.</summary>
+    public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes };
+
+    /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
+    public static RenderOptions Defaults(int size) => new(size, size,
+        Neighbours: RenderDefaults.Neighbours, ShadowNeighbours: RenderDefaults.ShadowNeighbours, Stop: RenderDefaults.Stop,
+        LatticeLevels: RenderDefaults.LatticeLevels, AgreedMiss: RenderDefaults.AgreedMiss, PlannedMiss: RenderDefaults.PlannedMiss);
+
+    /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size.</summary>
+    public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical) =>
+        RenderMeasurement.Run(scene, EngineKind.FullState, Defaults(size), new QSearchOptions(), 1, workers, classical, NoiseModel.Depolarizing(perGate));
+}

@@ -1,0 +1,128 @@
+using System.CommandLine;
+using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Scenes;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// `bench noise`: the depolarizing approximation against the noisy simulator, the paper's device experiment
+/// (fig. 15) under Pauli noise, and rendering under noise; writes docs/noise.md and its plots.
+/// </summary>
+public sealed class BenchNoiseCommand : Command
+{
+    private const string CommandText = "qrt bench noise";
+
+    private readonly Option<int> _shots = new("--shots")
+    {
+        Description = "Runs per case of the model check.",
+        DefaultValueFactory = _ => 2000,
+    };
+
+    private readonly Option<int> _deviceShots = new("--device-shots")
+    {
+        Description = "Measurements per error rate of the device experiment (the paper's fig. 15 took 1024).",
+        DefaultValueFactory = _ => 1024,
+    };
+
+    private readonly Option<int> _size = new("--size")
+    {
+        Description = "Pixels per side of the noisy renders on the analytic engine.",
+        DefaultValueFactory = _ => 128,
+    };
+
+    private readonly Option<int> _confirmSize = new("--confirm-size")
+    {
+        Description = "Pixels per side of the renders on the noisy fullstate engine that confirm the analytic model (0 skips them).",
+        DefaultValueFactory = _ => 32,
+    };
+
+    private readonly Option<double[]> _confirmRates = new("--confirm-rates")
+    {
+        Description = "Per-gate error rates of the fullstate confirmation renders (space-separated).",
+        DefaultValueFactory = _ => [1e-4, 1e-3, 1e-2],
+        AllowMultipleArgumentsPerToken = true,
+    };
+
+    private readonly Option<DirectoryInfo> _scenes = new("--scenes")
+    {
+        Description = "Directory holding qornell-64.json and depth-complexity-64.json.",
+        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
+    };
+
+    private readonly Option<string[]> _parts = new("--parts")
+    {
+        Description = "Which parts to run and report: model (the approximation against the simulator), device (fig. 15), render (rendering under noise).",
+        DefaultValueFactory = _ => NoiseBenchSettings.AllParts,
+        AllowMultipleArgumentsPerToken = true,
+    };
+
+    private readonly Option<int> _workers = new("--workers")
+    {
+        Description = "Node bridge processes. Default: the core count.",
+        DefaultValueFactory = _ => BridgePool.DefaultWorkers,
+    };
+
+    private readonly Option<FileInfo?> _output = new("--output", "-o")
+    {
+        Description = "Write the Markdown report here (e.g. docs/noise.md), with its PNG plots beside it as <report>-<name>.png. It replaces only files this command wrote before. Default: the report is printed only.",
+    };
+
+    public BenchNoiseCommand() : base("noise", "Hardware noise: the analytic noise model against the noisy simulator, the paper's device experiment (fig. 15), rendering under noise; -o docs/noise.md.")
+    {
+        Options.Add(_shots);
+        Options.Add(_deviceShots);
+        Options.Add(_size);
+        Options.Add(_confirmSize);
+        Options.Add(_confirmRates);
+        Options.Add(_scenes);
+        Options.Add(_parts);
+        Options.Add(_workers);
+        Options.Add(_output);
+        _size.Between(1, 1024);
+        _confirmSize.Between(0, 128);
+        _confirmRates.Validators.Add(r =>
+        {
+            if ((r.GetValueOrDefault<double[]>() ?? []).Any(p => !(p > 0 && p <= 1))) r.AddError("--confirm-rates: each rate must lie in (0, 1]");
+        });
+        _parts.Validators.Add(r =>
+        {
+            foreach (var part in r.GetValueOrDefault<string[]>() ?? [])
+                if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of model, device, render");
+        });
+        _shots.Between(100, 1_000_000);
+        _deviceShots.Between(16, 1_000_000);
+        _workers.AtLeast(1);
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var output = parse.GetValue(_output);
+        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandText));
+        report.EnsureWritable();
+        var parts = parse.GetValue(_parts)!.ToHashSet();
+        var scenes = parts.Contains("render")
+            ? NoiseBenchSettings.RenderScenes.Select(n => (n, SceneLoader.Load(Path.Combine(parse.GetValue(_scenes)!.FullName, n + ".json")))).ToArray()
+            : [];
+        var settings = new NoiseBenchSettings(parts, parse.GetValue(_shots), parse.GetValue(_deviceShots), scenes, parse.GetValue(_size),
+            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_workers));
+        string PlotPath(string name) => Path.Combine(output?.DirectoryName ?? ".", $"{Path.GetFileNameWithoutExtension(output?.Name ?? "noise")}-{name}.png");
+        if (output is not null) ImageFiles.EnsureWritable(settings.PlotNames().Select(PlotPath).ToArray(), []);
+
+        var result = NoiseBenchmark.Run(settings, message => Console.Error.WriteLine(message));
+
+        var plots = new List<(RgbImage Image, string Path)>();
+        var command = $"dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}";
+        var body = NoiseReport.Markdown(result, settings, command, (name, image, caption) =>
+        {
+            plots.Add((image, PlotPath(name)));
+            return $"![{caption}]({Path.GetFileName(PlotPath(name))})";
+        });
+        Console.WriteLine(body);
+        report.Write(body);
+        if (output is not null) ImageFiles.Write(plots);
+        return 0;
+    }
+}

@@ -1,0 +1,46 @@
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Noise;
+
+/// <summary>
+/// The global depolarizing approximation of a noisy Grover run: with probability Φ the run is the ideal
+/// one, otherwise the index register is left maximally mixed and reads uniformly over its 2^n values.
+/// So P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n (t / N when N is a power of two), with
+/// Φ = F₀ · F^r, F = (1 − p)^(s · L) per iteration of L noise locations, F₀ the same for the preparation
+/// and measurement, and s the share of Pauli errors that harm the run.
+/// </summary>
+/// <param name="HarmfulShare">
+/// s: by default 2/3, as a Z error on a qubit in a basis state (the flag, every ancilla) does nothing;
+/// fitted per circuit shape against the noisy simulator in docs/noise.md (<c>qrt bench noise</c>).
+/// </param>
+public sealed record DepolarizingApproximation(double HarmfulShare = DepolarizingApproximation.DefaultHarmfulShare)
+{
+    public const double DefaultHarmfulShare = 2.0 / 3.0;
+
+    public static readonly DepolarizingApproximation Default = new();
+
+    /// <summary>Probability that <paramref name="locations"/> noise locations leave the run unharmed.</summary>
+    public double Fidelity(NoiseModel noise, double locations) =>
+        noise.PerGate <= 0 ? 1.0 : Math.Exp(HarmfulShare * locations * Math.Log(1 - Math.Min(noise.PerGate, 1 - 1e-12)));
+
+    /// <summary>Φ of a lookup-oracle Grover run (<see cref="NoiseLocations"/>).</summary>
+    public double RunFidelity(NoiseModel noise, GroverRequest request) =>
+        Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
+
+    /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
+    public static double MarkedProbability(int count, int marked, int iterations, double fidelity)
+    {
+        var readable = 1 << SearchRegisters.For(count).IndexQubits;
+        return fidelity * GroverProbability.OfMarked(count, marked, iterations) + (1 - fidelity) * marked / readable;
+    }
+
+    /// <summary>P(marked) of a lookup-oracle Grover run under <paramref name="noise"/>.</summary>
+    public double MarkedProbability(NoiseModel noise, GroverRequest request) =>
+        MarkedProbability(request.Marked.Count, request.Marked.MarkedCount, request.Iterations, RunFidelity(noise, request));
+
+    /// <summary>How the model is named beside every result it produces.</summary>
+    public string Description(NoiseModel noise) =>
+        noise.IsNoiseless ? noise.Description()
+        : $"{noise.Description()}, global depolarizing approximation (harmful share {HarmfulShare:0.###} of errors)";
+}

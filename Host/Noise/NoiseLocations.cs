@@ -1,0 +1,98 @@
+using System.Numerics;
+using System.Text.Json.Nodes;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Noise;
+
+/// <summary>
+/// Noise locations of a circuit: one per qubit per operation, measurements included, since the QDK's
+/// noisy simulator applies its Pauli channel to every qubit an operation touches (a CCX is three
+/// locations, a measurement one). The lookup oracle's Grover run is counted in closed form from the
+/// circuit <c>MeasureGroverSearch</c> builds (tested against the circuits the bridge extracts); any
+/// other circuit is counted from the bridge's circuit summary.
+/// </summary>
+public static class NoiseLocations
+{
+    /// <summary>
+    /// Locations of a Grover run outside its iterations: the flag's two X gates, the preparation and
+    /// the index measurement. Exact when N is a power of two; otherwise the preparation's controlled
+    /// rotations are counted as the plain H gates of the next power of two (an undercount).
+    /// </summary>
+    public static long PrepareAndMeasure(int count)
+    {
+        var n = SearchRegisters.For(count).IndexQubits;
+        return 2 + n + n;
+    }
+
+    /// <summary>
+    /// Locations of one lookup-oracle Grover iteration over <paramref name="marked"/>: per oracle index the
+    /// X gates that move the index register to all ones and one multi-controlled Z; then the diffusion
+    /// (unprepare, X on every index qubit, multi-controlled Z, undo). The oracle marks the complement
+    /// when more than half is marked, as the Q# operation does. Exact for N a power of two.
+    /// </summary>
+    public static long LookupIteration(MarkedSet marked)
+    {
+        ArgumentNullException.ThrowIfNull(marked);
+        var n = SearchRegisters.For(marked.Count).IndexQubits;
+        var complement = 2 * marked.MarkedCount > marked.Count;
+        var oracleSize = complement ? marked.Count - marked.MarkedCount : marked.MarkedCount;
+        var diffusion = 2L * n + 2L * n + ControlledZ(n);
+        return diffusion + oracleSize * ControlledZ(n) + Toggles(marked, complement, n);
+    }
+
+    /// <summary>
+    /// Locations of Z controlled by n index qubits on the flag: CZ (2) for n = 1; for n ≥ 2 the standard
+    /// library's 2n − 3 CCX (3 each) and the two H gates that turn the last into a CCZ.
+    /// </summary>
+    public static long ControlledZ(int n) => n <= 0 ? 1 : n == 1 ? 2 : 3L * (2 * n - 3) + 2;
+
+    // X gates moving the index register from one oracle index's all-ones pattern to the next, and back.
+    private static long Toggles(MarkedSet marked, bool complement, int n)
+    {
+        var allOnes = (1 << n) - 1;
+        var (total, previous, any) = (0L, 0, false);
+        void Visit(int index)
+        {
+            var flips = allOnes ^ index;
+            total += BitOperations.PopCount((uint)(previous ^ flips));
+            previous = flips;
+            any = true;
+        }
+        if (complement)
+        {
+            for (var i = 0; i < marked.Count; i++)
+                if (!marked.Contains(i)) Visit(i);
+        }
+        else
+        {
+            foreach (var m in marked.Indices) Visit(m);
+        }
+        return any ? total + BitOperations.PopCount((uint)previous) : 0;
+    }
+
+    /// <summary>
+    /// Locations of a circuit from the bridge's summary (its <c>native</c> part): each gate kind's count times
+    /// the qubits it touches (its controls, named by leading C's, plus its target; SWAP two), plus one per
+    /// measurement. Resets are left out: they end a qubit's use.
+    /// </summary>
+    public static long FromCircuit(JsonObject native)
+    {
+        ArgumentNullException.ThrowIfNull(native);
+        var gates = native["gates"]!.AsObject().ToDictionary(g => g.Key, g => g.Value!.GetValue<long>());
+        return FromCounts(gates, native["measurements"]!.GetValue<long>());
+    }
+
+    /// <summary>The same count from gate kinds and their counts, as a circuit summary lists them, and the measurements.</summary>
+    public static long FromCounts(IReadOnlyDictionary<string, long> gates, long measurements)
+    {
+        var total = 0L;
+        foreach (var (kind, count) in gates)
+        {
+            // "CCX" is X with two controls; no intrinsic gate's own name starts with C.
+            var controls = kind.TakeWhile(c => c == 'C').Count();
+            var targets = kind[controls..].TrimEnd('†') == "SWAP" ? 2 : 1;
+            total += count * (controls + targets);
+        }
+        return total + measurements;
+    }
+}
