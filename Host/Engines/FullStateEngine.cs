@@ -80,9 +80,12 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
         return measured;
     }
 
-    /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>.</summary>
-    public static string BatchExpression(IReadOnlyList<GroverRequest> requests) =>
-        Call(BatchOperation, requests, r => r, (text, r) => text.Append(r.Iterations.ToString(CultureInfo.InvariantCulture)));
+    /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>, or the same call of another operation with that signature.</summary>
+    public static string BatchExpression(IReadOnlyList<GroverRequest> requests) => BatchExpression(requests, BatchOperation);
+
+    /// <inheritdoc cref="BatchExpression(IReadOnlyList{GroverRequest})"/>
+    public static string BatchExpression(IReadOnlyList<GroverRequest> requests, string operation) =>
+        Call(operation, requests, r => r, (text, r) => text.Append(r.Iterations.ToString(CultureInfo.InvariantCulture)));
 
     /// <summary>The Q# call for schedules: <c>MeasureGroverSchedules([(N, [marked…], [r₁, r₂, …]), …])</c>.</summary>
     public static string ScheduleExpression(IReadOnlyList<IReadOnlyList<GroverRequest>> schedules) =>
