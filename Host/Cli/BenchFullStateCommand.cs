@@ -31,10 +31,10 @@ public sealed class BenchFullStateCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
-    private readonly Option<int> _baselineUpTo = new("--baseline-up-to")
+    private readonly Option<long> _baselineLimit = new("--baseline-limit")
     {
-        Description = "Largest image size at which the baseline engine also renders (it is the slow one); 0 for none.",
-        DefaultValueFactory = _ => 128,
+        Description = "The baseline engine (the slow one) also renders a case only up to this many pixels × primitives; 0 for never. Default: qornell-64 up to 128², qornell-512 up to 64².",
+        DefaultValueFactory = _ => 2L * 64 * 64 * 512,
     };
 
     public BenchFullStateCommand() : base("fullstate", "Whole renders on the fullstate engine against its baseline: ms per ray, bridge calls, time in calls against simulation, and the simulator-only floor.")
@@ -42,12 +42,15 @@ public sealed class BenchFullStateCommand : Command
         _report.AddTo(this);
         Options.Add(_sceneNames);
         Options.Add(_sizes);
-        Options.Add(_baselineUpTo);
+        Options.Add(_baselineLimit);
         _sizes.Validators.Add(r =>
         {
             if ((r.GetValueOrDefault<int[]>() ?? []).Any(n => n is < 1 or > 1024)) r.AddError("--sizes: each size must be between 1 and 1024");
         });
-        _baselineUpTo.AtLeast(0);
+        _baselineLimit.Validators.Add(r =>
+        {
+            if (r.GetValueOrDefault<long>() < 0) r.AddError("--baseline-limit must be at least 0");
+        });
         SetAction(Execute);
     }
 
@@ -56,7 +59,7 @@ public sealed class BenchFullStateCommand : Command
         var report = _report.Report(parse);
         var seed = parse.GetValue(_report.Seed);
         var workers = parse.GetValue(_report.Workers);
-        var baselineUpTo = parse.GetValue(_baselineUpTo);
+        var baselineLimit = parse.GetValue(_baselineLimit);
         var scenes = parse.GetValue(_sceneNames)!.Select(name => (Name: name, Scene: _report.Load(parse, name))).ToArray();
         string versions;
         using (var bridge = new QSharpBridge())
@@ -69,7 +72,7 @@ public sealed class BenchFullStateCommand : Command
             foreach (var size in parse.GetValue(_sizes)!)
             {
                 // Back to back, so both see the same load on a shared machine.
-                Variant[] variants = size <= baselineUpTo ? [Variant.Baseline, Variant.Current] : [Variant.Current];
+                Variant[] variants = (long)size * size * new Intersection.SceneGeometry(scene).Count <= baselineLimit ? [Variant.Baseline, Variant.Current] : [Variant.Current];
                 foreach (var variant in variants)
                 {
                     Console.Error.WriteLine($"rendering {name} at {size}x{size} on the {(variant == Variant.Current ? "current" : "baseline")} fullstate engine");
