@@ -19,8 +19,11 @@ public static class FullStateBenchmark
 {
     public enum Variant { Baseline, Current }
 
-    /// <summary>One render: its rays, wall time, bridge calls and the time in them (summed over the workers), and Grover runs.</summary>
-    public sealed record Row(string Scene, int Size, Variant Variant, int Workers, long Rays, TimeSpan Wall, long Calls, TimeSpan CallTime, long GroverRuns, double CallFloorMs)
+    /// <summary>
+    /// One render: its rays, wall time, bridge calls and the time in them (summed over the workers), Grover runs, the
+    /// fixed cost of one call measured just before, and the machine's 1-minute load average just after (NaN if unknown).
+    /// </summary>
+    public sealed record Row(string Scene, int Size, Variant Variant, int Workers, long Rays, TimeSpan Wall, long Calls, TimeSpan CallTime, long GroverRuns, double CallFloorMs, double LoadAverage)
     {
         public double MillisecondsPerRay => Wall.TotalMilliseconds / Rays;
 
@@ -75,7 +78,21 @@ public static class FullStateBenchmark
             result = SceneRenderer.Render(scene, search, DefaultPipeline(size, seed));
         var wall = clock.Elapsed;
         var runs = engine is FullStateEngine current ? current.GroverRuns : ((BaselineEngine)engine).GroverRuns;
-        return new Row(name, size, variant, workers, result.Total.Rays, wall, pool.Requests - requests, pool.RequestTime - time, runs, floor);
+        return new Row(name, size, variant, workers, result.Total.Rays, wall, pool.Requests - requests, pool.RequestTime - time, runs, floor, LoadAverage());
+    }
+
+    /// <summary>The 1-minute load average (Linux /proc/loadavg), or NaN: what else the machine was running.</summary>
+    public static double LoadAverage()
+    {
+        try
+        {
+            var first = File.ReadAllText("/proc/loadavg").Split(' ')[0];
+            return double.Parse(first, System.Globalization.CultureInfo.InvariantCulture);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException)
+        {
+            return double.NaN;
+        }
     }
 
     /// <summary>

@@ -110,10 +110,14 @@ public sealed class BenchFullStateCommand : Command
         text.AppendLine("the workers and the rays it is the *simulator-only floor* per ray, the time a render would take if calls cost nothing and");
         text.AppendLine("the host's own work were free.");
         text.AppendLine();
-        text.AppendLine("| scene | size | engine | rays | wall | ms/ray | calls | in calls | call floor | floor share | Grover runs | simulation ms/run | simulator-only floor ms/ray |");
-        text.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+        text.AppendLine("*Load* is the machine's 1-minute load average after the render: on a machine shared with other work the absolute times");
+        text.AppendLine("grow with it (the call floor, the same call every time, shows by how much), so compare the two engines by the ratios of");
+        text.AppendLine("renders run back to back, below.");
+        text.AppendLine();
+        text.AppendLine("| scene | size | engine | rays | wall | ms/ray | calls | in calls | call floor | floor share | Grover runs | simulation ms/run | simulator-only floor ms/ray | load |");
+        text.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
         foreach (var r in rows)
-            text.AppendLine($"| {r.Scene} | {r.Size}² | {Engine(r.Variant)} | {r.Rays:N0} | {F(r.Wall.TotalSeconds, "0.0")} s | {F(r.MillisecondsPerRay, "0.00")} | {r.Calls:N0} | {F(r.CallTime.TotalSeconds, "0.0")} s | {F(r.CallFloorMs, "0")} ms | {F(100 * r.FloorShare, "0")} % | {r.GroverRuns:N0} | {F(r.SimulationMsPerRun, "0.000")} | {F(r.FloorMsPerRay, "0.00")} |");
+            text.AppendLine($"| {r.Scene} | {r.Size}² | {Engine(r.Variant)} | {r.Rays:N0} | {F(r.Wall.TotalSeconds, "0.0")} s | {F(r.MillisecondsPerRay, "0.00")} | {r.Calls:N0} | {F(r.CallTime.TotalSeconds, "0.0")} s | {F(r.CallFloorMs, "0")} ms | {F(100 * r.FloorShare, "0")} % | {r.GroverRuns:N0} | {F(r.SimulationMsPerRun, "0.000")} | {F(r.FloorMsPerRay, "0.00")} | {(double.IsNaN(r.LoadAverage) ? "?" : F(r.LoadAverage, "0.0"))} |");
         var pairs = rows.Where(r => r.Variant == Variant.Current)
             .Select(c => (Current: c, Baseline: rows.FirstOrDefault(b => b.Variant == Variant.Baseline && b.Scene == c.Scene && b.Size == c.Size)))
             .Where(p => p.Baseline is not null).ToArray();
