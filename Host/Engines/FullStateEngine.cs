@@ -10,8 +10,8 @@ namespace QuantumRayTracing.Engines;
 /// Runs Grover requests as Q# on the QDK full-state simulator: a batch is cut into chunks, each
 /// chunk is one call of the Q# operation <c>MeasureGroverBatch</c> on one bridge, and the chunks run
 /// on all workers at once (<see cref="BridgeBatches"/>). Whole search schedules go the same way as
-/// calls of <c>MeasureGroverSchedules</c>, so QSearch costs one call per batch of searches. Registers are sized per request (see
-/// <see cref="SearchRegisters"/>). Measurement outcomes come from the simulator and cannot be seeded.
+/// calls of <c>MeasureGroverSchedules</c>, so QSearch costs one call per batch of searches.
+/// Registers are sized per request (see <see cref="SearchRegisters"/>). Measurement outcomes come from the simulator and cannot be seeded.
 /// A batch holding a search wider than <see cref="MaxQubits"/> is refused before any of it is sent.
 /// </summary>
 public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null, bool ownsPool = true) : IScheduleEngine
@@ -55,7 +55,7 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
     private void CheckCapacity(IReadOnlyList<GroverRequest> requests)
     {
         if (requests.Count == 0) return;
-        // Auxiliaries are borrowed clean inside a gate and never superposed: the state spans the index register.
+        // Auxiliaries only ever hold ANDs of index bits and are cleared after every gate: the state spans the index register.
         var widest = requests.Max(r => r.Marked.Count);
         var registers = SearchRegisters.For(widest);
         SimulatorCapacity.Check($"a search over N = {widest} indices", registers.PeakQubits, registers.IndexQubits, MaxQubits);
