@@ -84,12 +84,12 @@ public sealed class FailureReportTests : IDisposable
 
         var search = QrtProcess.Run(node, _scratch.Path, "search", "-n", "64", "--engine", "fullstate", "--max-qubits", "6");
         Assert.Equal(CommandLine.BadInput, search.Code);
-        Assert.Equal("error: a search over N = 64 indices needs 11 qubits (2^6 amplitudes, about 5.0 KiB of simulator memory per worker), more than the limit of 6 (--max-qubits; the default is the widest state this machine holds: a WebAssembly heap of at most 4 GiB per worker)",
+        Assert.Equal("error: a search over N = 64 indices needs 10 qubits (2^6 amplitudes, about 5.0 KiB of simulator memory per worker), more than the limit of 6 (--max-qubits; the default is the widest state this machine holds: a WebAssembly heap of at most 4 GiB per worker)",
             Lines(search.Error).Single());
 
-        var render = QrtProcess.Run(node, _scratch.Path, "render", "--engine", "fullstate", "--size", "4", "--max-qubits", "10", "-o", "out.png");
+        var render = QrtProcess.Run(node, _scratch.Path, "render", "--engine", "fullstate", "--size", "4", "--max-qubits", "9", "-o", "out.png");
         Assert.Equal(CommandLine.BadInput, render.Code);
-        Assert.Contains("needs 11 qubits", Lines(render.Error).Single());
+        Assert.Contains("needs 10 qubits", Lines(render.Error).Single());
         Assert.Empty(Directory.EnumerateFileSystemEntries(_scratch.Path));
 
         var supersample = QrtProcess.Run(node, _scratch.Path, "supersample", "--engine", "fullstate", "--size", "2", "--max-qubits", "8", "-o", "out.png");

@@ -1,5 +1,6 @@
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Search;
 using QuantumRayTracing.Tests.Statistics;
 
 namespace QuantumRayTracing.Tests.Engines;
@@ -35,4 +36,54 @@ public class FullStateEngineTests(FullStateFixture fixture)
 
     [Fact]
     public void EmptyBatchNeedsNoCall() => Assert.Empty(fixture.Engine.Measure([]));
+
+    [Fact]
+    public void ScheduleExpressionListsEveryRun()
+    {
+        var marked = new MarkedSet(8, [1, 6]);
+        var schedules = new[]
+        {
+            new[] { new GroverRequest(marked, 0), new GroverRequest(marked, 2) },
+            new[] { new GroverRequest(new MarkedSet(4, []), 1) },
+        };
+        Assert.Equal("QuantumRayTracing.Search.MeasureGroverSchedules([(8, [1, 6], [0, 2]), (4, [0, size = 0], [1])])", FullStateEngine.ScheduleExpression(schedules));
+    }
+
+    [Fact]
+    public void ScheduleStopsAfterTheFirstMarkedIndex()
+    {
+        // Outcomes certain on every run: N = 4, t = 1 finds the index after one iteration (sin²(3θ) = 1 at
+        // sin²θ = 1/4); t = N finds it in the sample; t = 0 never does, so every run comes back.
+        var one = new MarkedSet(4, [2]);
+        var all = new MarkedSet(8, [0, 1, 2, 3, 4, 5, 6, 7]);
+        var none = new MarkedSet(8, []);
+        var measured = fixture.Engine.MeasureSchedules(
+        [
+            [new GroverRequest(one, 1), new GroverRequest(one, 1), new GroverRequest(one, 1)],
+            [new GroverRequest(all, 0), new GroverRequest(all, 1)],
+            [new GroverRequest(none, 0), new GroverRequest(none, 1), new GroverRequest(none, 2)],
+        ]);
+        Assert.Equal([2], measured[0]);
+        Assert.Single(measured[1]);
+        Assert.Equal(3, measured[2].Length);
+        Assert.All(measured[2], i => Assert.InRange(i, 0, 7));
+    }
+
+    [Theory]
+    [InlineData(2, new[] { 1 })]
+    [InlineData(3, new[] { 0, 2 })]
+    [InlineData(5, new[] { 4 })]
+    [InlineData(8, new[] { 0, 3, 7 })]
+    [InlineData(16, new[] { 5, 6, 9, 15 })]
+    [InlineData(64, new[] { 0, 17, 40, 63 })]
+    [InlineData(64, new int[0])]
+    public void PhaseConstructionMatchesTheLibrarysControlledZOnEveryBasisState(int count, int[] marked)
+    {
+        // Deterministic: equal phases leave the kickback control in |+⟩ with certainty (see the Q# remarks).
+        var list = marked.Length == 0 ? "[0, size = 0]" : $"[{string.Join(", ", marked)}]";
+        var value = fixture.Engine.Pool.Bridges[0].Run($"QuantumRayTracing.Search.CompareMarkingOracleConstructions({count}, {list})")[0];
+        var states = value.Trim('[', ']').Split("), (");
+        Assert.Equal(1 << SearchRegisters.For(count).IndexQubits, states.Length);
+        Assert.All(states, s => Assert.Equal("true, true, true", s.Trim('(', ')')));
+    }
 }

@@ -61,10 +61,11 @@ public class DepolarizingApproximationTests
     [Fact]
     public void NoiseLocationsOfTheLookupRunAreCountedPerOracleIndex()
     {
-        // N = 64: the controlled Z over 6 index qubits is 9 CCX and 2 H (29 locations); the diffusion adds
-        // 12 H and 12 X; index 17's all-ones pattern is 4 X there and 4 back.
-        Assert.Equal(29, NoiseLocations.ControlledZ(6));
-        Assert.Equal(12 + 12 + 29 + 29 + 8, NoiseLocations.LookupIteration(new MarkedSet(64, [17])));
+        // N = 64: the phase on the all-ones state of 6 index qubits is a ladder of 4 CCX, one CZ and the 4 CCX
+        // undone (8 · 3 + 2 = 26 locations); the diffusion adds 12 H and 12 X; index 17's all-ones pattern is
+        // 4 X there and 4 back.
+        Assert.Equal(26, NoiseLocations.PhaseToAllOnes(6));
+        Assert.Equal(12 + 12 + 26 + 26 + 8, NoiseLocations.LookupIteration(new MarkedSet(64, [17])));
         // More than half marked: the complement is the oracle set, as in the Q# operation.
         Assert.Equal(NoiseLocations.LookupIteration(new MarkedSet(8, [3])), NoiseLocations.LookupIteration(new MarkedSet(8, [0, 1, 2, 4, 5, 6, 7])));
     }

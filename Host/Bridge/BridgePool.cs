@@ -30,6 +30,12 @@ public sealed class BridgePool : IDisposable
 
     public IReadOnlyList<QSharpBridge> Bridges => _all;
 
+    /// <summary>Requests sent by all bridges so far.</summary>
+    public long Requests => _all.Sum(b => b.Requests);
+
+    /// <summary>Time all bridges spent waiting for replies, summed over the workers.</summary>
+    public TimeSpan RequestTime => _all.Aggregate(TimeSpan.Zero, (total, b) => total + b.RequestTime);
+
     /// <summary>Calls <paramref name="work"/> on every item, at most <see cref="Workers"/> at a time, each with a bridge of its own.</summary>
     public void ForEach<T>(IReadOnlyList<T> items, Action<T, QSharpBridge> work)
     {

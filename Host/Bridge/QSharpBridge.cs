@@ -69,6 +69,12 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     /// <summary>The bridge's qsharp-lang and Node versions.</summary>
     public JsonObject Version() => Send(new JsonObject { ["method"] = "version" }).AsObject();
 
+    /// <summary>Requests sent so far (each retry counted once more).</summary>
+    public long Requests { get; private set; }
+
+    /// <summary>Wall time spent waiting for replies, start-ups excluded: the time the QDK spent on the requests plus their transport.</summary>
+    public TimeSpan RequestTime { get; private set; }
+
     /// <summary>Sends one request and returns its result; restarts a dead bridge and retries once.</summary>
     public JsonNode Send(JsonObject request, TimeSpan? timeout = null)
     {
@@ -94,6 +100,7 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     private JsonNode SendOnce(JsonObject request, TimeSpan timeout)
     {
         var process = EnsureStarted();
+        var clock = Stopwatch.StartNew();
         var id = ++_nextId;
         request = (JsonObject)request.DeepClone();
         request["id"] = id;
@@ -109,6 +116,8 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
         }
 
         var line = ReadLine(process, timeout, $"request {request["method"]}");
+        Requests++;
+        RequestTime += clock.Elapsed;
         var reply = ParseReply(line);
         if (reply["ok"]?.GetValue<bool>() == true)
             return reply["result"] ?? throw new BridgeException($"the Q# bridge replied without a result: {line}");

@@ -26,6 +26,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchSoakCommand());
         Subcommands.Add(new BenchAccuracyCommand());
         Subcommands.Add(new BenchNoiseCommand());
+        Subcommands.Add(new BenchFullStateCommand());
     }
 
     private sealed class GroverBenchCommand : Command
@@ -136,6 +137,8 @@ public sealed class BenchCommand : Command
             text.AppendLine("|---|---|---|---|---|---|---|---|");
             foreach (var r in rows)
                 text.AppendLine($"| {r.Count} | {r.Iterations} | {r.Batch} | {F(r.FullStateOneWorkerMs)} | {F(r.FullStateAllWorkersMs)} | {F(r.FullStateOneWorkerMs * r.Batch)} | {F(r.AnalyticMicroseconds)} | {F(r.FullStateOneWorkerMs * 1000 / r.AnalyticMicroseconds)}x |");
+            text.AppendLine();
+            text.AppendLine("Whole renders on the fullstate engine, with their calls, simulation and simulator-only floor: [performance-fullstate.md](performance-fullstate.md) (`qrt bench fullstate`).");
             text.AppendLine();
             text.AppendLine($"Machine: {machine}.");
             text.AppendLine($"Command: `dotnet run --project Host -c Release -- {arguments}`.");

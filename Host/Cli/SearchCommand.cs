@@ -78,7 +78,7 @@ public sealed class SearchCommand : Command
         var registers = SearchRegisters.For(count);
 
         AnsiConsole.WriteLine($"N = {count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", schedule.Bounds)}}}");
-        AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index + {registers.FlagQubits} flag qubits (+ {registers.AuxiliaryQubits} auxiliary inside multi-controlled gates)");
+        AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index qubits + {registers.AuxiliaryQubits} auxiliaries for the multi-controlled phase");
 
         var noise = EngineOptions.NoiseDescription(parse.GetValue(_engine.Engine), _engine.GetNoise(parse));
         AnsiConsole.WriteLine($"noise model: {noise}");

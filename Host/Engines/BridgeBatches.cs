@@ -25,28 +25,48 @@ internal static class BridgeBatches
         ChunkLimits limits,
         string operation,
         Func<IReadOnlyList<GroverRequest>, string> expression,
+        NoiseModel? noise = null) =>
+        Run(pool, requests, limits.MaxRequests, limits.Cost, limits.MaxCost, expression, (slice, value) =>
+        {
+            var indices = JsonSerializer.Deserialize<int[]>(value) ?? throw new BridgeException($"{operation} returned no value");
+            if (indices.Length != slice.Count)
+                throw new BridgeException($"{operation} returned {indices.Length} indices for {slice.Count} requests");
+            for (var k = 0; k < slice.Count; k++) CheckIndex(operation, indices[k], slice[k], noise);
+            return indices;
+        }, noise);
+
+    /// <summary>Throws unless <paramref name="index"/> lies in 0..N-1 of <paramref name="request"/> (under noise, in 0..2^n-1).</summary>
+    public static void CheckIndex(string operation, int index, GroverRequest request, NoiseModel? noise = null)
+    {
+        var readable = noise is { IsNoiseless: false } ? 1 << SearchRegisters.For(request.Marked.Count).IndexQubits : request.Marked.Count;
+        if (index < 0 || index >= readable)
+            throw new BridgeException($"{operation} measured index {index} outside 0..{readable - 1}");
+    }
+
+    /// <summary>
+    /// One result per item, in order: the items are cut into chunks (<see cref="Chunks{T}"/>), each chunk is one
+    /// Q# call built by <paramref name="expression"/> on a bridge of its own, and <paramref name="parse"/> turns the
+    /// call's value into one result per item of the chunk. Every call runs under <paramref name="noise"/>.
+    /// </summary>
+    public static TResult[] Run<TItem, TResult>(
+        BridgePool pool,
+        IReadOnlyList<TItem> items,
+        int maxItems,
+        Func<TItem, double> cost,
+        double maxCost,
+        Func<IReadOnlyList<TItem>, string> expression,
+        Func<IReadOnlyList<TItem>, string, TResult[]> parse,
         NoiseModel? noise = null)
     {
-        var noisy = noise is { IsNoiseless: false };
-        var measured = new int[requests.Count];
-        if (requests.Count == 0) return measured;
-        pool.ForEach(Chunks(requests, pool.Workers, limits), (chunk, bridge) =>
+        var results = new TResult[items.Count];
+        if (items.Count == 0) return results;
+        pool.ForEach(Chunks(items, pool.Workers, maxItems, cost, maxCost), (chunk, bridge) =>
         {
-            var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => requests[k]).ToArray();
-            var shots = bridge.Run(expression(slice), noise: noise);
-            var indices = JsonSerializer.Deserialize<int[]>(shots[0])
-                ?? throw new BridgeException($"{operation} returned no value");
-            if (indices.Length != slice.Length)
-                throw new BridgeException($"{operation} returned {indices.Length} indices for {slice.Length} requests");
-            for (var k = 0; k < slice.Length; k++)
-            {
-                var readable = noisy ? 1 << SearchRegisters.For(slice[k].Marked.Count).IndexQubits : slice[k].Marked.Count;
-                if (indices[k] < 0 || indices[k] >= readable)
-                    throw new BridgeException($"{operation} measured index {indices[k]} outside 0..{readable - 1}");
-                measured[chunk.Start + k] = indices[k];
-            }
+            var slice = Enumerable.Range(chunk.Start, chunk.Length).Select(k => items[k]).ToArray();
+            var values = parse(slice, bridge.Run(expression(slice), noise: noise)[0]);
+            values.CopyTo(results, chunk.Start);
         });
-        return measured;
+        return results;
     }
 
     /// <summary>
@@ -54,19 +74,23 @@ internal static class BridgeBatches
     /// waves over the workers allow, closed early when the next request would take the chunk's cost past
     /// <see cref="ChunkLimits.MaxCost"/> (a request costing more than that gets a chunk of its own).
     /// </summary>
-    public static IReadOnlyList<(int Start, int Length)> Chunks(IReadOnlyList<GroverRequest> requests, int workers, ChunkLimits limits)
+    public static IReadOnlyList<(int Start, int Length)> Chunks(IReadOnlyList<GroverRequest> requests, int workers, ChunkLimits limits) =>
+        Chunks(requests, workers, limits.MaxRequests, limits.Cost, limits.MaxCost);
+
+    /// <summary>The same cut for any items, with a count limit and a cost per item.</summary>
+    public static IReadOnlyList<(int Start, int Length)> Chunks<T>(IReadOnlyList<T> requests, int workers, int maxItems, Func<T, double> itemCost, double maxCost)
     {
         // Equal chunks in whole waves over the workers: 1024 requests on 2 workers at most 500 per call
         // go as 4 chunks of 256, not 500 + 500 + 24, which would leave one worker idle for a wave.
-        var perWave = (long)workers * limits.MaxRequests;
+        var perWave = (long)workers * maxItems;
         var waves = (int)((requests.Count + perWave - 1) / perWave);
         var countLimit = (requests.Count + waves * workers - 1) / (waves * workers);
         var chunks = new List<(int Start, int Length)>();
         var (start, cost) = (0, 0.0);
         for (var k = 0; k < requests.Count; k++)
         {
-            var next = limits.Cost(requests[k]);
-            if (k > start && (k - start == countLimit || cost + next > limits.MaxCost))
+            var next = itemCost(requests[k]);
+            if (k > start && (k - start == countLimit || cost + next > maxCost))
             {
                 chunks.Add((start, k - start));
                 (start, cost) = (k, 0.0);

@@ -14,20 +14,19 @@ namespace QuantumRayTracing.Noise;
 public static class NoiseLocations
 {
     /// <summary>
-    /// Locations of a Grover run outside its iterations: the flag's two X gates, the preparation and
-    /// the index measurement. Exact when N is a power of two; otherwise the preparation's controlled
+    /// Locations of a Grover run outside its iterations: the preparation and the index measurement. Exact when N is a power of two; otherwise the preparation's controlled
     /// rotations are counted as the plain H gates of the next power of two (an undercount).
     /// </summary>
     public static long PrepareAndMeasure(int count)
     {
         var n = SearchRegisters.For(count).IndexQubits;
-        return 2 + n + n;
+        return n + n;
     }
 
     /// <summary>
     /// Locations of one lookup-oracle Grover iteration over <paramref name="marked"/>: per oracle index the
-    /// X gates that move the index register to all ones and one multi-controlled Z; then the diffusion
-    /// (unprepare, X on every index qubit, multi-controlled Z, undo). The oracle marks the complement
+    /// X gates that move the index register to all ones and one phase on the all-ones state; then the diffusion
+    /// (unprepare, X on every index qubit, the phase on all ones, undo). The oracle marks the complement
     /// when more than half is marked, as the Q# operation does. Exact for N a power of two.
     /// </summary>
     public static long LookupIteration(MarkedSet marked)
@@ -36,15 +35,16 @@ public static class NoiseLocations
         var n = SearchRegisters.For(marked.Count).IndexQubits;
         var complement = 2 * marked.MarkedCount > marked.Count;
         var oracleSize = complement ? marked.Count - marked.MarkedCount : marked.MarkedCount;
-        var diffusion = 2L * n + 2L * n + ControlledZ(n);
-        return diffusion + oracleSize * ControlledZ(n) + Toggles(marked, complement, n);
+        var diffusion = 2L * n + 2L * n + PhaseToAllOnes(n);
+        return diffusion + oracleSize * PhaseToAllOnes(n) + Toggles(marked, complement, n);
     }
 
     /// <summary>
-    /// Locations of Z controlled by n index qubits on the flag: CZ (2) for n = 1; for n ≥ 2 the standard
-    /// library's 2n − 3 CCX (3 each) and the two H gates that turn the last into a CCZ.
+    /// Locations of the phase on the all-ones state of n index qubits (<c>ApplyPhaseToAllOnes</c>): none for
+    /// n = 0 (a global phase), Z (1) for n = 1, CZ (2) for n = 2, and for n ≥ 3 the Toffoli ladder and its
+    /// undoing, 2(n − 2) CCX (3 each), around one CZ (2).
     /// </summary>
-    public static long ControlledZ(int n) => n <= 0 ? 1 : n == 1 ? 2 : 3L * (2 * n - 3) + 2;
+    public static long PhaseToAllOnes(int n) => n <= 0 ? 0 : n == 1 ? 1 : n == 2 ? 2 : 6L * (n - 2) + 2;
 
     // X gates moving the index register from one oracle index's all-ones pattern to the next, and back.
     private static long Toggles(MarkedSet marked, bool complement, int n)

@@ -20,6 +20,7 @@ public sealed class QSearch
     private readonly SeededRandom _random;
     private int _stage; // 0: the initial sample; l ≥ 1: the run bounded by M_l
     private int _pendingIterations = -1;
+    private readonly Queue<int> _planned = new();
 
     private readonly OracleInput? _oracle;
 
@@ -52,11 +53,31 @@ public sealed class QSearch
     {
         if (IsDone) throw new InvalidOperationException("the search has ended");
         if (_pendingIterations < 0)
-            _pendingIterations = _stage == 0 ? 0
-                : _schedule.IsFixed ? _schedule.Bounds[_stage - 1]
-                : _random.NextInt(1, _schedule.Bounds[_stage - 1]);
+            _pendingIterations = _planned.Count > 0 ? _planned.Dequeue() : DrawIterations(_stage);
         return new GroverRequest(Marked, _pendingIterations, _oracle);
     }
+
+    /// <summary>
+    /// Every Grover run the search may still do, in order: the iteration counts of all remaining stages
+    /// are drawn now, and <see cref="NextRequest"/> returns them one by one. An engine can then run the
+    /// whole rest of the search in one call; the runs after the first marked index are never observed.
+    /// </summary>
+    /// <remarks>The draws are the same uniform choices as stage by stage, taken earlier: the algorithm and its
+    /// counts are unchanged, only the order in which a shared generator serves several searches differs.</remarks>
+    public IReadOnlyList<GroverRequest> PlanRemaining()
+    {
+        if (IsDone) throw new InvalidOperationException("the search has ended");
+        var runs = new List<GroverRequest> { NextRequest() };
+        for (var stage = _stage + 1 + _planned.Count; stage <= _schedule.Bounds.Count; stage++)
+            _planned.Enqueue(DrawIterations(stage));
+        runs.AddRange(_planned.Select(r => new GroverRequest(Marked, r, _oracle)));
+        return runs;
+    }
+
+    private int DrawIterations(int stage) =>
+        stage == 0 ? 0
+        : _schedule.IsFixed ? _schedule.Bounds[stage - 1]
+        : _random.NextInt(1, _schedule.Bounds[stage - 1]);
 
     /// <summary>
     /// Takes the measured index of the pending run. A noisy machine can read an index in N..2^n − 1 (n

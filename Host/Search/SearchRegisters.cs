@@ -1,23 +1,20 @@
 namespace QuantumRayTracing.Search;
 
 /// <summary>
-/// The qubits one Grover search over N indices holds: ceil(log2 N) index qubits, one oracle flag,
-/// and the auxiliary qubits the standard library's multi-controlled Z borrows inside each gate
-/// (n − 2 for n ≥ 3 controls, released clean after the gate).
+/// The qubits one Grover search over N indices holds: ceil(log2 N) index qubits and the auxiliaries of
+/// the phase on the all-ones state (Q# <c>ApplyPhaseToAllOnes</c>: n − 2 for n ≥ 3 index qubits),
+/// allocated once per search and returned clean after every gate. The phase oracle needs no flag qubit.
 /// </summary>
-public readonly record struct SearchRegisters(int IndexQubits, int FlagQubits, int AuxiliaryQubits)
+public readonly record struct SearchRegisters(int IndexQubits, int AuxiliaryQubits)
 {
     public static SearchRegisters For(int count)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(count, 1);
         var index = 32 - int.LeadingZeroCount(count - 1);
-        // Controlled Z(index, flag) has `index` controls; Std allocates controls − 2 auxiliaries past two.
-        return new SearchRegisters(index, 1, Math.Max(0, index - 2));
+        // A Toffoli ladder over n qubits ANDs the first n − 1 into n − 2 auxiliaries.
+        return new SearchRegisters(index, Math.Max(0, index - 2));
     }
 
-    /// <summary>Qubits allocated by the search's own registers.</summary>
-    public int RegisterQubits => IndexQubits + FlagQubits;
-
     /// <summary>Peak qubits in use, auxiliaries included.</summary>
-    public int PeakQubits => RegisterQubits + AuxiliaryQubits;
+    public int PeakQubits => IndexQubits + AuxiliaryQubits;
 }

@@ -18,6 +18,6 @@ namespace QuantumRayTracing.Intersection {
     /// A qubit in |1⟩; it stays in |1⟩.
     operation ApplyGateGroverIteration(tables : IntersectionTables, count : Int, index : Qubit[], registers : IntersectionRegisters, flag : Qubit) : Unit is Adj + Ctl {
         ApplyIntersectionPhaseOracle(tables, index, registers, flag);
-        ReflectAboutUniformSuperposition(count, index, flag);
+        ReflectAboutUniformSuperposition(count, Controlled Z(_, flag), index);
     }
 }

@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Intersection {
     /// ## registers
     /// The work registers, in |0⟩.
     /// ## flag
-    /// A qubit held in |1⟩, as for `ApplyMarkingOracle`: the flags' AND controls a Z on it, which
+    /// A qubit held in |1⟩: the flags' AND controls a Z on it, which
     /// kicks the phase back. It stays in |1⟩.
     operation ApplyIntersectionPhaseOracle(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters, flag : Qubit) : Unit is Adj + Ctl {
         within {

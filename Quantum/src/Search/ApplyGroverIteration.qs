@@ -10,10 +10,10 @@ namespace QuantumRayTracing.Search {
     /// Indices the oracle marks.
     /// ## index
     /// Index register holding a state prepared by `PrepareUniformSuperposition(count, _)`.
-    /// ## flag
-    /// Oracle output qubit in |1⟩; it stays in |1⟩.
-    operation ApplyGroverIteration(count : Int, marked : Int[], index : Qubit[], flag : Qubit) : Unit is Adj + Ctl {
-        ApplyMarkingOracle(marked, index, flag);
-        ReflectAboutUniformSuperposition(count, index, flag);
+    /// ## auxiliaries
+    /// `PhaseAuxiliaryCount(Length(index))` qubits in |0⟩; they end in |0⟩.
+    operation ApplyGroverIteration(count : Int, marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
+        ApplyMarkingOracle(marked, index, auxiliaries);
+        ReflectAboutUniformSuperposition(count, ApplyPhaseToAllOnes(_, auxiliaries), index);
     }
 }

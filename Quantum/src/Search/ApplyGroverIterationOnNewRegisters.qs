@@ -12,8 +12,8 @@ namespace QuantumRayTracing.Search {
     /// Indices the oracle marks.
     operation ApplyGroverIterationOnNewRegisters(count : Int, marked : Int[]) : Unit {
         use index = Qubit[BitSizeI(count - 1)];
-        use flag = Qubit();
-        ApplyGroverIteration(count, marked, index, flag);
-        ResetAll(index + [flag]);
+        use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
+        ApplyGroverIteration(count, marked, index, auxiliaries);
+        ResetAll(index);
     }
 }

@@ -17,8 +17,8 @@ namespace QuantumRayTracing.Search {
     /// The measured index, below `count` on an ideal machine (noise can flip it past; a lost qubit reads Zero).
     ///
     /// # Remarks
-    /// Allocates ceil(log2 count) index qubits and one flag qubit; the standard library's
-    /// multi-controlled Z borrows its own auxiliary qubits for the duration of each gate.
+    /// Allocates ceil(log2 count) index qubits and the auxiliaries of `ApplyPhaseToAllOnes`,
+    /// once for every gate of the search.
     /// When more than half the indices are marked the oracle marks the complement instead:
     /// that oracle is the original times −1, a global phase this uncontrolled search cannot see.
     operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
@@ -35,14 +35,10 @@ namespace QuantumRayTracing.Search {
         }
         let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
         use index = Qubit[BitSizeI(count - 1)];
-        use flag = Qubit();
-        within {
-            X(flag);
-        } apply {
-            PrepareUniformSuperposition(count, index);
-            for _ in 1..iterations {
-                ApplyGroverIteration(count, oracleSet, index, flag);
-            }
+        use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
+        PrepareUniformSuperposition(count, index);
+        for _ in 1..iterations {
+            ApplyGroverIteration(count, oracleSet, index, auxiliaries);
         }
         MeasureIntegerReadingLossAsZero(index)
     }

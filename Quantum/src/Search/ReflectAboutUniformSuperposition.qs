@@ -6,17 +6,19 @@ namespace QuantumRayTracing.Search {
     /// # Input
     /// ## count
     /// Number of indices searched.
+    /// ## phaseOnAllOnes
+    /// Applies a phase of −1 to the all-ones state of the qubits it is given: S₀ is this phase
+    /// on the flipped index register, so no |−⟩ ancilla is needed. The lookup search passes
+    /// `ApplyPhaseToAllOnes` with its auxiliaries; the gate-level search a Z on its flag qubit
+    /// (held in |1⟩) controlled by the register.
     /// ## index
     /// Index register of the search.
-    /// ## flag
-    /// A qubit in |1⟩; it stays in |1⟩. S₀ is a Z on it controlled by the flipped index register,
-    /// so no |−⟩ ancilla is needed.
-    operation ReflectAboutUniformSuperposition(count : Int, index : Qubit[], flag : Qubit) : Unit is Adj + Ctl {
+    operation ReflectAboutUniformSuperposition(count : Int, phaseOnAllOnes : Qubit[] => Unit is Adj + Ctl, index : Qubit[]) : Unit is Adj + Ctl {
         within {
             Adjoint PrepareUniformSuperposition(count, index);
             ApplyToEachCA(X, index);
         } apply {
-            Controlled Z(index, flag);
+            phaseOnAllOnes(index);
         }
     }
 }
