@@ -41,7 +41,7 @@ public sealed partial class JsonOutputTests : IDisposable
         Assert.Equal(scenePrinted["name"].Value, (string?)figures["scene"]);
         Assert.Equal(Long(scenePrinted["n"].Value), (long)figures["primitives"]!);
         Assert.Equal((Long(scenePrinted["width"].Value), Long(scenePrinted["height"].Value)), ((long)figures["width"]!, (long)figures["height"]!));
-        var modelled = Match(output, @"modelled per search: (?<index>\d+) index qubits \+ 1 flag, lookup table of (?<rows>\d+) rows x (?<bits>\d+) coordinate bits");
+        var modelled = Match(output, @"modelled per search: (?<index>\d+) index qubits \+ \d+ auxiliaries, lookup table of (?<rows>\d+) rows x (?<bits>\d+) coordinate bits");
         Assert.Equal(Long(modelled["index"].Value), (long)figures["indexQubits"]!);
         Assert.Equal(Long(modelled["rows"].Value), (long)figures["primitives"]!);
         Assert.Equal(Long(modelled["bits"].Value), (long)figures["coordinateBits"]!);

@@ -184,7 +184,9 @@ public static class NoiseReport
         var model = DepolarizingApproximation.Default;
         text.AppendLine("## Rendering under noise");
         text.AppendLine();
-        text.AppendLine($"The default pipeline of `render` (neighbours, exact termination, lattice of 4 levels, agreed-miss 0.4, 4 passes) at {size}x{size} on the");
+        var pipeline = NoisyRenderBenchmark.Defaults(size);
+        text.AppendLine($"The default pipeline of `render` (neighbours, exact termination, a lattice of {pipeline.LatticeLevels} levels from the image size, agreed-miss {F(pipeline.AgreedMiss, "0.###")}, up to {pipeline.Iterations} rounds,");
+        text.AppendLine($"and the misses the accuracy budget asks of rays no lattice neighbour vouches for) at {size}x{size} on the");
         text.AppendLine($"analytic engine under the global depolarizing approximation of depolarizing Pauli noise p per gate and qubit (harmful share {F(model.HarmfulShare, "0.###")}),");
         text.AppendLine("seed 1. Int/Ray in the conservative count (r + 1 per Grover run, every classical test counted); NRMSE against the classical");
         text.AppendLine("render of the same options (RMS of 8-bit channel differences over the reference's range); #Dpix pixels whose 8-bit colour differs.");

@@ -85,9 +85,7 @@ public static class NoisyRenderBenchmark
     public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes };
 
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
-    public static RenderOptions Defaults(int size) => new(size, size,
-        Neighbours: RenderDefaults.Neighbours, ShadowNeighbours: RenderDefaults.ShadowNeighbours, Stop: RenderDefaults.Stop,
-        LatticeLevels: RenderDefaults.LatticeLevels, AgreedMiss: RenderDefaults.AgreedMiss, PlannedMiss: RenderDefaults.PlannedMiss);
+    public static RenderOptions Defaults(int size) => RenderDefaults.Options(size, size);
 
     /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size.</summary>
     public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical) =>

@@ -47,7 +47,7 @@ public sealed record SoakSettings(
 
     /// <summary>The full soak: `render`'s defaults at <see cref="DefaultSize"/> (the gate engine at <see cref="DefaultGateSize"/>).</summary>
     public static SoakSettings Full(int workers) => new(AllEngines, DefaultSeeds, DefaultSize, DefaultGateSize,
-        RenderOptions.DefaultIterations, Passes.DirectPass.DefaultIterations, RenderDefaults.AreaSamples, RenderDefaults.Vpl,
+        RenderDefaults.Iterations, Passes.DirectPass.DefaultIterations, RenderDefaults.AreaSamples, RenderDefaults.Vpl,
         DefaultGateBudget, SimulatorsOnSmallestSceneOnly: false, workers);
 
     /// <summary>

@@ -79,7 +79,7 @@ public sealed class BenchFullStateCommand : Command
                     rows.Add(FullStateBenchmark.Run(name, scene, size, variant, workers, seed));
                 }
             }
-        var text = Markdown(rows, workers);
+        var text = Markdown(rows, workers, seed);
         BenchReportOptions.AppendFooter(text, versions);
         var body = text.ToString();
         Console.WriteLine(body);
@@ -87,14 +87,14 @@ public sealed class BenchFullStateCommand : Command
         return 0;
     }
 
-    private static StringBuilder Markdown(List<Row> rows, int workers)
+    private static StringBuilder Markdown(List<Row> rows, int workers, ulong seed)
     {
         static string F(double v, string format) => v.ToString(format, CultureInfo.InvariantCulture);
         static string Engine(Variant v) => v == Variant.Current ? "current" : "baseline";
         var text = new StringBuilder();
         text.AppendLine("# Performance: whole renders on the fullstate engine");
         text.AppendLine();
-        text.AppendLine($"`render --engine fullstate` with the default pipeline (seed 1, {workers} workers), timed from the first search to the image,");
+        text.AppendLine($"`render --engine fullstate` with the default pipeline (seed {seed}, {workers} workers), timed from the first search to the image,");
         text.AppendLine("on the current engine and on the baseline it replaced, rendered back to back:");
         text.AppendLine();
         text.AppendLine("- **baseline**: QSearch in lock-step rounds, one bridge call per round and worker, and the oracle and the reflection's S₀ built");

@@ -117,11 +117,7 @@ public sealed class EstimateFrameSweepCommand : Command
         var qpus = parse.GetValue(_qpus);
         var seed = parse.GetValue(_seed);
         FrameSettings Settings(Scene scene, int size) =>
-            new(scene, new RenderOptions(size, size, Seed: seed) with
-            {
-                Neighbours = RenderDefaults.Neighbours, ShadowNeighbours = RenderDefaults.ShadowNeighbours, Stop = RenderDefaults.Stop,
-                LatticeLevels = RenderDefaults.LatticeLevels, AgreedMiss = RenderDefaults.AgreedMiss, PlannedMiss = RenderDefaults.PlannedMiss,
-            }, new QSearchOptions(), construction, models, budget, qpus);
+            new(scene, RenderDefaults.Options(size, size, seed), new QSearchOptions(), construction, models, budget, qpus);
         var qornell64 = Qornell(64);
         var depthComplexity = SceneLoader.Parse(DepthComplexityScene.Build(64).ToJson(), "built-in depth-complexity-64");
 

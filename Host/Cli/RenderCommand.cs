@@ -113,7 +113,7 @@ public sealed class RenderCommand : Command
         if (sampled)
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
-        AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + 1 flag, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
+        AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + {SearchRegisters.For(geometry.Count).AuxiliaryQubits} auxiliaries, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
         if (kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic) AnsiConsole.WriteLine($"noise model: {EngineOptions.NoiseDescription(kind, noise)}");
         OracleRegisters? gateRegisters = null;
         if (kind == EngineKind.Gate)
@@ -173,12 +173,12 @@ public sealed class RenderCommand : Command
             convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),
             convergedReference is null ? null : ImageError.Between(reference.Image, convergedReference.Image),
             renderTime, referenceTime, convergedReference is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
-        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(kind, noise)}", figures, sampled);
+        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(kind, noise)}", figures, sampled, !noise.IsNoiseless);
         _json.Write(parse, figures, _engine);
         return 0;
     }
 
-    private static void Print(string engineName, RenderFigures figures, bool sampled)
+    private static void Print(string engineName, RenderFigures figures, bool sampled, bool noisy)
     {
         AnsiConsole.Write(MetricsTable(engineName, figures));
         var error = figures.Error;
@@ -186,7 +186,9 @@ public sealed class RenderCommand : Command
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
         AnsiConsole.WriteLine($"wrong pixels: expected {figures.Budget.ExpectedWrongPixels:0.0} ({figures.Budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); budget {AccuracyBudget.Target:P1}");
-        AnsiConsole.WriteLine("(expected: an expectation from each search path's miss rate and finds)");
+        AnsiConsole.WriteLine(noisy
+            ? "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)"
+            : "(expected: an expectation from each search path's miss rate and finds)");
         if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } noise })
             AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {noise.Nrmse:P2} (Monte Carlo noise alone)");
         var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";
