@@ -90,7 +90,7 @@ public class NoisySimulatorTests(FullStateFixture fixture)
     [Fact]
     public void QubitLossReadsZeroAndLowersTheMarkedShare()
     {
-        // Ideal P(marked) = 0.96 at N = 16, t = 1, r = 3; with 2 % loss per operation over ~170 locations most
+        // Ideal P(marked) = 0.96 at N = 16, t = 1, r = 3; with 2 % loss per operation over ~150 locations most
         // runs lose a qubit. Every readout still lies in the register, and the share falls far below the
         // ideal acceptance interval (false-failure 1e-8).
         var request = new GroverRequest(new MarkedSet(16, [3]), 3);

@@ -58,7 +58,7 @@ public static class NoiseReport
         text.AppendLine("the circuits the QDK extracts), for the gate-level oracle from the extracted circuit of one iteration. Per iteration that");
         text.AppendLine("is F = (1 − p)^(s · L_iteration), the F^r of the usual depolarizing form, with the preparation and measurement as one more factor.");
         text.AppendLine($"s is the share of errors that harm the run: {F(model.HarmfulShare, "0.###")} by default, since a Z error on a qubit in a basis state");
-        text.AppendLine("(the flag, every ancilla) changes nothing. Where that misses, s is fitted per circuit shape below.");
+        text.AppendLine("(every auxiliary; the gate-level oracle's flags and phase qubit) changes nothing. Where that misses, s is fitted per circuit shape below.");
         text.AppendLine();
         text.AppendLine($"**The check.** Each run measured {shots} times on the noisy full-state simulator (lookup oracle: fullstate engine; gate-level");
         text.AppendLine("oracle: gate engine); the observed share of marked outcomes against the model. Acceptance: |observed − model| ≤ δ + z·σ with");

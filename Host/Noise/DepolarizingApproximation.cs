@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Noise;
 /// and measurement, and s the share of Pauli errors that harm the run.
 /// </summary>
 /// <param name="HarmfulShare">
-/// s: by default 2/3, as a Z error on a qubit in a basis state (the flag, every ancilla) does nothing;
+/// s: by default 2/3, as a Z error on a qubit in a basis state (every auxiliary; the gate-level oracle's flags and phase qubit) does nothing;
 /// fitted per circuit shape against the noisy simulator in docs/noise.md (<c>qrt bench noise</c>).
 /// </param>
 public sealed record DepolarizingApproximation(double HarmfulShare = DepolarizingApproximation.DefaultHarmfulShare)
