@@ -60,6 +60,7 @@ public sealed class SearchCommand : Command
 
     private int Execute(ParseResult parse)
     {
+        using var bridges = _engine.StartBridges(parse);
         var count = parse.GetValue(_count);
         var root = new SeededRandom(parse.GetValue(_engine.Seed));
         var marked = parse.GetResult(_marked) is null
@@ -77,7 +78,7 @@ public sealed class SearchCommand : Command
 
         var clock = Stopwatch.StartNew();
         int rounds;
-        using (var engine = _engine.Create(parse))
+        using (var engine = _engine.Create(parse, bridges))
         {
             rounds = AnsiConsole.Profile.Capabilities.Interactive
                 ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
@@ -100,6 +101,7 @@ public sealed class SearchCommand : Command
         table.AddRow("Grover runs per search", Per(total.GroverRuns, searches.Length));
         table.AddRow("engine calls (rounds)", rounds.ToString());
         table.AddRow("wall time", $"{clock.Elapsed.TotalSeconds:0.000} s");
+        table.AddRow("ran on", Markup.Escape(EngineOptions.Where(parse.GetValue(_engine.Engine), bridges, parse.GetValue(_engine.Workers))));
         AnsiConsole.Write(table);
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (DESIGN.md §5).[/]");
         return 0;
