@@ -15,7 +15,7 @@ public sealed class BridgePool : IDisposable
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(workers, 1);
         Workers = workers;
-        Where = $"this machine, {workers} local bridge{(workers == 1 ? "" : "s")}";
+        _local = $"this machine, {workers} local bridge{(workers == 1 ? "" : "s")}";
         for (var w = 0; w < workers; w++)
         {
             var bridge = new QSharpBridge(options ?? new BridgeOptions());
@@ -28,11 +28,11 @@ public sealed class BridgePool : IDisposable
     /// <paramref name="workers"/> bridges whose requests <paramref name="remote"/> serves; the pool disposes
     /// <paramref name="owned"/> (the remote's connection) with itself.
     /// </summary>
-    public BridgePool(IBridgeTransport remote, int workers, string where, IDisposable? owned = null)
+    public BridgePool(IBridgeTransport remote, int workers, IDisposable? owned = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(workers, 1);
         Workers = workers;
-        Where = where;
+        _remote = remote;
         _owned = owned;
         for (var w = 0; w < workers; w++)
         {
@@ -42,10 +42,12 @@ public sealed class BridgePool : IDisposable
         }
     }
 
+    private readonly IBridgeTransport? _remote;
     private readonly IDisposable? _owned;
+    private readonly string _local = "";
 
     /// <summary>Where the requests run, for reports: local bridges or a cluster's workers.</summary>
-    public string Where { get; }
+    public string Where => _remote?.Where ?? _local;
 
     /// <summary>Default worker count: one per core.</summary>
     public static int DefaultWorkers => Environment.ProcessorCount;

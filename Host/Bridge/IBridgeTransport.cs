@@ -9,4 +9,7 @@ namespace QuantumRayTracing.Bridge;
 public interface IBridgeTransport
 {
     JsonNode Send(JsonObject request);
+
+    /// <summary>Where the requests run, for reports.</summary>
+    string Where { get; }
 }

@@ -194,6 +194,7 @@ public sealed class RenderCommand : Command
             ? [output, Sibling(output, "reference"), Sibling(output, "difference"), .. withConverged ? [Sibling(output, "converged")] : Array.Empty<string>()]
             : [output];
         ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
+        using var bridges = _engine.StartBridges(parse);
 
         var geometry = new SceneGeometry(scene);
         AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {LightSummary(scene)}, {width}x{height} pixels, {scene.Grid}");
@@ -212,7 +213,7 @@ public sealed class RenderCommand : Command
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits)))
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits), bridges))
         {
             try
             {
@@ -263,6 +264,7 @@ public sealed class RenderCommand : Command
         }
         var convergedWall = convergedReference is null ? "" : $", converged reference {convergedTime.TotalSeconds:0.00} s";
         AnsiConsole.WriteLine($"wall time: {engineName} {renderTime.TotalSeconds:0.00} s, classical reference {referenceTime.TotalSeconds:0.00} s{convergedWall}");
+        AnsiConsole.WriteLine($"{engineName} ran on {EngineOptions.Where(kind, bridges, parse.GetValue(_engine.Workers))}");
         AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (DESIGN.md §5); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");
         foreach (var (_, path) in images) AnsiConsole.WriteLine($"wrote {path}");
         return 0;

@@ -161,6 +161,7 @@ public sealed class SupersampleCommand : Command
         ImageFiles.EnsureWritable(outputs, inputPath is null ? [] : [inputPath]);
 
         var kind = parse.GetValue(_engine.Engine);
+        using var bridges = _engine.StartBridges(parse);
         var input = imageFile is not null
             ? LoadImage(imageFile, settings.Side, kind)
             : RenderScene(sceneFile, RenderCommand.ParseSize(parse.GetValue(_size)).Size, settings.Side, kind);
@@ -179,7 +180,7 @@ public sealed class SupersampleCommand : Command
         var clock = Stopwatch.StartNew();
         SupersampleResult result;
         var supersampling = new ConsoleProgress(EngineOptions.Name(kind));
-        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits)))
+        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), bridges))
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         supersampling.Finish();
         var elapsed = clock.Elapsed;
@@ -195,7 +196,7 @@ public sealed class SupersampleCommand : Command
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (result.Confidence is { } confidence)
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {confidence.Average():0.000}, lowest {confidence.Min():0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {elapsed.TotalSeconds:0.00} s on the {EngineOptions.Name(kind)} engine");
+        Console.WriteLine($"wall time: {elapsed.TotalSeconds:0.00} s on the {EngineOptions.Name(kind)} engine; ran on {EngineOptions.Where(kind, bridges, parse.GetValue(_engine.Workers))}");
         foreach (var (_, path) in images) Console.WriteLine($"wrote {path}");
         return 0;
     }
@@ -237,9 +238,10 @@ public sealed class SupersampleCommand : Command
             throw new UserError($"--engine fullstate simulates every pixel and takes about a second per output pixel: at most {MaxFullStatePixels} output pixels (e.g. 16x16), this input has {pixels}; use --engine analytic (the same distributions, seeded) or a smaller input");
     }
 
-    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null) => kind switch
+    /// <remarks>The fullstate engine runs on <paramref name="pool"/> when given, without stopping it, else on bridges of its own.</remarks>
+    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, Bridge.BridgePool? pool = null) => kind switch
     {
-        EngineKind.FullState => new FullStateSupersamplingEngine(new Bridge.BridgePool(workers), maxQubits: maxQubits),
+        EngineKind.FullState => new FullStateSupersamplingEngine(pool ?? new Bridge.BridgePool(workers), ownsPool: pool is null, maxQubits: maxQubits),
         _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine)),
     };
 

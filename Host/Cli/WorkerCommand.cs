@@ -86,7 +86,7 @@ public sealed class WorkerCommand : Command
         while (every > 0 && !lifetime.ApplicationStopping.WaitHandle.WaitOne(TimeSpan.FromSeconds(every)))
         {
             var now = (statistics.Busy, statistics.Served);
-            if (now != last) Console.WriteLine($"load: {now.Busy}/{bridges.Capacity} bridges busy, {now.Served} chunks served");
+            if (now != last) Console.WriteLine($"load: {now.Busy} chunks running or queued on {bridges.Capacity} bridges, {now.Served} served");
             last = now;
         }
         host.WaitForShutdown();

@@ -10,6 +10,6 @@ public static class ClusterBridges
     {
         if (configPath is null) return new BridgePool(localWorkers);
         var transport = ClusterTransport.Connect(ClusterConfig.Load(configPath));
-        return new BridgePool(transport, transport.Capacity, transport.Where, transport);
+        return new BridgePool(transport, transport.Capacity, transport);
     }
 }

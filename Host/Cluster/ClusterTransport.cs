@@ -36,7 +36,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
 
     /// <summary>Where requests run, for reports.</summary>
     public string Where =>
-        $"cluster '{_config.ClusterId}' ({_config.Clustering.ToString().ToLowerInvariant()} membership, {_config.Path}): {_workers.Length} worker{(_workers.Length == 1 ? "" : "s")}, {Capacity} bridges";
+        $"cluster '{_config.ClusterId}' ({_config.Clustering.ToString().ToLowerInvariant()} membership, {_config.Path}): {_workers.Length} worker{(_workers.Length == 1 ? "" : "s")}, {Capacity} bridges{(Retries > 0 ? $"; {Retries} chunk{(Retries == 1 ? "" : "s")} sent again after a worker failed to answer" : "")}";
 
     /// <summary>Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.</summary>
     public static ClusterTransport Connect(ClusterConfig config)
