@@ -49,7 +49,7 @@ public sealed class ClusterFaultTests
     public void DyingWorkerLosesNothing()
     {
         var (dying, good) = (new DyingExecutor(), new EchoExecutor());
-        using var cluster = new TestCluster(20, dying, good);
+        using var cluster = new TestCluster(5, dying, good);
         dying.Silo = cluster.Silos[0];
         using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
 

@@ -48,7 +48,9 @@ public sealed class TestCluster : IDisposable
         {
             try
             {
-                silo.StopAsync().WaitAsync(TimeSpan.FromSeconds(10)).GetAwaiter().GetResult();
+                // A hung request would hold a graceful stop: give it two seconds, then stop anyway.
+                using var hurry = new CancellationTokenSource(TimeSpan.FromSeconds(2));
+                silo.StopAsync(hurry.Token).WaitAsync(TimeSpan.FromSeconds(10)).GetAwaiter().GetResult();
             }
             catch (Exception e) when (e is TimeoutException or OperationCanceledException or ObjectDisposedException)
             {

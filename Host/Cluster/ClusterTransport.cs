@@ -20,6 +20,9 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     /// <summary>How long connecting to the cluster and asking the workers' sizes may take.</summary>
     public static readonly TimeSpan ConnectTimeout = TimeSpan.FromSeconds(30);
 
+    /// <summary>How long connecting keeps trying while the gateways refuse (workers still starting).</summary>
+    public static readonly TimeSpan ConnectRetries = TimeSpan.FromSeconds(5);
+
     private readonly IHost _host;
     private readonly ClusterConfig _config;
     private readonly Worker[] _workers;
@@ -41,11 +44,21 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     /// <summary>Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.</summary>
     public static ClusterTransport Connect(ClusterConfig config)
     {
+        Exception? refused = null;
+        var clock = System.Diagnostics.Stopwatch.StartNew();
         var builder = Host.CreateApplicationBuilder(new HostApplicationBuilderSettings { Args = [], ContentRootPath = AppContext.BaseDirectory });
         builder.Logging.ClearProviders();
         builder.UseOrleansClient(client =>
         {
             client.Configure<ClusterOptions>(o => (o.ClusterId, o.ServiceId) = (config.ClusterId, WorkerSilo.ServiceId));
+            // Workers still starting get a few seconds; then the first refusal is the answer.
+            client.UseConnectionRetryFilter(async (e, cancel) =>
+            {
+                refused = e;
+                if (clock.Elapsed > ConnectRetries) return false;
+                await Task.Delay(500, cancel);
+                return true;
+            });
             // The chunk time limit is ours (Send); Orleans' own limit only backs it up.
             client.Configure<ClientMessagingOptions>(o => o.ResponseTimeout = config.ChunkTimeout + TimeSpan.FromMinutes(1));
             if (config.Clustering == ClusteringKind.Localhost)
@@ -84,7 +97,8 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         catch (Exception e) when (e is not ClusterException and not OutOfMemoryException)
         {
             host.Dispose();
-            throw new ClusterException($"{config.Path}: no worker of cluster '{config.ClusterId}' reachable at {where} ({FirstLine(e.Message)}); start one with 'qrt worker --cluster {config.Path}'", e);
+            var why = e is TimeoutException && refused is not null ? refused : e;
+            throw new ClusterException($"{config.Path}: no worker of cluster '{config.ClusterId}' reachable at {where} ({FirstLine(why.Message)}); start one with 'qrt worker --cluster {config.Path}'", e);
         }
         catch
         {
