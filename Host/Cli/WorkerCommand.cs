@@ -75,7 +75,15 @@ public sealed class WorkerCommand : Command
         Console.WriteLine($"starting {bridges.Capacity} bridge{(bridges.Capacity == 1 ? "" : "s")} (loading the QDK, compiling the Q# sources)");
         var qsharp = bridges.Start();
         using var host = WorkerSilo.Build(config, siloPort, gatewayPort, bridges, parse.GetValue(_advertise));
-        host.Start();
+        try
+        {
+            host.Start();
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            var where = config.Clustering == ClusteringKind.Localhost ? $"silo port {siloPort}, gateway port {gatewayPort}" : $"Redis {config.Redis}";
+            throw new ClusterException($"{config.Path}: this worker could not join cluster '{config.ClusterId}' ({where}): {e.Message.Split('\n')[0].TrimEnd('\r')}", e);
+        }
         var silo = host.Services.GetRequiredService<ILocalSiloDetails>().SiloAddress;
         Console.WriteLine($"worker ready: cluster '{config.ClusterId}' ({config.Clustering.ToString().ToLowerInvariant()} membership, {config.Path}), silo {silo}, gateway port {gatewayPort}, {bridges.Capacity} bridges, qsharp-lang {qsharp}");
 

@@ -25,6 +25,7 @@ public static class WorkerSilo
         builder.Logging.AddSimpleConsole(o => o.SingleLine = true);
         builder.Logging.SetMinimumLevel(LogLevel.Warning);
         builder.Logging.AddFilter("Orleans.Runtime.Silo", LogLevel.Error); // its start-up notes on server GC
+        builder.Logging.AddFilter("Orleans.Runtime.Watchdog", LogLevel.Error); // its first check reads the time since boot as a stall
         builder.Services.AddSingleton(executor);
         builder.Services.AddSingleton<WorkerStatistics>();
         builder.UseOrleans(silo =>
