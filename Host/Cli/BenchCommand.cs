@@ -24,6 +24,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchSupersampleImagesCommand());
         Subcommands.Add(new BenchCapacityCommand());
         Subcommands.Add(new BenchSoakCommand());
+        Subcommands.Add(new BenchClusterCommand());
     }
 
     private sealed class GroverBenchCommand : Command
