@@ -45,7 +45,7 @@ public sealed class EngineOptions
 
     public readonly Option<FileInfo?> Cluster = new("--cluster")
     {
-        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges.",
+        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.",
         HelpName = "file",
     };
 

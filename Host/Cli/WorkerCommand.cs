@@ -15,7 +15,7 @@ public sealed class WorkerCommand : Command
 {
     private readonly Option<FileInfo> _cluster = new("--cluster")
     {
-        Description = "The cluster file (JSON: clusterId, clustering localhost|redis, primaryPort, gateways, redis, chunkTimeoutSeconds; docs/cluster.md).",
+        Description = "The cluster file (JSON: clusterId, clustering localhost|redis, primaryPort, gateways, redis, chunkTimeoutSeconds; docs/cluster.md). Default: none; a worker needs one.",
         HelpName = "file",
         Required = true,
     };
