@@ -3,33 +3,40 @@ using System.Net.Sockets;
 using System.Text.Json.Nodes;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
 using QuantumRayTracing.Cluster;
 
 namespace QuantumRayTracing.Tests.Cluster;
 
 /// <summary>
 /// Worker silos in this test process with localhost membership, on free ports, each over the executor a test
-/// gives it (real Node bridges, or one that hangs or dies), and the cluster file a render would use.
+/// gives it (real Node bridges, or one that hangs or dies), and the cluster file a render would use. The silos
+/// log nothing: the faults here are on purpose.
 /// </summary>
 public sealed class TestCluster : IDisposable
 {
     private readonly List<IHost> _silos = [];
     private readonly ScratchDirectory _scratch = new("qrt-cluster");
 
-    public TestCluster(double chunkTimeoutSeconds, params IChunkExecutor[] executors)
+    public TestCluster(double chunkTimeoutSeconds, params IChunkExecutor[] executors) : this(chunkTimeoutSeconds, null, executors) { }
+
+    /// <summary>Membership through the Redis server at <paramref name="redis"/> (host:port) when given, else localhost.</summary>
+    public TestCluster(double chunkTimeoutSeconds, string? redis, params IChunkExecutor[] executors)
     {
         var ports = FreePorts(1 + Math.Max(1, executors.Length) * 2);
         // Without workers the file still names a gateway port, one nothing listens on.
         var gateways = Enumerable.Range(0, Math.Max(1, executors.Length)).Select(k => ports[1 + 2 * k + 1]).ToArray();
         ConfigPath = Path.Combine(_scratch.Path, "cluster.json");
+        var membership = redis is null
+            ? $$""" "clustering": "localhost", "primaryPort": {{ports[1]}}, "gateways": [{{string.Join(", ", gateways)}}] """
+            : $$""" "clustering": "redis", "redis": "{{redis}}" """;
         File.WriteAllText(ConfigPath, $$"""
-            { "clusterId": "test-{{Guid.NewGuid():N}}", "clustering": "localhost", "primaryPort": {{ports[1]}},
-              "gateways": [{{string.Join(", ", gateways)}}], "chunkTimeoutSeconds": {{chunkTimeoutSeconds}} }
+            { "clusterId": "test-{{Guid.NewGuid():N}}", {{membership}}, "chunkTimeoutSeconds": {{chunkTimeoutSeconds}} }
             """);
         var config = ClusterConfig.Load(ConfigPath);
         for (var k = 0; k < executors.Length; k++)
         {
-            var silo = WorkerSilo.Build(config, ports[1 + 2 * k], ports[1 + 2 * k + 1], executors[k]);
+            var silo = WorkerSilo.Build(config, ports[1 + 2 * k], ports[1 + 2 * k + 1], executors[k], advertise: "127.0.0.1", logFrom: LogLevel.None);
             silo.Start();
             _silos.Add(silo);
         }
@@ -61,7 +68,7 @@ public sealed class TestCluster : IDisposable
         _scratch.Dispose();
     }
 
-    private static int[] FreePorts(int count)
+    public static int[] FreePorts(int count)
     {
         var listeners = Enumerable.Range(0, count).Select(_ => new TcpListener(IPAddress.Loopback, 0)).ToArray();
         foreach (var l in listeners) l.Start();

@@ -15,15 +15,16 @@ public static class WorkerSilo
 
     /// <summary>
     /// A silo serving chunks on <paramref name="executor"/>. <paramref name="advertise"/> is the address other
-    /// machines reach it at under Redis membership (default: this host name's address).
+    /// machines reach it at under Redis membership (default: this host name's address); Orleans logs from
+    /// <paramref name="logFrom"/> up.
     /// </summary>
-    public static IHost Build(ClusterConfig config, int siloPort, int gatewayPort, IChunkExecutor executor, string? advertise = null)
+    public static IHost Build(ClusterConfig config, int siloPort, int gatewayPort, IChunkExecutor executor, string? advertise = null, LogLevel logFrom = LogLevel.Warning)
     {
         var builder = Host.CreateApplicationBuilder(new HostApplicationBuilderSettings { Args = [], ContentRootPath = AppContext.BaseDirectory });
         // Orleans speaks up only for warnings; the worker prints its own readiness and load lines.
         builder.Logging.ClearProviders();
         builder.Logging.AddSimpleConsole(o => o.SingleLine = true);
-        builder.Logging.SetMinimumLevel(LogLevel.Warning);
+        builder.Logging.SetMinimumLevel(logFrom);
         builder.Logging.AddFilter("Orleans.Runtime.Silo", LogLevel.Error); // its start-up notes on server GC
         builder.Logging.AddFilter("Orleans.Runtime.Watchdog", LogLevel.Error); // its first check reads the time since boot as a stall
         builder.Services.AddSingleton(executor);
