@@ -17,12 +17,15 @@ public sealed record RenderMeasurement(RenderResult Result, ImageError Error, Ti
 {
     public double MillisecondsPerRay => WallTime.TotalMilliseconds / Math.Max(1, Result.Total.Rays);
 
-    /// <summary>Renders <paramref name="scene"/> on <paramref name="kind"/> and compares it with <paramref name="reference"/>.</summary>
-    public static RenderMeasurement Run(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch, ulong seed, int workers, RenderMeasurement? reference, Noise.NoiseModel? noise = null)
+    /// <summary>
+    /// Renders <paramref name="scene"/> on <paramref name="kind"/> and compares it with <paramref name="reference"/>;
+    /// a Q# engine runs on <paramref name="pool"/> when given (a cluster's bridges), else on bridges of its own.
+    /// </summary>
+    public static RenderMeasurement Run(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch, ulong seed, int workers, RenderMeasurement? reference, Noise.NoiseModel? noise = null, Bridge.BridgePool? pool = null)
     {
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(seed), workers, qsearch, noise: noise))
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(seed), workers, qsearch, pool: pool, noise: noise))
             result = SceneRenderer.Render(scene, search, options);
         var wall = clock.Elapsed;
         var error = reference is null ? default : ImageError.Between(result.Image, reference.Result.Image);

@@ -15,6 +15,7 @@ public sealed class BridgePool : IDisposable
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(workers, 1);
         Workers = workers;
+        _local = $"this machine, {workers} local bridge{(workers == 1 ? "" : "s")}";
         for (var w = 0; w < workers; w++)
         {
             var bridge = new QSharpBridge(options ?? new BridgeOptions());
@@ -22,6 +23,31 @@ public sealed class BridgePool : IDisposable
             _idle.Add(bridge);
         }
     }
+
+    /// <summary>
+    /// <paramref name="workers"/> bridges whose requests <paramref name="remote"/> serves; the pool disposes
+    /// <paramref name="owned"/> (the remote's connection) with itself.
+    /// </summary>
+    public BridgePool(IBridgeTransport remote, int workers, IDisposable? owned = null)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(workers, 1);
+        Workers = workers;
+        _remote = remote;
+        _owned = owned;
+        for (var w = 0; w < workers; w++)
+        {
+            var bridge = new QSharpBridge(remote);
+            _all.Add(bridge);
+            _idle.Add(bridge);
+        }
+    }
+
+    private readonly IBridgeTransport? _remote;
+    private readonly IDisposable? _owned;
+    private readonly string _local = "";
+
+    /// <summary>Where the requests run, for reports: local bridges or a cluster's workers.</summary>
+    public string Where => _remote?.Where ?? _local;
 
     /// <summary>Default worker count: one per core.</summary>
     public static int DefaultWorkers => Environment.ProcessorCount;
@@ -67,5 +93,6 @@ public sealed class BridgePool : IDisposable
     public void Dispose()
     {
         foreach (var bridge in _all) bridge.Dispose();
+        _owned?.Dispose();
     }
 }

@@ -23,6 +23,11 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
 
     public QSharpBridge() : this(new BridgeOptions()) { }
 
+    private readonly IBridgeTransport? _remote;
+
+    /// <summary>A bridge whose requests <paramref name="remote"/> serves (a cluster's workers) instead of a local Node process.</summary>
+    public QSharpBridge(IBridgeTransport remote) : this(new BridgeOptions()) => _remote = remote;
+
     private int _starts;
 
     /// <summary>How many times the bridge was started again after its process ended (crash, kill, time-out).</summary>
@@ -78,6 +83,7 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     /// <summary>Sends one request and returns its result; restarts a dead bridge and retries once.</summary>
     public JsonNode Send(JsonObject request, TimeSpan? timeout = null)
     {
+        if (_remote is not null) return _remote.Send(request);
         var limit = timeout ?? options.RequestTimeout;
         try
         {

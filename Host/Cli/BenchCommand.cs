@@ -27,6 +27,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchAccuracyCommand());
         Subcommands.Add(new BenchNoiseCommand());
         Subcommands.Add(new BenchFullStateCommand());
+        Subcommands.Add(new BenchClusterCommand());
     }
 
     private sealed class GroverBenchCommand : Command

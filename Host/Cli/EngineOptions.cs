@@ -57,6 +57,12 @@ public sealed class EngineOptions
         HelpName = "L",
     };
 
+    public readonly Option<FileInfo?> Cluster = new("--cluster")
+    {
+        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.",
+        HelpName = "file",
+    };
+
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
         _accepted = accepted;
@@ -104,6 +110,22 @@ public sealed class EngineOptions
         return new NoiseModel(px, py, pz, loss);
     }
 
+    /// <summary>
+    /// The cluster's bridges when <c>--cluster</c> names a file and the engine runs Q#; null otherwise (the
+    /// engine then starts local bridges of its own). Connecting fails with one line and exit code 3.
+    /// </summary>
+    public BridgePool? StartBridges(ParseResult parse) =>
+        parse.GetValue(Cluster) is { } file && parse.GetValue(Engine) is EngineKind.FullState or EngineKind.Gate
+            ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers))
+            : null;
+
+    /// <summary>Where a Q# engine's work runs, for reports: the cluster's workers or this machine.</summary>
+    public static string Where(EngineKind kind, BridgePool? bridges, int workers) => kind switch
+    {
+        EngineKind.FullState or EngineKind.Gate => bridges?.Where ?? $"this machine, {workers} local bridge{(workers == 1 ? "" : "s")}",
+        _ => "this machine (no Q# bridges)",
+    };
+
     public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();
 
     /// <summary>The noise model the engine runs under, as reports name it: the one place results take it from.</summary>
@@ -122,6 +144,7 @@ public sealed class EngineOptions
         command.Options.Add(Seed);
         command.Options.Add(Workers);
         if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate)) command.Options.Add(MaxQubits);
+        if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate)) command.Options.Add(Cluster);
         if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic))
         {
             command.Options.Add(Noise);
@@ -130,8 +153,9 @@ public sealed class EngineOptions
     }
 
     /// <summary>The Grover engine a parse result asks for; its randomness is the seed's engine stream.</summary>
-    public IGroverEngine Create(ParseResult parse) =>
-        Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits), noise: GetNoise(parse));
+    /// <remarks>A Q# engine runs on <paramref name="pool"/> (<see cref="StartBridges"/>) when given, without stopping it.</remarks>
+    public IGroverEngine Create(ParseResult parse, BridgePool? pool = null) =>
+        Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits), pool, GetNoise(parse));
 
     /// <summary>
     /// A Grover engine; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines start

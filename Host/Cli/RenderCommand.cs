@@ -105,6 +105,7 @@ public sealed class RenderCommand : Command
             : [output];
         ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
         _json.EnsureWritable(parse, sceneFile is null ? outputs : [.. outputs, sceneFile.FullName]);
+        using var bridges = _engine.StartBridges(parse);
 
         var noise = _engine.GetNoise(parse);
         EngineOptions.CheckNoise(kind, noise);
@@ -128,7 +129,7 @@ public sealed class RenderCommand : Command
         var progress = new ConsoleProgress(engineName);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits), noise: noise))
+        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits), bridges, noise: noise))
         {
             try
             {
@@ -173,6 +174,7 @@ public sealed class RenderCommand : Command
             convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),
             convergedReference is null ? null : ImageError.Between(reference.Image, convergedReference.Image),
             renderTime, referenceTime, convergedReference is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
+        AnsiConsole.WriteLine($"{engineName} ran on {EngineOptions.Where(kind, bridges, parse.GetValue(_engine.Workers))}");
         Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(kind, noise)}", figures, sampled, !noise.IsNoiseless);
         _json.Write(parse, figures, _engine);
         return 0;

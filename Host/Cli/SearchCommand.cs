@@ -65,6 +65,7 @@ public sealed class SearchCommand : Command
     private int Execute(ParseResult parse)
     {
         _json.EnsureWritable(parse, []);
+        using var bridges = _engine.StartBridges(parse);
         var count = parse.GetValue(_count);
         var root = new SeededRandom(parse.GetValue(_engine.Seed));
         var marked = parse.GetResult(_marked) is null
@@ -85,7 +86,7 @@ public sealed class SearchCommand : Command
 
         var clock = Stopwatch.StartNew();
         int rounds;
-        using (var engine = _engine.Create(parse))
+        using (var engine = _engine.Create(parse, bridges))
         {
             rounds = AnsiConsole.Profile.Capabilities.Interactive
                 ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
@@ -109,6 +110,7 @@ public sealed class SearchCommand : Command
         table.AddRow("engine calls (rounds)", N(figures.Rounds));
         table.AddRow("noise model", noise);
         table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
+        table.AddRow("ran on", Markup.Escape(EngineOptions.Where(parse.GetValue(_engine.Engine), bridges, parse.GetValue(_engine.Workers))));
         AnsiConsole.Write(table);
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
         _json.Write(parse, figures, _engine);

@@ -1,0 +1,92 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Cluster;
+using QuantumRayTracing.Tests.Cli;
+
+namespace QuantumRayTracing.Tests.Cluster;
+
+/// <summary>
+/// Workers that hang or die with a chunk in hand: the chunk goes to another worker within the chunk time limit,
+/// and every request gets exactly one answer, its own. The executors answer with the request's own expression,
+/// so a lost, doubled or swapped answer shows.
+/// </summary>
+public sealed class ClusterFaultTests
+{
+    private const int Requests = 40;
+
+    // Every request through the cluster's bridges; the answers, in request order.
+    private static string[] RunAll(BridgePool pool)
+    {
+        var answers = new string?[Requests];
+        var counts = new int[Requests];
+        pool.ForEach(Enumerable.Range(0, Requests).ToArray(), (k, bridge) =>
+        {
+            var shots = bridge.Run($"Request({k})");
+            Interlocked.Increment(ref counts[k]);
+            answers[k] = Assert.Single(shots);
+        });
+        Assert.All(counts, c => Assert.Equal(1, c));
+        return answers!;
+    }
+
+    [Fact]
+    public void HangingWorkerLosesNothing()
+    {
+        var (hanging, good) = (new HangingExecutor(), new EchoExecutor());
+        using var cluster = new TestCluster(5, hanging, good);
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        Assert.Equal(hanging.Capacity + good.Capacity, pool.Workers);
+
+        var answers = RunAll(pool);
+
+        Assert.Equal(Enumerable.Range(0, Requests).Select(k => $"Request({k})"), answers);
+        Assert.True(hanging.Calls >= 1, "the hanging worker was never given a chunk, so the test proved nothing");
+        Assert.Equal(Requests, good.Calls); // each request answered once, by the good worker
+        Assert.Contains("sent again after a worker failed to answer", pool.Where);
+    }
+
+    [Fact]
+    public void DyingWorkerLosesNothing()
+    {
+        var (dying, good) = (new DyingExecutor(), new EchoExecutor());
+        using var cluster = new TestCluster(5, dying, good);
+        dying.Silo = cluster.Silos[0];
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+
+        var answers = RunAll(pool);
+
+        Assert.Equal(Enumerable.Range(0, Requests).Select(k => $"Request({k})"), answers);
+        Assert.True(dying.Calls >= 1, "the dying worker was never given a chunk, so the test proved nothing");
+        Assert.Equal(Requests, good.Calls);
+    }
+
+    [Fact]
+    public void EveryWorkerHangingIsAClusterError()
+    {
+        using var cluster = new TestCluster(0.5, new HangingExecutor());
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        var error = Assert.Throws<ClusterException>(() => pool.ForEach([1], (_, bridge) => bridge.Run("Request(1)")));
+        Assert.Contains("no answer within the chunk time limit of 0.5 s", error.Message);
+    }
+
+    [Fact]
+    public void NoReachableWorkerIsExitCodeThreeWithOneLine()
+    {
+        using var cluster = new TestCluster(5); // the file only: no worker started
+        var (code, error) = ConsoleCapture.Run("search", "-n", "8", "-s", "2", "--cluster", cluster.ConfigPath);
+        Assert.Equal(CommandLine.QuantumFailure, code);
+        var first = error.Split('\n')[0];
+        Assert.StartsWith($"error: {cluster.ConfigPath}: no worker of cluster", first);
+        Assert.Contains("qrt worker --cluster", first);
+    }
+
+    [Fact]
+    public void BadClusterFileIsBadInput()
+    {
+        using var cluster = new TestCluster(5);
+        File.WriteAllText(cluster.ConfigPath, """{ "clustering": "mesh" }""");
+        var (code, error) = ConsoleCapture.Run("search", "-n", "8", "-s", "2", "--cluster", cluster.ConfigPath);
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal($"error: {cluster.ConfigPath}: field 'clustering' is 'mesh'; choose localhost or redis", error.Trim());
+    }
+}

@@ -1,0 +1,132 @@
+using System.Net;
+using System.Net.Sockets;
+using System.Text.Json.Nodes;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using QuantumRayTracing.Cluster;
+
+namespace QuantumRayTracing.Tests.Cluster;
+
+/// <summary>
+/// Worker silos in this test process with localhost membership, on free ports, each over the executor a test
+/// gives it (real Node bridges, or one that hangs or dies), and the cluster file a render would use. The silos
+/// log nothing: the faults here are on purpose.
+/// </summary>
+public sealed class TestCluster : IDisposable
+{
+    private readonly List<IHost> _silos = [];
+    private readonly ScratchDirectory _scratch = new("qrt-cluster");
+
+    public TestCluster(double chunkTimeoutSeconds, params IChunkExecutor[] executors) : this(chunkTimeoutSeconds, null, executors) { }
+
+    /// <summary>Membership through the Redis server at <paramref name="redis"/> (host:port) when given, else localhost.</summary>
+    public TestCluster(double chunkTimeoutSeconds, string? redis, params IChunkExecutor[] executors)
+    {
+        var ports = FreePorts(1 + Math.Max(1, executors.Length) * 2);
+        // Without workers the file still names a gateway port, one nothing listens on.
+        var gateways = Enumerable.Range(0, Math.Max(1, executors.Length)).Select(k => ports[1 + 2 * k + 1]).ToArray();
+        ConfigPath = Path.Combine(_scratch.Path, "cluster.json");
+        var membership = redis is null
+            ? $$""" "clustering": "localhost", "primaryPort": {{ports[1]}}, "gateways": [{{string.Join(", ", gateways)}}] """
+            : $$""" "clustering": "redis", "redis": "{{redis}}" """;
+        File.WriteAllText(ConfigPath, $$"""
+            { "clusterId": "test-{{Guid.NewGuid():N}}", {{membership}}, "chunkTimeoutSeconds": {{chunkTimeoutSeconds}} }
+            """);
+        var config = ClusterConfig.Load(ConfigPath);
+        for (var k = 0; k < executors.Length; k++)
+        {
+            var silo = WorkerSilo.Build(config, ports[1 + 2 * k], ports[1 + 2 * k + 1], executors[k], advertise: "127.0.0.1", logFrom: LogLevel.None);
+            silo.Start();
+            _silos.Add(silo);
+        }
+    }
+
+    public string ConfigPath { get; }
+
+    public IReadOnlyList<IHost> Silos => _silos;
+
+    /// <summary>Chunks a silo's grain has finished (answered or failed).</summary>
+    public long Served(int silo) => _silos[silo].Services.GetRequiredService<WorkerStatistics>().Served;
+
+    public void Dispose()
+    {
+        foreach (var silo in _silos)
+        {
+            try
+            {
+                // A hung request would hold a graceful stop: give it two seconds, then stop anyway.
+                using var hurry = new CancellationTokenSource(TimeSpan.FromSeconds(2));
+                silo.StopAsync(hurry.Token).WaitAsync(TimeSpan.FromSeconds(10)).GetAwaiter().GetResult();
+            }
+            catch (Exception e) when (e is TimeoutException or OperationCanceledException or ObjectDisposedException)
+            {
+                // A silo a test stopped on purpose, or one still busy with a hung request.
+            }
+            silo.Dispose();
+        }
+        _scratch.Dispose();
+    }
+
+    public static int[] FreePorts(int count)
+    {
+        var listeners = Enumerable.Range(0, count).Select(_ => new TcpListener(IPAddress.Loopback, 0)).ToArray();
+        foreach (var l in listeners) l.Start();
+        var ports = listeners.Select(l => ((IPEndPoint)l.LocalEndpoint).Port).ToArray();
+        foreach (var l in listeners) l.Stop();
+        return ports;
+    }
+}
+
+/// <summary>Answers every run request with its own expression, as a one-shot result: which request got which answer is visible.</summary>
+public sealed class EchoExecutor : IChunkExecutor
+{
+    private int _calls;
+
+    public int Calls => Volatile.Read(ref _calls);
+
+    public int Capacity => 2;
+
+    public async Task<JsonNode> Execute(JsonObject request)
+    {
+        Interlocked.Increment(ref _calls);
+        await Task.Delay(20);
+        return new JsonArray(request["expr"]!.GetValue<string>());
+    }
+}
+
+/// <summary>Takes every request and never answers: a worker whose bridges hang.</summary>
+public sealed class HangingExecutor : IChunkExecutor
+{
+    private int _calls;
+
+    public int Calls => Volatile.Read(ref _calls);
+
+    public int Capacity => 2;
+
+    public async Task<JsonNode> Execute(JsonObject request)
+    {
+        Interlocked.Increment(ref _calls);
+        await Task.Delay(Timeout.Infinite);
+        throw new InvalidOperationException("unreachable");
+    }
+}
+
+/// <summary>On its first request stops the silo it runs in, with the request in hand: a worker that dies mid-chunk.</summary>
+public sealed class DyingExecutor : IChunkExecutor
+{
+    private int _calls;
+
+    public IHost? Silo { get; set; }
+
+    public int Calls => Volatile.Read(ref _calls);
+
+    public int Capacity => 2;
+
+    public async Task<JsonNode> Execute(JsonObject request)
+    {
+        if (Interlocked.Increment(ref _calls) == 1) _ = Task.Run(() => Silo!.StopAsync());
+        await Task.Delay(Timeout.Infinite);
+        throw new InvalidOperationException("unreachable");
+    }
+}

@@ -1,0 +1,183 @@
+using System.Text.Json.Nodes;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using Orleans.Configuration;
+using Orleans.Runtime;
+using QuantumRayTracing.Bridge;
+using StackExchange.Redis;
+
+namespace QuantumRayTracing.Cluster;
+
+/// <summary>
+/// Sends bridge requests to a cluster's workers: each request goes to the least loaded worker; a worker that
+/// fails to answer (it died, hangs past the chunk time limit, cannot be reached) is dropped and the request
+/// goes to another, so every request gets exactly one answer or the render stops with a <see cref="ClusterException"/>.
+/// What a worker's bridge reports (a Q# failure, a rejected request) is raised as the local bridge raises it.
+/// </summary>
+public sealed class ClusterTransport : IBridgeTransport, IDisposable
+{
+    /// <summary>How long connecting to the cluster and asking the workers' sizes may take.</summary>
+    public static readonly TimeSpan ConnectTimeout = TimeSpan.FromSeconds(30);
+
+    /// <summary>How long connecting keeps trying while the gateways refuse (workers still starting).</summary>
+    public static readonly TimeSpan ConnectRetries = TimeSpan.FromSeconds(5);
+
+    private readonly IHost _host;
+    private readonly ClusterConfig _config;
+    private readonly Worker[] _workers;
+    private readonly Lock _gate = new();
+    private int _retries;
+
+    private ClusterTransport(IHost host, ClusterConfig config, Worker[] workers) => (_host, _config, _workers) = (host, config, workers);
+
+    /// <summary>Bridges over all workers.</summary>
+    public int Capacity => _workers.Sum(w => w.Capacity);
+
+    /// <summary>Requests sent again to another worker after one failed to answer.</summary>
+    public int Retries => Volatile.Read(ref _retries);
+
+    /// <summary>Where requests run, for reports.</summary>
+    public string Where =>
+        $"cluster '{_config.ClusterId}' ({_config.Clustering.ToString().ToLowerInvariant()} membership, {_config.Path}): {_workers.Length} worker{(_workers.Length == 1 ? "" : "s")}, {Capacity} bridges{(Retries > 0 ? $"; {Retries} chunk{(Retries == 1 ? "" : "s")} sent again after a worker failed to answer" : "")}";
+
+    /// <summary>Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.</summary>
+    public static ClusterTransport Connect(ClusterConfig config)
+    {
+        Exception? refused = null;
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        var builder = Host.CreateApplicationBuilder(new HostApplicationBuilderSettings { Args = [], ContentRootPath = AppContext.BaseDirectory });
+        builder.Logging.ClearProviders();
+        builder.UseOrleansClient(client =>
+        {
+            client.Configure<ClusterOptions>(o => (o.ClusterId, o.ServiceId) = (config.ClusterId, WorkerSilo.ServiceId));
+            // Workers still starting get a few seconds; then the first refusal is the answer.
+            client.UseConnectionRetryFilter(async (e, cancel) =>
+            {
+                refused = e;
+                if (clock.Elapsed > ConnectRetries) return false;
+                await Task.Delay(500, cancel);
+                return true;
+            });
+            // The chunk time limit is ours (Send); Orleans' own limit only backs it up.
+            client.Configure<ClientMessagingOptions>(o => o.ResponseTimeout = config.ChunkTimeout + TimeSpan.FromMinutes(1));
+            if (config.Clustering == ClusteringKind.Localhost)
+                client.UseLocalhostClustering(config.Gateways.ToArray(), WorkerSilo.ServiceId, config.ClusterId);
+            else
+                client.UseRedisClustering(o => o.ConfigurationOptions = ConfigurationOptions.Parse(config.Redis!));
+        });
+        var host = builder.Build();
+        var where = config.Clustering == ClusteringKind.Localhost
+            ? $"gateway ports {string.Join(", ", config.Gateways)}"
+            : $"Redis {config.Redis}";
+        try
+        {
+            host.StartAsync().WaitAsync(ConnectTimeout).GetAwaiter().GetResult();
+            var client = host.Services.GetRequiredService<IClusterClient>();
+            var silos = client.GetGrain<IManagementGrain>(0).GetHosts(onlyActive: true).WaitAsync(ConnectTimeout).GetAwaiter().GetResult();
+            var workers = silos.Keys
+                .Select(silo => client.GetGrain<IChunkWorker>(silo.ToParsableString()))
+                .Select(grain => (grain, load: grain.Load().WaitAsync(ConnectTimeout)))
+                .ToArray();
+            var reachable = new List<Worker>();
+            foreach (var (grain, load) in workers)
+            {
+                try
+                {
+                    reachable.Add(new Worker(grain, load.GetAwaiter().GetResult().Bridges));
+                }
+                catch (Exception e) when (e is not OutOfMemoryException)
+                {
+                    // A member that does not answer is left out; the others serve the render.
+                }
+            }
+            if (reachable.Count == 0) throw new ClusterException($"{config.Path}: the cluster '{config.ClusterId}' at {where} has no worker that answers");
+            return new ClusterTransport(host, config, [.. reachable]);
+        }
+        catch (Exception e) when (e is not ClusterException and not OutOfMemoryException)
+        {
+            host.Dispose();
+            var why = e is TimeoutException && refused is not null ? refused : e;
+            throw new ClusterException($"{config.Path}: no worker of cluster '{config.ClusterId}' reachable at {where} ({FirstLine(why.Message)}); start one with 'qrt worker --cluster {config.Path}'", e);
+        }
+        catch
+        {
+            host.Dispose();
+            throw;
+        }
+    }
+
+    public JsonNode Send(JsonObject request)
+    {
+        var text = request.ToJsonString();
+        var tried = new HashSet<Worker>();
+        Exception? last = null;
+        while (Pick(tried) is { } worker)
+        {
+            ChunkReply reply;
+            try
+            {
+                reply = worker.Grain.Run(text).WaitAsync(_config.ChunkTimeout).GetAwaiter().GetResult();
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // Died, hung or unreachable: its answer, if one ever comes, is dropped with the task.
+                last = e;
+                worker.Failed = true;
+                Interlocked.Increment(ref _retries);
+                continue;
+            }
+            finally
+            {
+                lock (_gate) worker.Busy--;
+            }
+            return Unpack(reply);
+        }
+        var why = last is TimeoutException ? $"no answer within the chunk time limit of {_config.ChunkTimeout.TotalSeconds:0.###} s" : FirstLine(last?.Message ?? "no worker left");
+        throw new ClusterException($"{_config.Path}: no worker of cluster '{_config.ClusterId}' could run a chunk ({why}); {_workers.Count(w => w.Failed)} of {_workers.Length} workers failed", last);
+    }
+
+    /// <summary>The least busy worker, relative to its bridges, that has not failed and has not had this request.</summary>
+    private Worker? Pick(HashSet<Worker> tried)
+    {
+        lock (_gate)
+        {
+            var worker = _workers.Where(w => !w.Failed && !tried.Contains(w)).MinBy(w => (double)w.Busy / w.Capacity);
+            if (worker is null) return null;
+            worker.Busy++;
+            tried.Add(worker);
+            return worker;
+        }
+    }
+
+    private static JsonNode Unpack(ChunkReply reply) => reply.ErrorKind switch
+    {
+        null => JsonNode.Parse(reply.Result ?? throw new BridgeException("a worker replied without a result"))!,
+        "qsharp" => throw new QSharpException(reply.Message ?? "(no message)", reply.Code, reply.Location, reply.QSharpStack),
+        "request" => throw new BridgeRequestException(reply.Message ?? "(no message)"),
+        _ => throw new BridgeException(reply.Message ?? "(no message)"),
+    };
+
+    private static string FirstLine(string message) => message.Split('\n', 2)[0].TrimEnd('\r');
+
+    public void Dispose()
+    {
+        try
+        {
+            _host.StopAsync().WaitAsync(TimeSpan.FromSeconds(10)).GetAwaiter().GetResult();
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            // Leaving a cluster that is gone: nothing to tell it.
+        }
+        _host.Dispose();
+    }
+
+    private sealed class Worker(IChunkWorker grain, int capacity)
+    {
+        public IChunkWorker Grain { get; } = grain;
+        public int Capacity { get; } = Math.Max(1, capacity);
+        public int Busy { get; set; }
+        public bool Failed { get; set; }
+    }
+}
