@@ -4,13 +4,17 @@ using ScottPlot;
 namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>
-/// The plots of docs/noise.md, drawn with ScottPlot and written through <see cref="PngWriter"/> (so a later
-/// run may replace them). Every plot names its noise model in its title and the machine in a note.
+/// The plots of docs/noise.md: the line plots through <see cref="PlotImage"/> like every other plot, the device
+/// histograms (bars, which a <see cref="PlotSpec"/> does not describe) with ScottPlot directly. Every plot names its
+/// noise model in its title; the report beside them names the machine.
 /// </summary>
 public static class NoisePlots
 {
     private const int Width = 900;
     private const int Height = 520;
+
+    // Wider than the histograms: the legend sits beside the data and the titles are long.
+    private const int LinePlotWidth = 1100;
 
     /// <summary>The device experiment's histograms: one group of bars per measured index, one bar per error rate.</summary>
     public static RgbImage Histograms(IReadOnlyList<NoiseBenchmark.DeviceRun> runs, string title, string note)
@@ -40,29 +44,17 @@ public static class NoisePlots
         return Render(plot);
     }
 
-    /// <summary>A log-x line plot: each series a list of (x, y) points; x must be positive.</summary>
-    public static RgbImage LogX(string title, string xLabel, string yLabel, string note, IReadOnlyList<(string Name, IReadOnlyList<(double X, double Y)> Points)> series, double? horizontal = null, string? horizontalLabel = null)
+    /// <summary>
+    /// A line plot against the per-gate error on a log axis: each series a list of (p, y) points with p > 0, and
+    /// optionally a labelled horizontal reference line across them.
+    /// </summary>
+    public static RgbImage LogX(string title, string xLabel, string yLabel, IReadOnlyList<(string Name, IReadOnlyList<(double X, double Y)> Points)> series, double? horizontal = null, string? horizontalLabel = null)
     {
-        var plot = new Plot();
-        var palette = new ScottPlot.Palettes.Category10();
-        for (var k = 0; k < series.Count; k++)
-        {
-            var (name, points) = series[k];
-            var scatter = plot.Add.Scatter(points.Select(p => Math.Log10(p.X)).ToArray(), points.Select(p => p.Y).ToArray(), palette.GetColor(k));
-            scatter.LegendText = name;
-            scatter.MarkerSize = 7;
-        }
-        if (horizontal is { } y)
-        {
-            var line = plot.Add.HorizontalLine(y, pattern: LinePattern.Dashed, color: Colors.Gray);
-            line.LegendText = horizontalLabel ?? "";
-        }
-        var xs = series.SelectMany(s => s.Points).Select(p => Math.Log10(p.X)).ToArray();
-        var ticks = Enumerable.Range((int)Math.Floor(xs.Min()), (int)Math.Ceiling(xs.Max()) - (int)Math.Floor(xs.Min()) + 1).Select(e => (double)e).ToArray();
-        plot.Axes.Bottom.SetTicks(ticks, ticks.Select(e => $"1e{e:0}").ToArray());
-        Finish(plot, title, xLabel, yLabel, note);
-        plot.ShowLegend(Alignment.UpperRight);
-        return Render(plot);
+        var lines = series.Select(s => new PlotSeries(s.Name, s.Points)).ToList();
+        var xs = series.SelectMany(s => s.Points).Select(p => p.X).ToArray();
+        if (horizontal is { } y && xs.Length > 0)
+            lines.Add(new PlotSeries(horizontalLabel ?? "", [(xs.Min(), y), (xs.Max(), y)], Markers: false));
+        return PlotImage.Render(new PlotSpec(title, xLabel, yLabel, AxisScale.Log10, AxisScale.Linear, lines, LinePlotWidth, Height));
     }
 
     private static void Finish(Plot plot, string title, string xLabel, string yLabel, string note)
@@ -74,5 +66,5 @@ public static class NoisePlots
         annotation.LabelFontSize = 10;
     }
 
-    private static RgbImage Render(Plot plot) => ImageReader.Decode(plot.GetImageBytes(Width, Height, ImageFormat.Png), "plot");
+    private static RgbImage Render(Plot plot) => PlotImage.Render(plot, Width, Height);
 }

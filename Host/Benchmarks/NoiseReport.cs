@@ -109,7 +109,7 @@ public static class NoiseReport
         var series = rows.GroupBy(r => $"{r.Oracle} N={r.Count} t={r.Marked} r={r.Iterations}")
             .Select(g => (g.Key, (IReadOnlyList<(double, double)>)g.Select(r => (r.Noise.PerGate, r.Observed - r.Predicted(model))).ToArray()))
             .ToArray();
-        text.AppendLine(plot("model-check", NoisePlots.LogX("Observed - model P(marked), depolarizing Pauli noise p per gate (s = 2/3)", "per-gate error p", "observed - model", machine, series, 0, "model"),
+        text.AppendLine(plot("model-check", NoisePlots.LogX("Observed - model P(marked), depolarizing Pauli noise p per gate (s = 2/3)", "per-gate error p", "observed - model", series, 0, "model"),
             "Gap between the noisy simulator and the depolarizing approximation against the per-gate error"));
         text.AppendLine();
     }
@@ -156,7 +156,7 @@ public static class NoiseReport
             "Histograms of the device experiment's measured index at each per-gate error rate"));
         text.AppendLine();
         var points = runs.Where(r => r.PerGate > 0).Select(r => (r.PerGate, r.DistanceFromUniform)).ToArray();
-        text.AppendLine(plot("device-distance", NoisePlots.LogX($"Device experiment: TVD from uniform, {shots} shots, depolarizing Pauli noise", "per-gate error p", "total variation distance from uniform", machine,
+        text.AppendLine(plot("device-distance", NoisePlots.LogX($"Device experiment: TVD from uniform, {shots} shots, depolarizing Pauli noise", "per-gate error p", "total variation distance from uniform",
             [("gate-level oracle search, N = 4", points)], floor, $"uniform source, {shots} shots"),
             "Total variation distance from uniform against the per-gate error"));
         text.AppendLine();
@@ -226,13 +226,13 @@ public static class NoiseReport
             text.AppendLine("- (a) quantum loses to classical brute force in Int/Ray " + (a is { } x ? $"at p ≈ {Rate(x)} per gate;" : $"at no rate up to p = {highest} (its Int/Ray stays below {F(classicalPerRay, "0")});"));
             text.AppendLine("- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y ? $"at p ≈ {Rate(y)} per gate." : $"at no rate up to p = {highest}."));
             text.AppendLine();
-            text.AppendLine(plot($"render-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: NRMSE against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "NRMSE (%)", machine,
+            text.AppendLine(plot($"render-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: NRMSE against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "NRMSE (%)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Error.Nrmse * 100)).ToArray()),
                  ("randomized at equal Int/Ray", sweep.Quantum.Where(q => q.PerGate > 0 && sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is not null)
                     .Select(q => (q.PerGate, sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative)!.Value * 100)).ToArray())]),
                 $"{sweep.Scene}: NRMSE against the per-gate error"));
             text.AppendLine();
-            text.AppendLine(plot($"int-per-ray-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: Int/Ray against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "Int/Ray (conservative)", machine,
+            text.AppendLine(plot($"int-per-ray-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: Int/Ray against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "Int/Ray (conservative)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Result.Total.PerRayConservative)).ToArray())],
                 classicalPerRay, "classical brute force"),
                 $"{sweep.Scene}: Int/Ray against the per-gate error"));

@@ -31,9 +31,15 @@ public static class PlotImage
     {
         ArgumentNullException.ThrowIfNull(spec);
         using var plot = Build(spec);
-        var (surface, info) = SkiaPixels.Surface(spec.Width, spec.Height);
+        return Render(plot, spec.Width, spec.Height);
+    }
+
+    /// <summary>Draws a ScottPlot plot built elsewhere (a chart a <see cref="PlotSpec"/> cannot describe, such as bars).</summary>
+    internal static RgbImage Render(Plot plot, int width, int height)
+    {
+        var (surface, info) = SkiaPixels.Surface(width, height);
         using var _ = surface;
-        plot.Render(surface.Canvas, spec.Width, spec.Height);
+        plot.Render(surface.Canvas, width, height);
         return SkiaPixels.ToImage(surface, info);
     }
 

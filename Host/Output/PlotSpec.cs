@@ -1,7 +1,7 @@
 namespace QuantumRayTracing.Output;
 
 /// <summary>
-/// Everything <see cref="PlotImage.Render"/> draws: title, axis labels and scales, the series (coloured and
+/// Everything <see cref="PlotImage.Render(PlotSpec)"/> draws: title, axis labels and scales, the series (coloured and
 /// marked in order) and the image size in pixels.
 /// </summary>
 public sealed record PlotSpec(string Title, string XLabel, string YLabel, AxisScale XScale, AxisScale YScale,
