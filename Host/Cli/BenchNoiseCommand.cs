@@ -1,8 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
-using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Cli;
 
@@ -13,6 +11,8 @@ namespace QuantumRayTracing.Cli;
 public sealed class BenchNoiseCommand : Command
 {
     private const string CommandText = "qrt bench noise";
+
+    private readonly BenchReportOptions _report = new(CommandText, "docs/noise.md");
 
     private readonly Option<int> _shots = new("--shots")
     {
@@ -45,28 +45,11 @@ public sealed class BenchNoiseCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
-    private readonly Option<DirectoryInfo> _scenes = new("--scenes")
-    {
-        Description = "Directory holding qornell-64.json and depth-complexity-64.json.",
-        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
-    };
-
     private readonly Option<string[]> _parts = new("--parts")
     {
         Description = "Which parts to run and report: model (the approximation against the simulator), device (fig. 15), render (rendering under noise).",
         DefaultValueFactory = _ => NoiseBenchSettings.AllParts,
         AllowMultipleArgumentsPerToken = true,
-    };
-
-    private readonly Option<int> _workers = new("--workers")
-    {
-        Description = "Node bridge processes. Default: the core count.",
-        DefaultValueFactory = _ => BridgePool.DefaultWorkers,
-    };
-
-    private readonly Option<FileInfo?> _output = new("--output", "-o")
-    {
-        Description = "Write the Markdown report here (e.g. docs/noise.md), with its PNG plots beside it as <report>-<name>.png. It replaces only files this command wrote before. Default: the report is printed only.",
     };
 
     public BenchNoiseCommand() : base("noise", "Hardware noise: the analytic noise model against the noisy simulator, the paper's device experiment (fig. 15), rendering under noise; -o docs/noise.md.")
@@ -76,10 +59,8 @@ public sealed class BenchNoiseCommand : Command
         Options.Add(_size);
         Options.Add(_confirmSize);
         Options.Add(_confirmRates);
-        Options.Add(_scenes);
         Options.Add(_parts);
-        Options.Add(_workers);
-        Options.Add(_output);
+        _report.AddTo(this, seed: false);
         _size.Between(1, 1024);
         _confirmSize.Between(0, 128);
         _confirmRates.Validators.Add(r =>
@@ -93,21 +74,19 @@ public sealed class BenchNoiseCommand : Command
         });
         _shots.Between(100, 1_000_000);
         _deviceShots.Between(16, 1_000_000);
-        _workers.AtLeast(1);
         SetAction(Execute);
     }
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_output);
-        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandText));
-        report.EnsureWritable();
+        var output = parse.GetValue(_report.Output);
+        var report = _report.Report(parse);
         var parts = parse.GetValue(_parts)!.ToHashSet();
         var scenes = parts.Contains("render")
-            ? NoiseBenchSettings.RenderScenes.Select(n => (n, SceneLoader.Load(Path.Combine(parse.GetValue(_scenes)!.FullName, n + ".json")))).ToArray()
+            ? NoiseBenchSettings.RenderScenes.Select(n => (n, _report.Load(parse, n))).ToArray()
             : [];
         var settings = new NoiseBenchSettings(parts, parse.GetValue(_shots), parse.GetValue(_deviceShots), scenes, parse.GetValue(_size),
-            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_workers));
+            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers));
         string PlotPath(string name) => Path.Combine(output?.DirectoryName ?? ".", $"{Path.GetFileNameWithoutExtension(output?.Name ?? "noise")}-{name}.png");
         if (output is not null) ImageFiles.EnsureWritable(settings.PlotNames().Select(PlotPath).ToArray(), []);
 
