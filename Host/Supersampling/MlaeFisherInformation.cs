@@ -1,0 +1,86 @@
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// What the Fisher information of MLAE's flips predicts about its error under the depolarized coin of
+/// <see cref="NoiseAwareMaximumLikelihoodEstimator"/>: P(head) = (1 − a·cos(2kθ)) / 2 with k = 2m+1 and a = e^(−γm).
+/// A level of n flips adds n·∇p ∇pᵀ / (p(1 − p)) to the information about (θ, γ), with ∂p/∂θ = a·k·sin(2kθ) and
+/// ∂p/∂γ = m·a·cos(2kθ) / 2. The Cramér–Rao bound on θ is the inverse's θθ entry (γ estimated jointly) or 1 / I_θθ
+/// (γ known); the mean f = sin²θ then has σ_f = sin(2θ)·σ_θ, and a normal error of σ_f has mean absolute value √(2/π)·σ_f.
+/// </summary>
+/// <remarks>
+/// Under noise the information saturates: once a^2 (2m+1)^2 stops growing with m, deeper levels add flips' worth of
+/// information at a higher price, so at a fixed schedule the error stops falling as 1/queries. It also degenerates at
+/// "anomalous means": where the levels that still carry information sit near an extremum of their fringe
+/// (sin(2kθ) ≈ 0), a flattened fringe says almost nothing about θ, and near f = 0 and 1 the noise floor (1 − a)/2
+/// hides the small head probabilities that make the ends easy without noise.
+/// </remarks>
+public static class MlaeFisherInformation
+{
+    /// <summary>Means are kept this far inside [0, 1], where sin(2θ) and the information stay finite.</summary>
+    public const double Edge = 1e-9;
+
+    /// <summary>The Cramér–Rao standard deviation of the estimate of mean <paramref name="mean"/> from <paramref name="levels"/> at decay γ.</summary>
+    /// <param name="mean">The true mean f ∈ [0, 1] (kept <see cref="Edge"/> inside).</param>
+    /// <param name="decay">γ ≥ 0 per Grover operator.</param>
+    /// <param name="levels">(m, flips) of each level.</param>
+    /// <param name="decayKnown">True: γ known (the bound plain MLAE would reach if told the noise); false: estimated jointly.</param>
+    public static double StandardError(double mean, double decay, IReadOnlyList<(int Iterations, int Flips)> levels, bool decayKnown = false)
+    {
+        var f = Math.Clamp(mean, Edge, 1 - Edge);
+        var theta = Math.Asin(Math.Sqrt(f));
+        var (tt, tg, gg) = (0.0, 0.0, 0.0);
+        foreach (var (m, n) in levels)
+        {
+            var k = 2 * m + 1;
+            var a = Math.Exp(-decay * m);
+            var (sin, cos) = Math.SinCos(2 * k * theta);
+            // 4p(1 − p) = 1 − a²cos²; without noise (a = 1) the ratio sin² / (1 − cos²) is 1, even at an extremum.
+            var variance = 1 - a * a * cos * cos;
+            var dTheta = a * k * sin;
+            var dDecay = m * a * cos / 2;
+            if (variance < 1e-12)
+            {
+                tt += n * 4.0 * k * k;
+                continue;
+            }
+            var weight = 4.0 * n / variance;
+            tt += weight * dTheta * dTheta;
+            tg += weight * dTheta * dDecay;
+            gg += weight * dDecay * dDecay;
+        }
+        // The information left about θ once γ is fitted too: the Schur complement I_θθ − I_θγ² / I_γγ.
+        var info = decayKnown || gg <= 1e-12 * tt ? tt : tt - tg * tg / gg;
+        return info <= 0 ? double.PositiveInfinity : Math.Sin(2 * theta) / Math.Sqrt(info);
+    }
+
+    /// <summary>The standard deviation as an expected absolute error, √(2/π)·σ.</summary>
+    public static double MeanAbsoluteError(double mean, double decay, IReadOnlyList<(int Iterations, int Flips)> levels, bool decayKnown = false) =>
+        Math.Sqrt(2 / Math.PI) * StandardError(mean, decay, levels, decayKnown);
+
+    /// <summary>The predicted mean absolute error over uniform random means: the average over the midpoints of <paramref name="cells"/> equal cells of [0, 1].</summary>
+    public static double AverageMeanAbsoluteError(double decay, IReadOnlyList<(int Iterations, int Flips)> levels, bool decayKnown = false, int cells = 1000) =>
+        Enumerable.Range(0, cells).Average(c => MeanAbsoluteError((c + 0.5) / cells, decay, levels, decayKnown));
+
+    /// <summary>
+    /// The anomalous means of a schedule at decay γ: the local maxima of the predicted σ over a grid of <paramref name="cells"/>
+    /// means that exceed <paramref name="factor"/> times its median, in increasing order.
+    /// </summary>
+    public static IReadOnlyList<double> AnomalousMeans(double decay, IReadOnlyList<(int Iterations, int Flips)> levels, double factor = 3, int cells = 2000)
+    {
+        var means = Enumerable.Range(0, cells).Select(c => (c + 0.5) / cells).ToArray();
+        var sigma = means.Select(f => StandardError(f, decay, levels)).ToArray();
+        var median = sigma.Order().ElementAt(cells / 2);
+        var anomalous = new List<double>();
+        for (var c = 0; c < cells; c++)
+        {
+            var left = c == 0 ? double.NegativeInfinity : sigma[c - 1];
+            var right = c + 1 == cells ? double.NegativeInfinity : sigma[c + 1];
+            if (sigma[c] > factor * median && sigma[c] >= left && sigma[c] > right) anomalous.Add(means[c]);
+        }
+        return anomalous;
+    }
+
+    /// <summary>(m, flips) of each level of an MLAE schedule.</summary>
+    public static (int Iterations, int Flips)[] Levels(IReadOnlyList<int> iterations, IReadOnlyList<int> flips) =>
+        iterations.Select((m, l) => (m, flips[l])).ToArray();
+}
