@@ -10,9 +10,9 @@ namespace QuantumRayTracing.Supersampling;
 /// <remarks>
 /// Under noise the information saturates: once a^2 (2m+1)^2 stops growing with m, deeper levels add flips' worth of
 /// information at a higher price, so at a fixed schedule the error stops falling as 1/queries. It also degenerates at
-/// "anomalous means": where the levels that still carry information sit near an extremum of their fringe
-/// (sin(2kθ) ≈ 0), a flattened fringe says almost nothing about θ, and near f = 0 and 1 the noise floor (1 − a)/2
-/// hides the small head probabilities that make the ends easy without noise.
+/// "anomalous means": where θ is a simple fraction of π the levels' fringes all sit at a few phases, so a change of θ
+/// and a change of γ move the head probabilities alike and fitting the decay eats the information about the mean
+/// (at f = ½ every level reads ½ whatever the noise).
 /// </remarks>
 public static class MlaeFisherInformation
 {
@@ -26,8 +26,26 @@ public static class MlaeFisherInformation
     /// <param name="decayKnown">True: γ known (the bound plain MLAE would reach if told the noise); false: estimated jointly.</param>
     public static double StandardError(double mean, double decay, IReadOnlyList<(int Iterations, int Flips)> levels, bool decayKnown = false)
     {
-        var f = Math.Clamp(mean, Edge, 1 - Edge);
-        var theta = Math.Asin(Math.Sqrt(f));
+        var theta = Angle(mean);
+        var (tt, tg, gg) = Matrix(theta, decay, levels);
+        // The information left about θ once γ is fitted too: the Schur complement I_θθ − I_θγ² / I_γγ.
+        var info = decayKnown || gg <= 1e-12 * tt ? tt : tt - tg * tg / gg;
+        return info <= 0 ? double.PositiveInfinity : Math.Sin(2 * theta) / Math.Sqrt(info);
+    }
+
+    /// <summary>The Cramér–Rao standard deviation of the fitted decay γ at mean <paramref name="mean"/> (θ fitted jointly).</summary>
+    public static double DecayStandardError(double mean, double decay, IReadOnlyList<(int Iterations, int Flips)> levels)
+    {
+        var (tt, tg, gg) = Matrix(Angle(mean), decay, levels);
+        var info = tt <= 0 ? gg : gg - tg * tg / tt;
+        return info <= 0 ? double.PositiveInfinity : 1 / Math.Sqrt(info);
+    }
+
+    private static double Angle(double mean) => Math.Asin(Math.Sqrt(Math.Clamp(mean, Edge, 1 - Edge)));
+
+    // The information matrix about (θ, γ): its θθ, θγ and γγ entries.
+    private static (double ThetaTheta, double ThetaDecay, double DecayDecay) Matrix(double theta, double decay, IReadOnlyList<(int Iterations, int Flips)> levels)
+    {
         var (tt, tg, gg) = (0.0, 0.0, 0.0);
         foreach (var (m, n) in levels)
         {
@@ -48,9 +66,7 @@ public static class MlaeFisherInformation
             tg += weight * dTheta * dDecay;
             gg += weight * dDecay * dDecay;
         }
-        // The information left about θ once γ is fitted too: the Schur complement I_θθ − I_θγ² / I_γγ.
-        var info = decayKnown || gg <= 1e-12 * tt ? tt : tt - tg * tg / gg;
-        return info <= 0 ? double.PositiveInfinity : Math.Sin(2 * theta) / Math.Sqrt(info);
+        return (tt, tg, gg);
     }
 
     /// <summary>The standard deviation as an expected absolute error, √(2/π)·σ.</summary>
@@ -62,20 +78,21 @@ public static class MlaeFisherInformation
         Enumerable.Range(0, cells).Average(c => MeanAbsoluteError((c + 0.5) / cells, decay, levels, decayKnown));
 
     /// <summary>
-    /// The anomalous means of a schedule at decay γ: the local maxima of the predicted σ over a grid of <paramref name="cells"/>
-    /// means that exceed <paramref name="factor"/> times its median, in increasing order.
+    /// The anomalous means of a schedule at decay γ, where the information degenerates: the local maxima, over a grid of
+    /// <paramref name="cells"/> means, of the information lost by fitting the decay (σ with γ fitted over σ with γ known)
+    /// that exceed <paramref name="factor"/>, in increasing order. They sit where θ is a simple fraction of π, so that every
+    /// level's fringe sits at one of a few phases: at f = ½ (θ = π/4) each level reads ½ whatever the noise.
     /// </summary>
-    public static IReadOnlyList<double> AnomalousMeans(double decay, IReadOnlyList<(int Iterations, int Flips)> levels, double factor = 3, int cells = 2000)
+    public static IReadOnlyList<double> AnomalousMeans(double decay, IReadOnlyList<(int Iterations, int Flips)> levels, double factor = 1.5, int cells = 2000)
     {
         var means = Enumerable.Range(0, cells).Select(c => (c + 0.5) / cells).ToArray();
-        var sigma = means.Select(f => StandardError(f, decay, levels)).ToArray();
-        var median = sigma.Order().ElementAt(cells / 2);
+        var loss = means.Select(f => StandardError(f, decay, levels) / StandardError(f, decay, levels, decayKnown: true)).ToArray();
         var anomalous = new List<double>();
         for (var c = 0; c < cells; c++)
         {
-            var left = c == 0 ? double.NegativeInfinity : sigma[c - 1];
-            var right = c + 1 == cells ? double.NegativeInfinity : sigma[c + 1];
-            if (sigma[c] > factor * median && sigma[c] >= left && sigma[c] > right) anomalous.Add(means[c]);
+            var left = c == 0 ? double.NegativeInfinity : loss[c - 1];
+            var right = c + 1 == cells ? double.NegativeInfinity : loss[c + 1];
+            if (loss[c] > factor && loss[c] >= left && loss[c] > right) anomalous.Add(means[c]);
         }
         return anomalous;
     }
