@@ -5,7 +5,7 @@ namespace QuantumRayTracing.Tests.Supersampling;
 
 /// <summary>
 /// Synthetic noisy coins for the estimator tests: a flip after m Grover operators is a head with probability
-/// e^(−γm) · sin²((2m+1)θ) + (1 − e^(−γm)) / 2, the globally depolarized coin, drawn from a seeded generator.
+/// Φ · sin²((2m+1)θ) + (1 − Φ) / 2 with Φ = e^(−γ(m+½)), the globally depolarized coin, drawn from a seeded generator.
 /// </summary>
 internal sealed class DepolarizedCoinEngine(SeededRandom random, double decay) : ISupersamplingEngine
 {

@@ -2,9 +2,9 @@ namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// What the Fisher information of MLAE's flips predicts about its error under the depolarized coin of
-/// <see cref="NoiseAwareMaximumLikelihoodEstimator"/>: P(head) = (1 − a·cos(2kθ)) / 2 with k = 2m+1 and a = e^(−γm).
+/// <see cref="NoiseAwareMaximumLikelihoodEstimator"/>: P(head) = (1 − a·cos(2kθ)) / 2 with k = 2m+1 and a = e^(−γk/2).
 /// A level of n flips adds n·∇p ∇pᵀ / (p(1 − p)) to the information about (θ, γ), with ∂p/∂θ = a·k·sin(2kθ) and
-/// ∂p/∂γ = m·a·cos(2kθ) / 2. The Cramér–Rao bound on θ is the inverse's θθ entry (γ estimated jointly) or 1 / I_θθ
+/// ∂p/∂γ = k·a·cos(2kθ) / 4. The Cramér–Rao bound on θ is the inverse's θθ entry (γ estimated jointly) or 1 / I_θθ
 /// (γ known); the mean f = sin²θ then has σ_f = sin(2θ)·σ_θ, and a normal error of σ_f has mean absolute value √(2/π)·σ_f.
 /// </summary>
 /// <remarks>
@@ -50,12 +50,12 @@ public static class MlaeFisherInformation
         foreach (var (m, n) in levels)
         {
             var k = 2 * m + 1;
-            var a = Math.Exp(-decay * m);
+            var a = NoiseAwareMaximumLikelihoodEstimator.Kept(decay, m);
             var (sin, cos) = Math.SinCos(2 * k * theta);
             // 4p(1 − p) = 1 − a²cos²; without noise (a = 1) the ratio sin² / (1 − cos²) is 1, even at an extremum.
             var variance = 1 - a * a * cos * cos;
             var dTheta = a * k * sin;
-            var dDecay = m * a * cos / 2;
+            var dDecay = k * a * cos / 4;
             if (variance < 1e-12)
             {
                 tt += n * 4.0 * k * k;

@@ -4,11 +4,13 @@ namespace QuantumRayTracing.Supersampling;
 /// Maximum-likelihood amplitude estimation on a noisy machine (Tanaka et al. 2021, "Amplitude estimation via maximum
 /// likelihood on noisy quantum computer"): the same flips as <see cref="MaximumLikelihoodEstimator"/>, but the
 /// likelihood of a head after m Grover operators is that of a globally depolarized coin,
-/// P(head | θ, γ) = e^(−γm) · sin²((2m+1)θ) + (1 − e^(−γm)) / 2, and the decay γ ≥ 0 per Grover operator (the
+/// P(head | θ, γ) = Φ · sin²((2m+1)θ) + (1 − Φ) / 2 with Φ = e^(−γ(m+½)), and the decay γ ≥ 0 per Grover operator (the
 /// fidelity F = e^(−γ)) is estimated jointly with θ. The estimate is sin²θ.
 /// </summary>
 /// <remarks>
-/// Plain MLAE reads a level whose coin noise has pulled towards ½ as a θ that gives that contrast, and so errs by an
+/// Φ = F^(m+½) counts the flip's 2m+1 applications of the coin's preparation A, each keeping a share √F: the preparation
+/// and measurement of an unamplified flip are noisy too (the analytic engine's model has Φ = F₀ · F^m with F₀ close to
+/// F^½ for the mean coin, exactly F^½ for the single-qubit direct coin). Plain MLAE reads a level whose coin noise has pulled towards ½ as a θ that gives that contrast, and so errs by an
 /// amount more flips do not remove (docs/noise-estimation.md). Here a level the noise has flattened only says little.
 /// The search: the log-likelihood on a grid of θ (16 points per unit of 2m+1 at the deepest level, i.e. 32 per period
 /// of its fringe) times a grid of γ (0 and 0.001 to 4 in steps of 4), then alternate golden-section refinement of θ
@@ -64,8 +66,8 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
         var deepest = observed.Max(o => o.Iterations);
         var points = PointsPerFactor * (2 * deepest + 1);
         var step = Math.PI / 2 / points;
-        // e^(−γm) of every grid decay and level, and each level's cos(2(2m+1)θ) at the current grid point.
-        var contrast = DecayGrid.Select(g => observed.Select(o => Math.Exp(-g * o.Iterations)).ToArray()).ToArray();
+        // Φ of every grid decay and level, and each level's cos(2(2m+1)θ) at the current grid point.
+        var contrast = DecayGrid.Select(g => observed.Select(o => Kept(g, o.Iterations)).ToArray()).ToArray();
         var fringe = new double[observed.Count];
         var (bestPoint, bestDecay, bestValue) = (0, 0, double.NegativeInfinity);
         for (var point = 0; point <= points; point++)
@@ -102,9 +104,12 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
     public static double HeadProbability(double theta, double decay, int iterations)
     {
         var s = Math.Sin((2 * iterations + 1) * theta);
-        var kept = Math.Exp(-decay * iterations);
+        var kept = Kept(decay, iterations);
         return Math.Clamp(kept * s * s + (1 - kept) / 2, 0, 1);
     }
+
+    /// <summary>Φ = e^(−γ(m+½)): the share of a flip after m Grover operators that noise leaves ideal.</summary>
+    public static double Kept(double decay, int iterations) => Math.Exp(-decay * (iterations + 0.5));
 
     /// <summary>The log-likelihood of the observed levels at (θ, γ).</summary>
     public static double LogLikelihood(IReadOnlyList<MlaeLevel> observed, double theta, double decay)
@@ -114,7 +119,7 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
         return sum;
     }
 
-    // p = (1 − a·cos(2(2m+1)θ)) / 2 with a = e^(−γm): the same probability as HeadProbability, from precomputed parts.
+    // p = (1 − Φ·cos(2(2m+1)θ)) / 2: the same probability as HeadProbability, from precomputed parts.
     private static double LogLikelihood(IReadOnlyList<MlaeLevel> observed, double[] fringe, double[] contrast)
     {
         var sum = 0.0;
