@@ -19,6 +19,14 @@ internal static class ConsoleCapture
     /// </summary>
     public static (int Code, string Output, string Error) RunCapturingOutput(params string[] args)
     {
+        var code = 0;
+        var (output, error) = Capture(() => code = CommandLine.Run(args));
+        return (code, output, error);
+    }
+
+    /// <summary>Standard output and error of <paramref name="action"/>, which runs alone with the console captured.</summary>
+    public static (string Output, string Error) Capture(Action action)
+    {
         lock (Gate)
         {
             var (savedOutput, savedError) = (Console.Out, Console.Error);
@@ -27,7 +35,8 @@ internal static class ConsoleCapture
             Console.SetError(error);
             try
             {
-                return (CommandLine.Run(args), output.ToString(), error.ToString());
+                action();
+                return (output.ToString(), error.ToString());
             }
             finally
             {

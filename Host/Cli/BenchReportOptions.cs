@@ -1,7 +1,9 @@
 using System.CommandLine;
 using System.Text;
 using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Cli;
@@ -36,14 +38,50 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
         Description = $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before. Default: the report is printed only.",
     };
 
-    public void AddTo(Command command, bool scenes = true, bool seed = true)
+    public readonly Option<FileInfo?> Cluster = new("--cluster")
+    {
+        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.",
+    };
+
+    public readonly Option<bool> Csv = new("--csv")
+    {
+        Description = "Also write every table of the report as CSV beside it (<report>-<table>.csv), for scripts. Needs --output.",
+    };
+
+    /// <summary>Adds the shared options; <paramref name="cluster"/> for experiments that run Q# engines.</summary>
+    public void AddTo(Command command, bool scenes = true, bool seed = true, bool cluster = false)
     {
         if (scenes) command.Options.Add(Scenes);
         if (seed) command.Options.Add(Seed);
         command.Options.Add(Workers);
+        if (cluster) command.Options.Add(Cluster);
         command.Options.Add(Output);
+        command.Options.Add(Csv);
         Workers.AtLeast(1);
     }
+
+    /// <summary>The report's writer, its Markdown file checked writable before any work starts.</summary>
+    public ReportWriter Writer(ParseResult parse)
+    {
+        if (parse.GetValue(Csv) && parse.GetValue(Output) is null) throw new UserError("--csv: the tables are written beside the report; name it with --output");
+        var writer = new ReportWriter(parse.GetValue(Output)?.FullName, commandLine, parse.GetValue(Csv));
+        writer.EnsureWritable();
+        return writer;
+    }
+
+    /// <summary>
+    /// The cluster's bridges when <c>--cluster</c> names a file, null otherwise (the experiment's Q# engines then
+    /// start local bridges). Connecting fails with one line and exit code 3.
+    /// </summary>
+    public BridgePool? StartBridges(ParseResult parse) =>
+        parse.GetValue(Cluster) is { } file ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers)) : null;
+
+    /// <summary>The lines closing every report: the machine, where the Q# work ran, and the command that regenerates it.</summary>
+    public static IReadOnlyList<string> Footer(string machine, BridgePool? cluster = null) =>
+    [
+        $"Machine: {machine}{(cluster is null ? "" : $"; Q# engines on {cluster.Where}")}.",
+        $"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.",
+    ];
 
     /// <summary>The report file, checked writable before any work starts.</summary>
     public GeneratedReport Report(ParseResult parse)
