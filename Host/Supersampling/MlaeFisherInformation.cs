@@ -16,6 +16,9 @@ namespace QuantumRayTracing.Supersampling;
 /// </remarks>
 public static class MlaeFisherInformation
 {
+    /// <summary>A mean is anomalous where fitting the decay costs more than this factor in σ.</summary>
+    public const double AnomalyFactor = 1.5;
+
     /// <summary>Means are kept this far inside [0, 1], where sin(2θ) and the information stay finite.</summary>
     public const double Edge = 1e-9;
 
@@ -83,7 +86,7 @@ public static class MlaeFisherInformation
     /// that exceed <paramref name="factor"/>, in increasing order. They sit where θ is a simple fraction of π, so that every
     /// level's fringe sits at one of a few phases: at f = ½ (θ = π/4) each level reads ½ whatever the noise.
     /// </summary>
-    public static IReadOnlyList<double> AnomalousMeans(double decay, IReadOnlyList<(int Iterations, int Flips)> levels, double factor = 1.5, int cells = 2000)
+    public static IReadOnlyList<double> AnomalousMeans(double decay, IReadOnlyList<(int Iterations, int Flips)> levels, double factor = AnomalyFactor, int cells = 2000)
     {
         var means = Enumerable.Range(0, cells).Select(c => (c + 0.5) / cells).ToArray();
         var loss = means.Select(f => StandardError(f, decay, levels) / StandardError(f, decay, levels, decayKnown: true)).ToArray();

@@ -14,7 +14,9 @@ namespace QuantumRayTracing.Supersampling;
 /// amount more flips do not remove (docs/noise-estimation.md). Here a level the noise has flattened only says little.
 /// The search: the log-likelihood on a grid of θ (16 points per unit of 2m+1 at the deepest level, i.e. 32 per period
 /// of its fringe) times a grid of γ (0 and 0.001 to 4 in steps of 4), then alternate golden-section refinement of θ
-/// within one grid step and of γ between its grid neighbours. Deterministic: the same heads give the same estimate. No
+/// within one grid step and of γ between its grid neighbours. The decay is kept only when the likelihood-ratio test finds it
+/// (<see cref="NoiseEvidence"/>) and the fit is not at an anomalous mean (<see cref="MlaeFisherInformation.AnomalyFactor"/>);
+/// otherwise the flips are read as plain MLAE reads them. Deterministic: the same heads give the same estimate. No
 /// heads anywhere gives 0 and heads everywhere 1, exactly, as plain MLAE.
 /// </remarks>
 public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
@@ -97,7 +99,13 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
         // Keep the noiseless fit (plain MLAE's angle) unless the decay explains the flips significantly better.
         var noiseless = MaximumLikelihoodEstimator.MostLikelyAngle(observed.Select(o => (2 * o.Iterations + 1, o.Heads, o.Flips)).ToArray());
         var gain = 2 * (LogLikelihood(observed, theta, decay) - LogLikelihood(observed, noiseless, 0));
-        return gain > NoiseEvidence ? (theta, decay) : (noiseless, 0);
+        if (gain <= NoiseEvidence) return (noiseless, 0);
+        // At an anomalous mean the flips hardly tell θ from γ (at f = ½ every level reads ½ whatever the noise), so a fitted
+        // decay there is as likely a trade for a wrong θ as noise; plain MLAE's reading of such flips is sound (½ reads as ½).
+        var levels = observed.Select(o => (o.Iterations, o.Flips)).ToArray();
+        var mean = Math.Pow(Math.Sin(theta), 2);
+        var lost = MlaeFisherInformation.StandardError(mean, decay, levels) / MlaeFisherInformation.StandardError(mean, decay, levels, decayKnown: true);
+        return lost <= MlaeFisherInformation.AnomalyFactor ? (theta, decay) : (noiseless, 0);
     }
 
     /// <summary>P(head) after m Grover operators on a coin of angle θ whose Grover operators each keep a share e^(−γ) of the state.</summary>
