@@ -1,5 +1,8 @@
+using System.Text.Json.Nodes;
 using QuantumRayTracing.Cli;
+using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Tests.Cluster;
 using QuantumRayTracing.Tests.Engines;
 
 namespace QuantumRayTracing.Tests.Cli;
@@ -63,6 +66,28 @@ public sealed class EstimateCommandTests : IDisposable
     [InlineData("--seed", "3")]
     public void FrameOptionsNeedTheFrame(params string[] options) =>
         Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
+
+    [Fact]
+    public void FramePricingOnAClusterCostsTheSame()
+    {
+        string[] frame = ["estimate", "--frame", Scene, "--size", "4", "--models", "qubit_gate_ns_e3", "--workers", "1"];
+        Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, "--cluster", "cluster.json"]).Code); // one ray's estimates need no cluster
+        var (local, onCluster) = (_scratch.File("local.json"), _scratch.File("cluster.json"));
+        Assert.Equal(0, ConsoleCapture.Run([.. frame, "--json", local]).Code);
+        using var first = new WorkerBridges(1);
+        using var second = new WorkerBridges(1);
+        using (var cluster = new TestCluster(120, first, second))
+        {
+            Assert.Equal(0, ConsoleCapture.Run([.. frame, "--cluster", cluster.ConfigPath, "--json", onCluster]).Code);
+            Assert.True(cluster.Served(0) > 0 && cluster.Served(1) > 0, $"jobs served: {cluster.Served(0)} and {cluster.Served(1)}; both workers should take some");
+        }
+
+        var (here, there) = (JsonNode.Parse(File.ReadAllText(local))!, JsonNode.Parse(File.ReadAllText(onCluster))!);
+        // The Resource Estimator is deterministic: the same runs priced anywhere cost the same.
+        Assert.Equal(here["figures"]!["cost"]!.ToJsonString(), there["figures"]!["cost"]!.ToJsonString());
+        Assert.Equal((RunPlace.LocalKind, 1), ((string)here["ranOn"]!["kind"]!, (int)here["ranOn"]!["bridges"]!));
+        Assert.Equal((RunPlace.ClusterKind, 2, 2), ((string)there["ranOn"]!["kind"]!, (int)there["ranOn"]!["bridges"]!, (int)there["ranOn"]!["workers"]!));
+    }
 
     [Fact]
     public void FrameWritesItsTableAsMarkdownAndCsvAndKeepsOtherFiles()

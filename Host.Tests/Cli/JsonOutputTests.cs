@@ -2,13 +2,17 @@ using System.Globalization;
 using System.Text.RegularExpressions;
 using System.Text.Json.Nodes;
 using QuantumRayTracing.Cli;
+using QuantumRayTracing.Cluster;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Tests.Cluster;
 using QuantumRayTracing.Tests.Engines;
 
 namespace QuantumRayTracing.Tests.Cli;
 
 /// <summary>
 /// `--json FILE` on render, search, supersample and estimate: each command runs as its own process, its printed
-/// text is parsed and every figure compared with the JSON value, to the precision the text prints it with.
+/// text is parsed and every figure compared with the JSON value, to the precision the text prints it with; where
+/// the work ran is compared with the printed "ran on", on this machine and on a two-worker cluster in this process.
 /// </summary>
 [Collection(QSharpCollection.Name)]
 public sealed partial class JsonOutputTests : IDisposable
@@ -166,6 +170,58 @@ public sealed partial class JsonOutputTests : IDisposable
             Assert.Equal(Long(table["qubit_gate_ns_e3, surface_code: physical qubits"][k]), (long)circuit["physical"]![0]!["physicalQubits"]!);
             Assert.Equal(Long(table["qubit_gate_ns_e3, surface_code: code distance"][k]), (long)circuit["physical"]![0]!["codeDistance"]!);
         }
+    }
+
+    [Fact]
+    public void RanOnIsWhereThePrintedResultsSayTheWorkRan()
+    {
+        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+        var (render, renderJson) = Run("render", scene, "--engine", "analytic", "--size", "4", "-o", "r.png");
+        AssertRanOn(Match(render, @"^analytic ran on (?<where>.+)$")["where"].Value, renderJson, RunPlace.LocalKind, bridges: 0);
+
+        var (search, searchJson) = Run("search", "--engine", "fullstate", "-n", "8", "-s", "4", "--workers", "1");
+        AssertRanOn(Table(search)["ran on"][0], searchJson, RunPlace.LocalKind, bridges: 1);
+
+        var (supersample, supersampleJson) = Run("supersample", "--size", "2", "--subpixels", "2", "-m", "mc", "-o", "s.png");
+        AssertRanOn(Match(supersample, @"; ran on (?<where>.+)$")["where"].Value, supersampleJson, RunPlace.LocalKind, bridges: 0);
+    }
+
+    [Fact]
+    public void RanOnNamesTheClusterARenderRanOn()
+    {
+        using var first = new WorkerBridges(1);
+        using var second = new WorkerBridges(1);
+        using var cluster = new TestCluster(120, first, second);
+        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+        var (output, json) = Run("render", scene, "--engine", "fullstate", "--size", "4", "--cluster", cluster.ConfigPath, "-o", "r.png");
+
+        var printed = Match(output, @"^fullstate ran on (?<where>.+)$")["where"].Value;
+        AssertRanOn(printed, json, RunPlace.ClusterKind, bridges: 2, workers: 2);
+        var clusterId = (string)JsonNode.Parse(File.ReadAllText(cluster.ConfigPath))!["clusterId"]!;
+        Assert.Equal(clusterId, (string?)json["ranOn"]!["cluster"]);
+        Assert.Equal("localhost", (string?)json["ranOn"]!["membership"]);
+        Assert.Equal(0, (int)json["ranOn"]!["chunksSentAgain"]!);
+        Assert.Equal(cluster.ConfigPath, (string?)json["options"]!["cluster"]);
+    }
+
+    /// <summary>
+    /// The JSON place is the printed one: its description is the printed text, and its kind, bridges and workers are
+    /// those the text names, and those the run had (<paramref name="kind"/>, <paramref name="bridges"/>, <paramref name="workers"/>).
+    /// </summary>
+    private static void AssertRanOn(string printed, JsonObject json, string kind, int bridges, int? workers = null)
+    {
+        var ranOn = json["ranOn"]!;
+        Assert.Equal(printed, (string?)ranOn["description"]);
+        var local = Regex.Match(printed, @"^this machine, (?<bridges>\d+) local bridges?$");
+        var cluster = Regex.Match(printed, @"^cluster '(?<id>[^']+)' \((?<membership>\w+) membership, .+\): (?<workers>\d+) workers?, (?<bridges>\d+) bridges");
+        var (printedKind, printedBridges, printedWorkers) =
+            printed == "this machine (no Q# bridges)" ? (RunPlace.LocalKind, 0, (int?)null)
+            : local.Success ? (RunPlace.LocalKind, int.Parse(local.Groups["bridges"].Value, CultureInfo.InvariantCulture), null)
+            : cluster.Success ? (RunPlace.ClusterKind, int.Parse(cluster.Groups["bridges"].Value, CultureInfo.InvariantCulture), int.Parse(cluster.Groups["workers"].Value, CultureInfo.InvariantCulture))
+            : throw new Xunit.Sdk.XunitException($"'{printed}' names no place this test knows");
+        Assert.Equal((printedKind, printedBridges, printedWorkers), ((string)ranOn["kind"]!, (int)ranOn["bridges"]!, (int?)ranOn["workers"]));
+        Assert.Equal((kind, bridges, workers), (printedKind, printedBridges, printedWorkers));
+        if (cluster.Success) Assert.Equal(cluster.Groups["id"].Value, (string?)ranOn["cluster"]);
     }
 
     [Fact]

@@ -52,6 +52,21 @@ public sealed class RunJsonFileTests : IDisposable
     }
 
     [Fact]
+    public void WhereTheWorkRanIsRecordedWhenNamed()
+    {
+        var versions = new ToolVersions("1", null, null, null);
+        Assert.False(JsonNode.Parse(RunJsonFile.Compose(Run, versions))!.AsObject().ContainsKey("ranOn"));
+
+        var onCluster = Run with { RanOn = new RunPlace("cluster 'lab' (redis membership, lab.json): 3 workers, 24 bridges", RunPlace.ClusterKind, 24, "lab", "redis", 3, 0) };
+        var ranOn = JsonNode.Parse(RunJsonFile.Compose(onCluster, versions))!["ranOn"]!;
+        Assert.Equal("cluster 'lab' (redis membership, lab.json): 3 workers, 24 bridges", (string?)ranOn["description"]);
+        Assert.Equal(("cluster", 24, 3, "lab", "redis", 0), ((string)ranOn["kind"]!, (int)ranOn["bridges"]!, (int)ranOn["workers"]!, (string)ranOn["cluster"]!, (string)ranOn["membership"]!, (int)ranOn["chunksSentAgain"]!));
+
+        var local = JsonNode.Parse(RunJsonFile.Compose(Run with { RanOn = RunPlace.LocalBridges(2) }, versions))!["ranOn"]!;
+        Assert.Equal("""{"description":"this machine, 2 local bridges","kind":"local","bridges":2}""", local.ToJsonString());
+    }
+
+    [Fact]
     public void OnlyAJsonObjectGeneratedByQrtIsOurs()
     {
         string Write(string name, string text)

@@ -1,4 +1,5 @@
 using System.Collections.Concurrent;
+using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Bridge;
 
@@ -15,7 +16,6 @@ public sealed class BridgePool : IDisposable
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(workers, 1);
         Workers = workers;
-        _local = $"this machine, {workers} local bridge{(workers == 1 ? "" : "s")}";
         for (var w = 0; w < workers; w++)
         {
             var bridge = new QSharpBridge(options ?? new BridgeOptions());
@@ -44,10 +44,12 @@ public sealed class BridgePool : IDisposable
 
     private readonly IBridgeTransport? _remote;
     private readonly IDisposable? _owned;
-    private readonly string _local = "";
 
     /// <summary>Where the requests run, for reports: local bridges or a cluster's workers.</summary>
-    public string Where => _remote?.Where ?? _local;
+    public RunPlace Place => _remote?.Place ?? RunPlace.LocalBridges(Workers);
+
+    /// <summary><see cref="Place"/> as reports print it.</summary>
+    public string Where => Place.Description;
 
     /// <summary>Default worker count: one per core.</summary>
     public static int DefaultWorkers => Environment.ProcessorCount;

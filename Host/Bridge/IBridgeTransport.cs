@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Bridge;
 
@@ -11,5 +12,5 @@ public interface IBridgeTransport
     JsonNode Send(JsonObject request);
 
     /// <summary>Where the requests run, for reports.</summary>
-    string Where { get; }
+    RunPlace Place { get; }
 }

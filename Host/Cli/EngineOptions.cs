@@ -120,10 +120,14 @@ public sealed class EngineOptions
             : null;
 
     /// <summary>Where a Q# engine's work runs, for reports: the cluster's workers or this machine.</summary>
-    public static string Where(EngineKind kind, BridgePool? bridges, int workers) => kind switch
+    public static string Where(EngineKind kind, BridgePool? bridges, int workers) => Place(kind, bridges, workers).Description;
+
+    /// <summary><see cref="Where"/> for scripts (<c>--json</c>): local or cluster, bridges and workers.</summary>
+    /// <remarks>Without <paramref name="bridges"/> a Q# engine starts <paramref name="workers"/> local bridges of its own.</remarks>
+    public static RunPlace Place(EngineKind kind, BridgePool? bridges, int workers) => kind switch
     {
-        EngineKind.FullState or EngineKind.Gate => bridges?.Where ?? $"this machine, {workers} local bridge{(workers == 1 ? "" : "s")}",
-        _ => "this machine (no Q# bridges)",
+        EngineKind.FullState or EngineKind.Gate => bridges?.Place ?? RunPlace.LocalBridges(workers),
+        _ => RunPlace.NoBridges,
     };
 
     public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Globalization;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
@@ -79,6 +80,12 @@ public sealed class EstimateCommand : Command
         Description = "With --frame: also write the table here, as Markdown, or CSV with --format csv. It replaces only a file this command wrote. Default: the table is printed only.",
     };
 
+    private readonly Option<FileInfo?> _cluster = new("--cluster")
+    {
+        Description = "With --frame: run the pricing's Resource Estimator jobs on the workers of this cluster file (docs/cluster.md) instead of --workers local bridges. The frame's searches run on the analytic engine on this machine either way. Default: none, local bridges.",
+        HelpName = "file",
+    };
+
     private readonly RenderOptionSet _render = new();
 
     private readonly QSearchOptionSet _qsearch = new();
@@ -106,6 +113,7 @@ public sealed class EstimateCommand : Command
         Options.Add(_errorBudget);
         Options.Add(_qpus);
         Options.Add(_output);
+        Options.Add(_cluster);
         Options.Add(_engine.Seed);
         _render.AddTo(this);
         _qsearch.AddTo(this);
@@ -132,7 +140,7 @@ public sealed class EstimateCommand : Command
             var frame = r.GetValue(_frame);
             foreach (var option in new Option[] { _pixel, _worstCase, _iterations, _subpixels, _counterBits, _options.NoCircuit })
                 if (frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} applies to one ray's estimates; --frame prices every run of a frame");
-            foreach (var option in new Option[] { _errorBudget, _qpus, _output, _engine.Seed, _qsearch.Growth, _qsearch.Rule }.Concat(_render.All))
+            foreach (var option in new Option[] { _errorBudget, _qpus, _output, _cluster, _engine.Seed, _qsearch.Growth, _qsearch.Rule }.Concat(_render.All))
                 if (!frame && r.GetResult(option) is { Implicit: false }) r.AddError($"{option.Name} needs --frame");
         });
         Subcommands.Add(new EstimateSweepCommand());
@@ -183,19 +191,22 @@ public sealed class EstimateCommand : Command
 
         FrameEstimate frame;
         string machine;
-        using (var pool = new BridgePool(parse.GetValue(_options.Workers)))
+        RunPlace pricedOn;
+        var cluster = parse.GetValue(_cluster);
+        using (var pool = ClusterBridges.Start(cluster?.FullName, parse.GetValue(_options.Workers)))
         {
             var progress = new ConsoleProgress("analytic");
             frame = FrameEstimate.Run(settings, pool, progress);
             progress.Finish();
+            pricedOn = pool.Place;
             var versions = pool.Bridges[0].Version();
             machine = Benchmarks.MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
         }
-        var table = FrameTable.For(frame, machine);
+        var table = FrameTable.For(frame, machine, cluster is null ? null : pricedOn.Description);
         _options.Write(parse, table);
         report.Write(format == ReportFormat.Csv ? table.ToCsv() : table.ToMarkdown());
         if (output is not null) AnsiConsole.WriteLine($"wrote {output.FullName}");
-        _json.Write(parse, new { frame.Cost, ClassicalSeconds = frame.WallTimes.Classical.TotalSeconds }, _engine);
+        _json.Write(parse, new { frame.Cost, ClassicalSeconds = frame.WallTimes.Classical.TotalSeconds }, _engine, pricedOn);
         return 0;
     }
 

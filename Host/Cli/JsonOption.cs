@@ -28,14 +28,17 @@ public sealed class JsonOption
     /// <summary>Fails before any work when the file may not be written; <paramref name="otherFiles"/> are the command's inputs and outputs.</summary>
     public void EnsureWritable(ParseResult parse, IEnumerable<string> otherFiles) => RunJsonFile.EnsureWritable(Path(parse), otherFiles);
 
-    /// <summary>Writes the file when --json was given: <paramref name="figures"/> are the result records the command printed.</summary>
-    public void Write(ParseResult parse, object figures, EngineOptions? engine = null)
+    /// <summary>
+    /// Writes the file when --json was given: <paramref name="figures"/> are the result records the command printed,
+    /// <paramref name="ranOn"/> where it printed that the work ran.
+    /// </summary>
+    public void Write(ParseResult parse, object figures, EngineOptions? engine = null, RunPlace? ranOn = null)
     {
         if (Path(parse) is not { } path) return;
         var record = new RunRecord(parse.CommandResult.Command.Name, Values(parse),
             engine is null ? null : parse.GetValue(engine.Seed),
             engine is null ? null : EngineOptions.Name(parse.GetValue(engine.Engine)),
-            engine?.NoiseRecord(parse) ?? RunNoise.None, figures);
+            engine?.NoiseRecord(parse) ?? RunNoise.None, figures, ranOn);
         RunJsonFile.Write(path, record);
     }
 

@@ -1,17 +1,12 @@
 using System.CommandLine;
-using System.Diagnostics;
 using System.Globalization;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
-using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
-using QuantumRayTracing.Rays;
-using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
-using QuantumRayTracing.Search;
 using Spectre.Console;
 
 namespace QuantumRayTracing.Cli;
@@ -87,97 +82,52 @@ public sealed class RenderCommand : Command
     private int Execute(ParseResult parse)
     {
         var sceneFile = parse.GetValue(_scene);
+        var settings = Settings(parse, sceneFile);
+        var inputs = sceneFile is null ? Array.Empty<string>() : [sceneFile.FullName];
+        ImageFiles.EnsureWritable(settings.Files, inputs);
+        _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
+        using var bridges = _engine.StartBridges(parse);
+        EngineOptions.CheckNoise(settings.Engine, settings.NoiseModel);
+
+        PrintPlan(settings, RenderPlan.Of(settings));
+        var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress());
+
+        var engineName = EngineOptions.Name(settings.Engine);
+        var noise = settings.NoiseModel;
+        AnsiConsole.WriteLine($"{engineName} ran on {run.RanOn.Description}");
+        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(settings.Engine, noise)}", run.Figures, settings.SamplesLight, !noise.IsNoiseless);
+        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        return 0;
+    }
+
+    /// <summary>The run the options ask for; the bridges are started after the outputs are checked.</summary>
+    private RenderRunSettings Settings(ParseResult parse, FileInfo? sceneFile)
+    {
         var scene = LoadScene(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
-        var engineName = EngineOptions.Name(kind);
         var stem = sceneFile is null ? $"qornell-{DefaultQornellPrimitives}" : Path.GetFileNameWithoutExtension(sceneFile.Name);
-        var output = parse.GetValue(_output) ?? $"{stem}-{engineName}.png";
-        var withReference = parse.GetValue(_reference);
-
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
-        var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed));
-        var sampled = RenderDefaults.SamplesLight(scene, options);
-        var referenceSamples = parse.GetValue(_referenceSamples);
-        var withConverged = sampled && referenceSamples > 0;
-        var converged = RenderDefaults.Converged(options, Math.Max(1, referenceSamples));
-        string[] outputs = withReference
-            ? [output, Sibling(output, "reference"), Sibling(output, "difference"), .. withConverged ? [Sibling(output, "converged")] : Array.Empty<string>()]
-            : [output];
-        ImageFiles.EnsureWritable(outputs, sceneFile is null ? [] : [sceneFile.FullName]);
-        _json.EnsureWritable(parse, sceneFile is null ? outputs : [.. outputs, sceneFile.FullName]);
-        using var bridges = _engine.StartBridges(parse);
+        return new RenderRunSettings(scene, _render.Get(parse, width, height, parse.GetValue(_engine.Seed)), kind, _qsearch.Get(parse),
+            parse.GetValue(_output) ?? $"{stem}-{EngineOptions.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
+            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse));
+    }
 
-        var noise = _engine.GetNoise(parse);
-        EngineOptions.CheckNoise(kind, noise);
-        var geometry = new SceneGeometry(scene);
-        AnsiConsole.WriteLine($"{scene.Name}: N = {geometry.Count} primitives, {LightSummary(scene)}, {width}x{height} pixels, {scene.Grid}");
-        if (sampled)
+    /// <summary>What the run models, printed before it starts.</summary>
+    private static void PrintPlan(RenderRunSettings settings, RenderPlan plan)
+    {
+        var (scene, options) = (settings.Scene, settings.Options);
+        AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
+        if (settings.SamplesLight)
+        {
+            var converged = settings.Converged;
             AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
-                + (withConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
-        AnsiConsole.WriteLine($"modelled per search: {geometry.IndexBits} index qubits + {SearchRegisters.For(geometry.Count).AuxiliaryQubits} auxiliaries, lookup table of {geometry.Count} rows x {scene.Grid.Bits} coordinate bits per axis");
-        if (kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic) AnsiConsole.WriteLine($"noise model: {EngineOptions.NoiseDescription(kind, noise)}");
-        OracleRegisters? gateRegisters = null;
-        if (kind == EngineKind.Gate)
-        {
-            // Depth bits, and so the width, vary by ray: show the centre pixel's primary search.
-            var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
-            var registers = OracleRegisters.For(new OracleInput(centre, centre.FullRange));
-            gateRegisters = registers;
+                + (settings.WithConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
+        }
+        AnsiConsole.WriteLine($"modelled per search: {plan.IndexQubits} index qubits + {plan.AuxiliaryQubits} auxiliaries, lookup table of {plan.Primitives} rows x {plan.CoordinateBits} coordinate bits per axis");
+        if (settings.Engine is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic)
+            AnsiConsole.WriteLine($"noise model: {EngineOptions.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+        if (plan.GateRegisters is { } registers)
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
-        }
-
-        var progress = new ConsoleProgress(engineName);
-        var clock = Stopwatch.StartNew();
-        RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(parse.GetValue(_engine.Seed)), parse.GetValue(_engine.Workers), _qsearch.Get(parse), parse.GetValue(_engine.MaxQubits), bridges, noise: noise))
-        {
-            try
-            {
-                result = SceneRenderer.Render(scene, search, options, progress);
-            }
-            catch (SimulatorLimitException e)
-            {
-                progress.Finish();
-                throw new UserError($"{scene.Name}: {e.Message}");
-            }
-        }
-        var renderTime = clock.Elapsed;
-        clock.Restart();
-        var referenceProgress = new ConsoleProgress("classical reference");
-        using var classical = new ClassicalHitSearch();
-        var reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(options), referenceProgress);
-        var referenceTime = clock.Elapsed;
-        clock.Restart();
-        RenderResult? convergedReference = null;
-        if (withConverged)
-        {
-            var convergedProgress = new ConsoleProgress("converged reference");
-            convergedReference = SceneRenderer.Render(scene, classical, converged, convergedProgress);
-            convergedProgress.Finish();
-        }
-        var convergedTime = clock.Elapsed;
-        progress.Finish();
-        referenceProgress.Finish();
-
-        var images = new List<(RgbImage, string)> { (result.Image, output) };
-        if (withReference)
-        {
-            images.Add((reference.Image, outputs[1]));
-            images.Add((DifferenceImage.Of(result.Image, reference.Image), outputs[2]));
-            if (convergedReference is not null) images.Add((convergedReference.Image, outputs[3]));
-        }
-        ImageFiles.Write(images);
-
-        var figures = new RenderFigures(scene.Name, geometry.Count, width, height, geometry.IndexBits, scene.Grid.Bits, gateRegisters, result.Passes, result.Total, reference.Total,
-            ImageError.Between(result.Image, reference.Image), result.Budget,
-            convergedReference is null ? null : referenceSamples,
-            convergedReference is null ? null : ImageError.Between(result.Image, convergedReference.Image),
-            convergedReference is null ? null : ImageError.Between(reference.Image, convergedReference.Image),
-            renderTime, referenceTime, convergedReference is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
-        AnsiConsole.WriteLine($"{engineName} ran on {EngineOptions.Where(kind, bridges, parse.GetValue(_engine.Workers))}");
-        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(kind, noise)}", figures, sampled, !noise.IsNoiseless);
-        _json.Write(parse, figures, _engine);
-        return 0;
     }
 
     private static void Print(string engineName, RenderFigures figures, bool sampled, bool noisy)
@@ -238,11 +188,7 @@ public sealed class RenderCommand : Command
         : SceneLoader.Load(file.FullName);
 
     /// <summary>out.png → out-reference.png.</summary>
-    public static string Sibling(string output, string suffix)
-    {
-        var directory = Path.GetDirectoryName(output) ?? "";
-        return Path.Combine(directory, $"{Path.GetFileNameWithoutExtension(output)}-{suffix}{Path.GetExtension(output)}");
-    }
+    public static string Sibling(string output, string suffix) => ImageFiles.Beside(output, suffix);
 
     /// <summary>"128" or "160x120" → the size; null text → no size.</summary>
     public static ((int Width, int Height)? Size, string? Error) ParseSize(string? text)

@@ -1,8 +1,6 @@
 using System.CommandLine;
-using System.Diagnostics;
 using System.Globalization;
 using QuantumRayTracing.Engines;
-using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
 using Spectre.Console;
 
@@ -66,40 +64,25 @@ public sealed class SearchCommand : Command
     {
         _json.EnsureWritable(parse, []);
         using var bridges = _engine.StartBridges(parse);
-        var count = parse.GetValue(_count);
-        var root = new SeededRandom(parse.GetValue(_engine.Seed));
-        var marked = parse.GetResult(_marked) is null
-            ? new MarkedSet(count, [root.Fork(RandomStreams.Scenario).NextInt(count)])
-            : new MarkedSet(count, parse.GetValue(_marked) ?? []);
-        var options = _qsearch.Get(parse);
-        var schedule = new QSearchSchedule(count, options.Growth, options.Rule);
-        var searches = Enumerable.Range(0, parse.GetValue(_searches))
-            .Select(k => new QSearch(marked, schedule, root.Fork(RandomStreams.FirstSearch + (ulong)k)))
-            .ToArray();
-        var registers = SearchRegisters.For(count);
+        var settings = new SearchRunSettings(parse.GetValue(_count), parse.GetResult(_marked) is null ? null : parse.GetValue(_marked) ?? [],
+            parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
+            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges);
+        var (marked, registers) = (settings.MarkedSet, settings.Registers);
 
-        AnsiConsole.WriteLine($"N = {count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", schedule.Bounds)}}}");
+        AnsiConsole.WriteLine($"N = {settings.Count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", settings.Schedule.Bounds)}}}");
         AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index qubits + {registers.AuxiliaryQubits} auxiliaries for the multi-controlled phase");
-
-        var noise = EngineOptions.NoiseDescription(parse.GetValue(_engine.Engine), _engine.GetNoise(parse));
+        var noise = EngineOptions.NoiseDescription(settings.Engine, settings.NoiseModel);
         AnsiConsole.WriteLine($"noise model: {noise}");
 
-        var clock = Stopwatch.StartNew();
-        int rounds;
-        using (var engine = _engine.Create(parse, bridges))
-        {
-            rounds = AnsiConsole.Profile.Capabilities.Interactive
-                ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
-                {
-                    var task = progress.AddTask($"{engine.Name}: searching", maxValue: searches.Length);
-                    return QSearchDriver.Run(searches, engine, (_, active) => task.Value = searches.Length - active);
-                })
-                : QSearchDriver.Run(searches, engine);
-        }
-        clock.Stop();
+        var run = AnsiConsole.Profile.Capabilities.Interactive
+            ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
+            {
+                var task = progress.AddTask($"{EngineOptions.Name(settings.Engine)}: searching", maxValue: settings.Searches);
+                return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
+            })
+            : SearchRun.Run(settings);
 
-        var figures = new SearchFigures(count, marked.Indices.ToArray(), schedule.Bounds.ToArray(), registers, searches.Length,
-            searches.Count(s => s.Found is not null), searches.Aggregate(default(SearchCost), (sum, s) => sum + s.Cost), rounds, clock.Elapsed);
+        var figures = run.Figures;
         var table = new Table().AddColumns("measure", "value");
         table.AddRow("searches", N(figures.Searches));
         table.AddRow("found / not found", $"{N(figures.Found)} / {N(figures.NotFound)}");
@@ -110,10 +93,10 @@ public sealed class SearchCommand : Command
         table.AddRow("engine calls (rounds)", N(figures.Rounds));
         table.AddRow("noise model", noise);
         table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
-        table.AddRow("ran on", Markup.Escape(EngineOptions.Where(parse.GetValue(_engine.Engine), bridges, parse.GetValue(_engine.Workers))));
+        table.AddRow("ran on", Markup.Escape(run.RanOn.Description));
         AnsiConsole.Write(table);
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
-        _json.Write(parse, figures, _engine);
+        _json.Write(parse, figures, _engine, run.RanOn);
         return 0;
     }
 

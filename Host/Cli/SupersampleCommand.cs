@@ -204,8 +204,9 @@ public sealed class SupersampleCommand : Command
             inputTime, table?.Readouts, result.Estimator, result.QueriesPerChannel, result.ChannelsEstimated,
             result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
             result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
-        Print(figures, EngineOptions.Name(kind), noise, EngineOptions.Where(kind, bridges, parse.GetValue(_engine.Workers)));
-        _json.Write(parse, figures, _engine);
+        var ranOn = EngineOptions.Place(kind, bridges, parse.GetValue(_engine.Workers));
+        Print(figures, EngineOptions.Name(kind), noise, ranOn.Description);
+        _json.Write(parse, figures, _engine, ranOn);
         return 0;
     }
 

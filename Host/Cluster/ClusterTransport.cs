@@ -5,6 +5,7 @@ using Microsoft.Extensions.Logging;
 using Orleans.Configuration;
 using Orleans.Runtime;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Output;
 using StackExchange.Redis;
 
 namespace QuantumRayTracing.Cluster;
@@ -37,9 +38,16 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     /// <summary>Requests sent again to another worker after one failed to answer.</summary>
     public int Retries => Volatile.Read(ref _retries);
 
-    /// <summary>Where requests run, for reports.</summary>
-    public string Where =>
-        $"cluster '{_config.ClusterId}' ({_config.Clustering.ToString().ToLowerInvariant()} membership, {_config.Path}): {_workers.Length} worker{(_workers.Length == 1 ? "" : "s")}, {Capacity} bridges{(Retries > 0 ? $"; {Retries} chunk{(Retries == 1 ? "" : "s")} sent again after a worker failed to answer" : "")}";
+    /// <summary>Where requests run, for reports: the cluster, its workers and bridges, and the chunks sent again so far.</summary>
+    public RunPlace Place
+    {
+        get
+        {
+            var (membership, retries) = (_config.Clustering.ToString().ToLowerInvariant(), Retries);
+            var description = $"cluster '{_config.ClusterId}' ({membership} membership, {_config.Path}): {_workers.Length} worker{(_workers.Length == 1 ? "" : "s")}, {Capacity} bridges{(retries > 0 ? $"; {retries} chunk{(retries == 1 ? "" : "s")} sent again after a worker failed to answer" : "")}";
+            return new RunPlace(description, RunPlace.ClusterKind, Capacity, _config.ClusterId, membership, _workers.Length, retries);
+        }
+    }
 
     /// <summary>Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.</summary>
     public static ClusterTransport Connect(ClusterConfig config)

@@ -10,14 +10,17 @@ namespace QuantumRayTracing.Estimates;
 /// </summary>
 public static class FrameTable
 {
-    public static ReportTable For(FrameEstimate frame, string machine)
+    /// <param name="frame">The priced frame.</param>
+    /// <param name="machine">This machine, where the classical render was timed.</param>
+    /// <param name="pricedOn">Where the Resource Estimator jobs ran when not on this machine (a cluster); null: here.</param>
+    public static ReportTable For(FrameEstimate frame, string machine, string? pricedOn = null)
     {
         var cost = frame.Cost;
         var parts = cost.Passes.Append(cost.Total).ToArray();
         var settings = frame.Settings;
         var options = settings.Render;
         var table = new ReportTable($"Frame cost: {settings.Scene.Name}, {options.Width}x{options.Height}", "measure", parts.Select(p => p.Name).ToArray());
-        foreach (var line in Context(frame, machine)) table.Context(line);
+        foreach (var line in Context(frame, machine, pricedOn)) table.Context(line);
         void Row(string measure, Func<FramePart, string> value) => table.Row(measure, parts.Select(value));
 
         Row("Grover runs (r ≥ 1)", p => N(p.QuantumRuns));
@@ -52,7 +55,7 @@ public static class FrameTable
     }
 
     /// <summary>What was rendered and priced, and how the budget is split.</summary>
-    public static IReadOnlyList<string> Context(FrameEstimate frame, string machine)
+    public static IReadOnlyList<string> Context(FrameEstimate frame, string machine, string? pricedOn = null)
     {
         var settings = frame.Settings;
         var options = settings.Render;
@@ -60,7 +63,7 @@ public static class FrameTable
         return
         [
             $"scene: {settings.Scene.Name}, {options.Width}x{options.Height}, seed {options.Seed}; render options: {options.Iterations} trace passes, {options.ShadowIterations} shadow passes, neighbours {OnOff(options.Neighbours)}, shadow neighbours {OnOff(options.ShadowNeighbours)}, stop {options.Stop.ToString().ToLowerInvariant()}, lattice {options.LatticeLevels}{(options.PlannedMiss is { } miss ? $", planned miss {miss.ToString(CultureInfo.InvariantCulture)}" : "")}; QSearch c = {settings.Search.Growth.ToString(CultureInfo.InvariantCulture)}, M sets {settings.Search.Rule}",
-            $"runs recorded at the engine seam of the analytic render (the same searches as `render --engine analytic` with these options); {N(frame.Recording.Runs.Select(r => r.Shape).Distinct().Count())} distinct oracle shapes, {N(frame.Recording.Runs.Where(r => r.Iterations > 0).Select(r => r.Key).Distinct().Count())} distinct (shape, r), {N(frame.EstimatorJobs)} Resource Estimator jobs; oracle construction {settings.Construction}",
+            $"runs recorded at the engine seam of the analytic render (the same searches as `render --engine analytic` with these options); {N(frame.Recording.Runs.Select(r => r.Shape).Distinct().Count())} distinct oracle shapes, {N(frame.Recording.Runs.Where(r => r.Iterations > 0).Select(r => r.Key).Distinct().Count())} distinct (shape, r), {N(frame.EstimatorJobs)} Resource Estimator jobs{(pricedOn is null ? "" : $" (run on {pricedOn})")}; oracle construction {settings.Construction}",
             $"error budget: frame ε = {Probability(budget.Frame)}, shared by R = {N(budget.Runs)} Grover runs: ε/R = {Probability(budget.PerRun)} per run (union bound: P(frame fails) ≤ Σ P(run fails) ≤ R · ε/R = ε)",
             $"classical: the brute-force reference render of the same frame (every primitive tested) on {machine}; wall time of the fastest of at least {FrameEstimate.ClassicalRepeats} renders, more while they took under {FrameEstimate.ClassicalTimingBudget.TotalSeconds} s together (the machine may be shared)",
         ];

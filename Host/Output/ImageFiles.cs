@@ -25,6 +25,13 @@ public static class ImageFiles
         }
     }
 
+    /// <summary>The file written beside <paramref name="output"/>: out.png → out-reference.png.</summary>
+    public static string Beside(string output, string suffix)
+    {
+        var directory = Path.GetDirectoryName(output) ?? "";
+        return Path.Combine(directory, $"{Path.GetFileNameWithoutExtension(output)}-{suffix}{Path.GetExtension(output)}");
+    }
+
     /// <summary>Writes every image to its path, all or none (<see cref="AtomicFile.WriteAll"/>).</summary>
     public static void Write(IEnumerable<(RgbImage Image, string Path)> images)
     {

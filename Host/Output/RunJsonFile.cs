@@ -79,8 +79,10 @@ public static class RunJsonFile
             ["seed"] = run.Seed,
             ["engine"] = run.Engine,
             ["noise"] = JsonSerializer.SerializeToNode(run.Noise, Options),
+            ["ranOn"] = JsonSerializer.SerializeToNode(run.RanOn, Options),
             ["figures"] = JsonSerializer.SerializeToNode(run.Figures, run.Figures.GetType(), Options),
         };
+        if (run.RanOn is null) document.Remove("ranOn");
         return document.ToJsonString(Options) + "\n";
     }
 

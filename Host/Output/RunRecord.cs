@@ -2,8 +2,8 @@ namespace QuantumRayTracing.Output;
 
 /// <summary>
 /// One run of a command as its <c>--json</c> file records it: the command, every option's value, the seed and
-/// engine (null where the command has none), the noise model, and <see cref="Figures"/>, the result records the
-/// command printed its figures from.
+/// engine (null where the command has none), the noise model, <see cref="Figures"/>, the result records the
+/// command printed its figures from, and where the work ran (<see cref="RanOn"/>; null for a command that names no place).
 /// </summary>
 public sealed record RunRecord(
     string Command,
@@ -11,4 +11,5 @@ public sealed record RunRecord(
     ulong? Seed,
     string? Engine,
     RunNoise Noise,
-    object Figures);
+    object Figures,
+    RunPlace? RanOn = null);

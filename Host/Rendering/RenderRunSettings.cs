@@ -1,0 +1,54 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Rendering;
+
+/// <summary>
+/// Everything one run of <see cref="RenderRun"/> needs: what `render` reads from its options.
+/// </summary>
+/// <param name="Scene">The scene, loaded and checked.</param>
+/// <param name="Options">Size, passes, pipeline and the seed of every classical random choice.</param>
+/// <param name="Engine">Where the searches run.</param>
+/// <param name="Search">QSearch's growth constant and M-set rule (the quantum engines).</param>
+/// <param name="Output">The PNG the render is written to; the references and the difference image are written beside it.</param>
+/// <param name="WithReference">Also write the classical reference, the difference image and, with sampled light, the converged reference.</param>
+/// <param name="ReferenceSamples">Area samples and VPLs per point of the converged reference (sampled light only); 0 skips it.</param>
+/// <param name="Workers">Local Node bridges a Q# engine starts when <paramref name="Pool"/> is null; null: one per core.</param>
+/// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
+/// <param name="Noise">The noise model the quantum engines run under; null for the ideal machine.</param>
+/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+public sealed record RenderRunSettings(
+    Scene Scene,
+    RenderOptions Options,
+    EngineKind Engine,
+    QSearchOptions Search,
+    string Output,
+    bool WithReference = false,
+    int ReferenceSamples = RenderDefaults.ReferenceSamples,
+    int? Workers = null,
+    int? MaxQubits = null,
+    NoiseModel? Noise = null,
+    BridgePool? Pool = null)
+{
+    /// <summary>Area lights or VPLs: the render samples light, and a converged reference shows its Monte Carlo noise.</summary>
+    public bool SamplesLight => RenderDefaults.SamplesLight(Scene, Options);
+
+    /// <summary>The converged classical reference is rendered (and compared with).</summary>
+    public bool WithConverged => SamplesLight && ReferenceSamples > 0;
+
+    /// <summary>The options of the converged classical reference.</summary>
+    public RenderOptions Converged => RenderDefaults.Converged(Options, Math.Max(1, ReferenceSamples));
+
+    public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
+
+    public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
+
+    /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>
+    public IReadOnlyList<string> Files => WithReference
+        ? [Output, ImageFiles.Beside(Output, "reference"), ImageFiles.Beside(Output, "difference"), .. WithConverged ? [ImageFiles.Beside(Output, "converged")] : Array.Empty<string>()]
+        : [Output];
+}

@@ -1,0 +1,45 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
+using QuantumRayTracing.Randomness;
+
+namespace QuantumRayTracing.Search;
+
+/// <summary>
+/// Everything one run of <see cref="SearchRun"/> needs: what `search` reads from its options.
+/// </summary>
+/// <param name="Count">N, the indices searched.</param>
+/// <param name="Marked">The marked indices; null draws one index from the seed.</param>
+/// <param name="Searches">Independent searches run side by side, one engine call per round for all of them.</param>
+/// <param name="Options">QSearch's growth constant and M-set rule.</param>
+/// <param name="Engine">The Grover engine (fullstate or analytic).</param>
+/// <param name="Seed">The seed of every classical random choice.</param>
+/// <param name="Workers">Local Node bridges the fullstate engine starts when <paramref name="Pool"/> is null; null: one per core.</param>
+/// <param name="MaxQubits">The widest circuit the engine may simulate; null keeps the engine's own limit.</param>
+/// <param name="Noise">The noise model the engine runs under; null for the ideal machine.</param>
+/// <param name="Pool">Bridges the engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+public sealed record SearchRunSettings(
+    int Count,
+    IReadOnlyList<int>? Marked,
+    int Searches,
+    QSearchOptions Options,
+    EngineKind Engine,
+    ulong Seed,
+    int? Workers = null,
+    int? MaxQubits = null,
+    NoiseModel? Noise = null,
+    BridgePool? Pool = null)
+{
+    /// <summary>The marked set searched: the one given, or one index drawn from the seed's scenario stream.</summary>
+    public MarkedSet MarkedSet => Marked is { } marked
+        ? new MarkedSet(Count, marked)
+        : new MarkedSet(Count, [new SeededRandom(Seed).Fork(RandomStreams.Scenario).NextInt(Count)]);
+
+    public QSearchSchedule Schedule => new(Count, Options.Growth, Options.Rule);
+
+    public SearchRegisters Registers => SearchRegisters.For(Count);
+
+    public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
+
+    public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
+}
