@@ -64,4 +64,19 @@ public sealed class ReportWriterTests : IDisposable
         ConsoleCapture.Capture(() => new ReportWriter(path, Command).Write(new Report("Again"), []));
         Assert.Contains("# Again", File.ReadAllText(path));
     }
+
+    [Fact]
+    public void AnImageRowIsOneTableRowOfItsFilesUnderTheirCaptions()
+    {
+        var red = new RgbImage(2, 1);
+        red.SetPixel(1, 0, 255, 0, 0);
+        var report = new Report("Images").ImageRow([new ReportImage("a", new RgbImage(1, 1), "first"), new ReportImage("b", red, "second")]);
+        var path = _scratch.File("pictures.md");
+        ConsoleCapture.Capture(() => new ReportWriter(path, Command).Write(report, []));
+        Assert.Equal(
+            "# Images\n\n| first | second |\n|---|---|\n| ![pictures-a](pictures-a.png) | ![pictures-b](pictures-b.png) |\n\n",
+            string.Join("\n", File.ReadLines(path).Skip(1)) + "\n");
+        Assert.Equal(["pictures-a.png", "pictures-b.png", "pictures.md"], _scratch.FileNames());
+        Assert.Equal(red.Pixels.ToArray(), ImageReader.Read(_scratch.File("pictures-b.png")).Pixels.ToArray());
+    }
 }
