@@ -48,11 +48,11 @@ public sealed class ReportWriter(string? markdownPath, string command, bool tabl
         return text.ToString();
     }
 
-    /// <summary>Prints the Markdown and, with a path, writes it with its PNG and CSV files.</summary>
-    public void Write(Report report, IEnumerable<string> footer)
+    /// <summary>Prints the Markdown (unless <paramref name="print"/> is false) and, with a path, writes it with its PNG and CSV files.</summary>
+    public void Write(Report report, IEnumerable<string> footer, bool print = true)
     {
         var markdown = Markdown(report, footer);
-        Console.WriteLine(markdown);
+        if (print) Console.WriteLine(markdown);
         if (markdownPath is null) return;
 
         var images = new List<(RgbImage Image, string Path)>();
