@@ -19,6 +19,9 @@ public static class SpeedVsErrorExperiment
     /// <summary>Every engine but `gate`, too slow for whole images.</summary>
     public static readonly EngineKind[] Engines = [EngineKind.Classical, EngineKind.Randomized, EngineKind.Analytic, EngineKind.FullState];
 
+    /// <summary>The plots beside the report: &lt;report&gt;-intray.png and &lt;report&gt;-walltime.png.</summary>
+    public static readonly string[] PlotNames = ["intray", "walltime"];
+
     /// <summary>One configuration on one engine: its cost (conservative Int/Ray, wall time) and error.</summary>
     public sealed record Point(string Engine, string Configuration, double IntPerRay, double Seconds, double Nrmse, int DifferentPixels);
 
@@ -69,8 +72,8 @@ public static class SpeedVsErrorExperiment
                 (intFront.Contains(i) ? "★" : "") + (timeFront.Contains(i) ? "☆" : ""));
         }
         report.Table(table);
-        report.Plot("intray", Plot("Int/Ray against NRMSE", "Int/Ray (conservative)", AxisScale.Linear, points, p => p.IntPerRay, intFront), "Int/Ray against error");
-        report.Plot("walltime", Plot("Wall time against NRMSE", "wall time (s)", AxisScale.Log10, points, p => p.Seconds, timeFront), "Wall time against error");
+        report.Plot(PlotNames[0], Plot("Int/Ray against NRMSE", "Int/Ray (conservative)", AxisScale.Linear, points, p => p.IntPerRay, intFront), "Int/Ray against error");
+        report.Plot(PlotNames[1], Plot("Wall time against NRMSE", "wall time (s)", AxisScale.Log10, points, p => p.Seconds, timeFront), "Wall time against error");
         return report;
     }
 

@@ -1,6 +1,5 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
-using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 
 namespace QuantumRayTracing.Cli;
@@ -45,9 +44,8 @@ public sealed class BenchLightsCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
+        writer.EnsureWritable(LightsExperiment.ImageNames);
         var images = parse.GetValue(_report.Output) is not null;
-        // The images are checked before the renders, so a file we did not write stops the run at once.
-        if (images) ImageFiles.EnsureWritable([.. LightsExperiment.ImageNames.Select(name => writer.Beside(name, ".png"))], []);
         var settings = new LightsSettings(stem => _report.Load(parse, stem), parse.GetValue(_size), images ? parse.GetValue(_imageSize) : null,
             parse.GetValue(_referenceSamples), parse.GetValue(_report.Seed));
         var report = LightsExperiment.Run(settings, Console.Error.WriteLine);

@@ -35,6 +35,7 @@ public sealed class BenchParetoCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
+        writer.EnsureWritable(SpeedVsErrorExperiment.PlotNames);
         var scene = SceneLoader.Load(parse.GetValue(_scene)!.FullName);
         using var cluster = _report.StartBridges(parse);
         var settings = new SpeedVsErrorSettings(scene, parse.GetValue(_size), parse.GetValue(_report.Seed), parse.GetValue(_report.Workers), cluster);

@@ -20,6 +20,16 @@ public sealed class ReportWriter(string? markdownPath, string command, bool tabl
     /// <summary>Fails with a one-line <see cref="UserError"/> when the Markdown file may not be written; call it before the work.</summary>
     public void EnsureWritable() => _markdown.EnsureWritable();
 
+    /// <summary>
+    /// Also checks the PNG files the report will write beside its Markdown, named as its plots and images are
+    /// (<paramref name="pictures"/>), so a file we did not write stops the run before the work, not after it.
+    /// </summary>
+    public void EnsureWritable(IEnumerable<string> pictures)
+    {
+        EnsureWritable();
+        if (markdownPath is not null) ImageFiles.EnsureWritable([.. pictures.Select(name => Beside(name, ".png"))], []);
+    }
+
     /// <summary>The PNG or CSV file beside the Markdown for a block named <paramref name="name"/> (empty: the report's own stem).</summary>
     public string Beside(string name, string extension) =>
         Path.Combine(Directory ?? ".", (name.Length == 0 ? Stem : $"{Stem}-{name}") + extension);
