@@ -84,7 +84,7 @@ public sealed class BenchClusterOptionTests : IDisposable
         // A warm-up call and 9 timed calls (batch 1), then a warm-up and 3 timed calls (batch 3).
         Assert.Equal(14, cluster.Served(0));
         var table = report.Table("runs");
-        Assert.Equal("fullstate, 1 cluster bridges: ms/run", table.Header[4]);
+        Assert.Equal("fullstate, 1 cluster bridge: ms/run", table.Header[4]);
         Assert.Equal([["8", "2", "1"], ["8", "2", "3"]], table.Rows.Select(r => r[..3]));
     }
 

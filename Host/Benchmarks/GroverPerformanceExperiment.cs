@@ -42,7 +42,7 @@ public static class GroverPerformanceExperiment
             `fullstate` is the Q# operation `MeasureGroverBatch` on the QDK full-state simulator; `analytic` samples the exact outcome
             distribution in C#. Each figure is the median of 9 (batch 1), 3 (batch 100) or 1 (batch 1000) timed calls after a warm-up call.
             """);
-        var all = settings.Pool is { } pool ? $"{pool.Workers} cluster bridges" : $"{settings.Workers} workers";
+        var all = settings.Pool is { } pool ? $"{pool.Workers} cluster bridge{(pool.Workers == 1 ? "" : "s")}" : $"{settings.Workers} workers";
         var table = new TextTable("runs", ["N", "r", "batch", "fullstate, 1 worker: ms/run", $"fullstate, {all}: ms/run", "fullstate, 1 worker: ms/call", "analytic: µs/run", "fullstate / analytic"]);
         foreach (var r in rows)
             table.Row(Invariant($"{r.Count}"), Invariant($"{r.Iterations}"), Invariant($"{r.Batch}"), F(r.FullStateOneWorkerMs), F(r.FullStateAllWorkersMs),
