@@ -21,12 +21,12 @@ public sealed class BenchClusterOptionTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    // Tiny forms of each bench that takes --cluster, writing to report.md in the scratch directory.
+    // Tiny forms of each bench that takes --cluster, writing their report in the scratch directory.
     private string[] Bench(string name, string cluster) => name switch
     {
-        "pareto" => ["bench", "pareto", "--scene", Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"), "--size", "1", "--cluster", cluster, "-o", _scratch.File("report.md")],
-        "grover" => ["bench", "grover", "--sizes", "8", "--batches", "1", "--cluster", cluster, "-o", _scratch.File("report.md")],
-        "soak" => ["bench", "soak", "--short", "--engines", "fullstate", "--scenes", RepositoryPaths.Scenes, "--cluster", cluster, "-o", _scratch.File("report.md")],
+        "pareto" => ["bench", "pareto", "--scene", Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"), "--size", "1", "--cluster", cluster, "-o", _scratch.File("speed-vs-error.md")],
+        "grover" => ["bench", "grover", "--sizes", "8", "--batches", "1", "--cluster", cluster, "-o", _scratch.File("performance.md")],
+        "soak" => ["bench", "soak", "--short", "--engines", "fullstate", "--scenes", RepositoryPaths.Scenes, "--cluster", cluster, "-o", _scratch.File("soak.md")],
         _ => throw new ArgumentOutOfRangeException(nameof(name)),
     };
 
