@@ -113,11 +113,12 @@ public static class NoiseBenchmark
     /// The supersampling model check's circuits: the mean and the shifted (QCoin) coin over 4 subpixels at m = 0, 1, 2,
     /// the mean coin over 16 subpixels (4x4, the default supersampling tile) at m = 1, the direct single-qubit coin (the
     /// QCoin paper's hardware coin) at f = 0.1 and m = 4 and 16, and QSS readouts over 4 subpixels with 3 counter bits and
-    /// over 16 with 2. Means away from ½, where the amplified head probability sits far from the ½ noise pulls it to.
+    /// over 16 with 2. Means away from ½, where the amplified head probability sits far from the ½ noise pulls it to (the mean
+    /// coin's 0.0955 = sin²(π/10) gives a certain head at m = 2).
     /// </summary>
     public static IReadOnlyList<SupersamplingCheckCase> SupersamplingCheckCases()
     {
-        var mean = SubpixelValues.MeanCoin([0.1, 0.5, 0.3, 0.9]);
+        var mean = SubpixelValues.MeanCoin([0.05, 0.2, 0.1, 0.032]);
         var shifted = SubpixelValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
         var tile = SubpixelValues.MeanCoin(Enumerable.Range(0, 16).Select(i => (i * 7 % 16) / 20.0).ToArray());
         double[] direct = [Math.Sqrt(0.1)];
