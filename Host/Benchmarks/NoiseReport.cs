@@ -29,8 +29,9 @@ public static class NoiseReport
         var text = new StringBuilder();
         text.AppendLine("# Hardware noise");
         text.AppendLine();
-        text.AppendLine("What Pauli noise does to the quantum searches: the analytic noise model proven against the noisy simulator, the ray tracing");
-        text.AppendLine("paper's device experiment (sec. 8, fig. 15) reproduced on the simulator, and what noise costs a render.");
+        text.AppendLine("What Pauli noise does to the quantum circuits: the analytic noise model of the searches and of the supersampling coins and");
+        text.AppendLine("QSS readouts proven against the noisy simulator, the ray tracing paper's device experiment (sec. 8, fig. 15) reproduced on");
+        text.AppendLine("the simulator, and what noise costs a render.");
         text.AppendLine();
         text.AppendLine($"Regenerate: `{command}` ({F(result.Elapsed.TotalMinutes, "0.0")} min). Machine: {result.Machine}.");
         text.AppendLine();
