@@ -169,9 +169,15 @@ public sealed class SupersampleCommandTests : IDisposable
     public void NoisyRunNamesItsModel()
     {
         var input = WriteImage("in.png", 8, 8, (x, y) => ((byte)(x * 30), (byte)(y * 30), 9));
-        var (code, output, _) = ConsoleCapture.RunCapturingOutput("supersample", "--image", input, "-m", "mc", "--subpixels", "4", "--noise", "0.003", "-o", _scratch.File("out.png"));
+        var (code, output, _) = ConsoleCapture.RunCapturingOutput("supersample", "--image", input, "-m", "mc", "--subpixels", "4", "--noise", "0.003",
+            "-o", _scratch.File("out.png"), "--json", _scratch.File("run.json"));
         Assert.Equal(0, code);
-        Assert.Contains("noise model: depolarizing Pauli noise p = 0.003 per gate and qubit (p/3 each of X, Y, Z), global depolarizing approximation", output);
+        const string description = "depolarizing Pauli noise p = 0.003 per gate and qubit (p/3 each of X, Y, Z), global depolarizing approximation";
+        Assert.Contains($"noise model: {description}", output);
+        var noise = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(_scratch.File("run.json")))!["noise"]!;
+        Assert.Equal("pauli, depolarizing approximation", (string?)noise["model"]);
+        Assert.Equal(0.001, (double)noise["rates"]!["px"]!, 12);
+        Assert.StartsWith(description, (string?)noise["description"]);
     }
 
     [Fact]

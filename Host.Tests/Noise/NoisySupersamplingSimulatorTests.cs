@@ -72,6 +72,25 @@ public class NoisySupersamplingSimulatorTests(FullStateFixture fixture)
         Assert.Equal(Traced($"QuantumRayTracing.Supersampling.MeasureQssReadout({Doubles(amplitudes)}, {counterBits})"), CoinNoiseLocations.Qss(amplitudes, counterBits));
 
     [Fact]
+    public void DirectCoinModelIsExact()
+    {
+        // One qubit: each noise location is the depolarizing channel ρ → (1 − 4p/3)ρ + (4p/3)I/2 exactly, so the model
+        // needs no tolerance δ: 4000 flips each, within z = 4.89 standard errors (false-failure 1e-6 per comparison).
+        double[] coin = [Math.Sqrt(0.1)];
+        SupersamplingCheckCase[] cases = [SupersamplingCheckCase.Coin(CoinKind.Direct, coin, 4), SupersamplingCheckCase.Coin(CoinKind.Direct, coin, 16)];
+        var rows = SupersamplingNoiseCheck.Measure(Pool, cases, [NoiseModel.Depolarizing(3e-3), NoiseModel.Depolarizing(1e-2)], shots: 4000);
+        var model = DepolarizingApproximation.Default;
+        foreach (var row in rows)
+            Assert.True(Math.Abs(row.Observed - row.Predicted(model)) <= NoiseCheck.Z * row.StandardError(model),
+                $"direct coin, m = {row.Case.Iterations}, {row.Noise}: observed {row.Observed:0.0000}, model {row.Predicted(model):0.0000}");
+        // The multi-qubit coins' s = 2/3 would undercount a lone qubit's harm: at m = 16 and p = 1e-2 it is rejected.
+        var strong = rows.Single(r => r.Case.Iterations == 16 && r.Noise.PerGate == 1e-2);
+        var phi = model.Fidelity(strong.Noise, strong.Case.Locations);
+        var twoThirds = phi * strong.Ideal + (1 - phi) / 2;
+        Assert.True(Math.Abs(strong.Observed - twoThirds) > NoiseCheck.Z * strong.StandardError(model), $"observed {strong.Observed:0.0000} fits s = 2/3's {twoThirds:0.0000}");
+    }
+
+    [Fact]
     public void ApproximationAgreesWithTheNoisySimulator()
     {
         // The mean and the shifted (QCoin) coin over 4 subpixels at m = 0, 1, 2, the direct coin at m = 4, and a QSS readout

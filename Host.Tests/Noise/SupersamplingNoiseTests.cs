@@ -91,6 +91,8 @@ public class SupersamplingNoiseTests
                 Assert.Equal(f, SupersamplingNoise.CoinFidelity(kind, Mean, m + 1, noise) / SupersamplingNoise.CoinFidelity(kind, Mean, m, noise), 12);
         }
         Assert.Equal(2 + 4 * 7, CoinNoiseLocations.Flip(CoinKind.Direct, [0.3], 7));
+        // The direct coin's weight is one qubit's depolarizing channel per location, whatever the harmful share.
+        Assert.Equal(Math.Pow(1 - 4e-3 / 3, 30), SupersamplingNoise.CoinFidelity(CoinKind.Direct, [0.3], 7, noise, new DepolarizingApproximation(0.2)), 12);
     }
 
     [Fact]

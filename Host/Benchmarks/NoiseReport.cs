@@ -130,23 +130,27 @@ public static class NoiseReport
         text.AppendLine("locations as F₀ (not as half an operator: for the mean coin they come to about F^(1/2) anyway). u is what a maximally mixed");
         text.AppendLine("register reads as a head: ½ for the mean coin (head = coin qubit |1⟩) and the direct coin, 1/2^(n+1) for QCoin's shifted");
         text.AppendLine("coin, whose head also needs its n subpixel qubits at 0. The direct coin is the QCoin paper's hardware coin (sec. 6): one");
-        text.AppendLine("qubit, √(1 − f)|0⟩ + √f|1⟩ by one Ry, a Grover operator of four gates (A Z A† Z), L = 2 + 4m.");
+        text.AppendLine("qubit, √(1 − f)|0⟩ + √f|1⟩ by one Ry, a Grover operator of four gates (A Z A† Z), L = 2 + 4m. Its model is exact, with no s:");
+        text.AppendLine("on one qubit a Pauli error of total probability p (p/3 each) is the depolarizing channel ρ → (1 − 4p/3) ρ + (4p/3) I/2,");
+        text.AppendLine("which commutes with every gate, so Φ = (1 − 4p/3)^L (s = 2/3 would undercount its harm: a qubit in superposition has no");
+        text.AppendLine("harmless Pauli error, and the 4/3 counts the channel's own I/2 share).");
         text.AppendLine();
         text.AppendLine($"**The check.** Each circuit run {shots} times on the noisy full-state simulator (`--engine fullstate --noise p`), with");
         text.AppendLine("the mean coin's amplitudes √F(i) and the shifted coin's F(i) − E as the estimators make them. A coin counts heads; a QSS run");
         text.AppendLine("counts readouts at the ideal distribution's two most likely values (y and 2^t − y). Acceptance as above: |observed − model|");
         text.AppendLine($"≤ δ + z·σ, δ = {F(ModelTolerance, "0.00")}, z = {F(NoiseCheck.Z, "0.00")}. The ideal column is the noiseless probability, which the simulator leaves far behind.");
         text.AppendLine();
-        text.AppendLine("| circuit | N | m or t | f | p | L | ideal | observed | model, s = 2/3 | gap | gap/σ | within δ + zσ | model, fitted s |");
+        text.AppendLine("| circuit | N | m or t | f | p | L | ideal | observed | model, s = 2/3 (direct: exact) | gap | gap/σ | within δ + zσ | model, fitted s |");
         text.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|");
-        var shapes = rows.GroupBy(r => r.Case.Shape).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
+        // The direct coin's model has no harmful share to fit (it is exact).
+        var shapes = rows.Where(r => r.Case.Kind != CoinKind.Direct).GroupBy(r => r.Case.Shape).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
         foreach (var r in rows)
         {
             var c = r.Case;
             var predicted = r.Predicted(model);
             var gap = r.Observed - predicted;
             var sigma = r.StandardError(model);
-            var fitted = r.Predicted(new DepolarizingApproximation(shapes[c.Shape]));
+            var fitted = shapes.TryGetValue(c.Shape, out var share) ? r.Predicted(new DepolarizingApproximation(share)) : predicted;
             var mean = c.Kind == CoinKind.Shifted ? c.HeadAmplitude : c.HeadAmplitude * c.HeadAmplitude;
             text.AppendLine($"| {(c.IsQss ? "QSS" : $"{c.Kind.ToString()!.ToLowerInvariant()} coin")} | {c.Subpixels} | {(c.IsQss ? $"t = {c.CounterBits}" : $"m = {c.Iterations}")} | {F(mean, "0.000")} | {Rate(r.Noise.PerGate)} | {c.Locations} | {F(r.Ideal, "0.000")} | {F(r.Observed, "0.000")} | {F(predicted, "0.000")} | {F(gap, "+0.000;-0.000;0.000")} | {F(gap / sigma, "+0.0;-0.0;0.0")} | {(Math.Abs(gap) <= ModelTolerance + NoiseCheck.Z * sigma ? "yes" : "**no**")} | {F(fitted, "0.000")} |");
         }
@@ -155,6 +159,9 @@ public static class NoiseReport
         text.AppendLine();
         var worst = rows.Max(r => Math.Abs(r.Observed - r.Predicted(model)) - NoiseCheck.Z * r.StandardError(model));
         text.AppendLine($"Largest gap beyond z·σ at s = 2/3: {F(Math.Max(0, worst), "0.000")} (the tolerance δ is {F(ModelTolerance, "0.00")}).");
+        var direct = rows.Where(r => r.Case.Kind == CoinKind.Direct).ToArray();
+        if (direct.Length > 0)
+            text.AppendLine($"The direct coin's exact model: largest |gap|/σ {F(direct.Max(r => Math.Abs(r.Observed - r.Predicted(model)) / r.StandardError(model)), "0.0")} over its {direct.Length} rows (sampling error alone).");
         var rejected = rows.Count(r => Math.Abs(r.Observed - r.Ideal) > ModelTolerance + NoiseCheck.Z * r.StandardError(model));
         text.AppendLine($"The ideal (noiseless) probability falls outside the same acceptance region in {rejected} of {rows.Count} rows.");
         text.AppendLine();
