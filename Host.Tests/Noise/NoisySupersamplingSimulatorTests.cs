@@ -42,6 +42,10 @@ public class NoisySupersamplingSimulatorTests(FullStateFixture fixture)
         { "mean", [0.5, 0.0, 0.2, 0.1], 2 },
         { "mean", [0.5, 0.3, 0.2, 0.1, 0.5, 0.0, 0.2, 1.0], 1 },
         { "mean", [.. Enumerable.Range(0, 16).Select(i => i % 3 == 0 ? 0.0 : 0.4)], 1 },
+        // N not a power of two: the uniform preparation's recursion, down to a doubly controlled H at N = 7.
+        { "mean", [0.5, 0.3, 0.0], 1 },
+        { "mean", [0.5, 0.3, 0.2, 0.1, 0.5, 0.3, 0.2], 0 },
+        { "shifted", [0.5, 0.3, 0.2, 0.1, -0.5], 1 },
         { "shifted", [0.5, -0.3], 1 },
         { "shifted", [0.5, 0.3, -0.2, 0.1], 2 },
         { "shifted", [0.5, 0.3, 0.2, 0.0, 0.5, 0.3, 0.2, 0.1], 1 },
@@ -67,9 +71,24 @@ public class NoisySupersamplingSimulatorTests(FullStateFixture fixture)
     [InlineData(new[] { 0.5, 0.3 }, 2)]
     [InlineData(new[] { 0.5, 0.3, 0.0, 1.0 }, 3)]
     [InlineData(new[] { 0.5, 0.3, 0.2, 0.1, 0.5, 0.3, 0.0, 0.1 }, 2)]
+    [InlineData(new[] { 0.5, 0.0, 0.2 }, 2)]
+    [InlineData(new[] { 0.5, 0.3, 0.2, 0.1, 0.5, 0.3, 0.2 }, 1)]
     [InlineData(new[] { 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0 }, 2)]
     public void QssNoiseLocationsMatchTheExtractedCircuit(double[] amplitudes, int counterBits) =>
         Assert.Equal(Traced($"QuantumRayTracing.Supersampling.MeasureQssReadout({Doubles(amplitudes)}, {counterBits})"), CoinNoiseLocations.Qss(amplitudes, counterBits));
+
+    [Theory]
+    [InlineData(3)]
+    [InlineData(7)]
+    [InlineData(12)]
+    [InlineData(15)]
+    [InlineData(16)]
+    public void UniformPreparationLocationsMatchTheExtractedCircuit(int count)
+    {
+        // MeasureGroverSearch with r = 0 and nothing marked is the preparation and the measurement of the index register.
+        var width = CoinRegisters.SubpixelQubits(count);
+        Assert.Equal(Traced($"QuantumRayTracing.Search.MeasureGroverSearch({count}, [0, size = 0], 0)"), CoinNoiseLocations.UniformPreparation(count, width, 0) + width);
+    }
 
     [Fact]
     public void DirectCoinModelIsExact()

@@ -140,8 +140,8 @@ public static class NoiseReport
         text.AppendLine("counts readouts at the ideal distribution's two most likely values (y and 2^t − y). Acceptance as above: |observed − model|");
         text.AppendLine($"≤ δ + z·σ, δ = {F(ModelTolerance, "0.00")}, z = {F(NoiseCheck.Z, "0.00")}. The ideal column is the noiseless probability, which the simulator leaves far behind.");
         text.AppendLine();
-        text.AppendLine("| circuit | N | m or t | f | p | L | ideal | observed | model, s = 2/3 (direct: exact) | gap | gap/σ | within δ + zσ | model, fitted s |");
-        text.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|");
+        text.AppendLine("| circuit | N | m or t | f | p | L | ideal | observed | model, s = 2/3 (direct: exact) | σ | gap | gap/σ | within δ + zσ | model, fitted s |");
+        text.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|");
         // The direct coin's model has no harmful share to fit (it is exact).
         var shapes = rows.Where(r => r.Case.Kind != CoinKind.Direct).GroupBy(r => r.Case.Shape).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
         foreach (var r in rows)
@@ -152,10 +152,10 @@ public static class NoiseReport
             var sigma = r.StandardError(model);
             var fitted = shapes.TryGetValue(c.Shape, out var share) ? r.Predicted(new DepolarizingApproximation(share)) : predicted;
             var mean = c.Kind == CoinKind.Shifted ? c.HeadAmplitude : c.HeadAmplitude * c.HeadAmplitude;
-            text.AppendLine($"| {(c.IsQss ? "QSS" : $"{c.Kind.ToString()!.ToLowerInvariant()} coin")} | {c.Subpixels} | {(c.IsQss ? $"t = {c.CounterBits}" : $"m = {c.Iterations}")} | {F(mean, "0.000")} | {Rate(r.Noise.PerGate)} | {c.Locations} | {F(r.Ideal, "0.000")} | {F(r.Observed, "0.000")} | {F(predicted, "0.000")} | {F(gap, "+0.000;-0.000;0.000")} | {F(gap / sigma, "+0.0;-0.0;0.0")} | {(Math.Abs(gap) <= ModelTolerance + NoiseCheck.Z * sigma ? "yes" : "**no**")} | {F(fitted, "0.000")} |");
+            text.AppendLine($"| {(c.IsQss ? "QSS" : $"{c.Kind.ToString()!.ToLowerInvariant()} coin")} | {c.Subpixels} | {(c.IsQss ? $"t = {c.CounterBits}" : $"m = {c.Iterations}")} | {F(mean, "0.000")} | {Rate(r.Noise.PerGate)} | {c.Locations} | {F(r.Ideal, "0.000")} | {F(r.Observed, "0.000")} | {F(predicted, "0.000")} | {F(sigma, "0.000")} | {F(gap, "+0.000;-0.000;0.000")} | {F(gap / sigma, "+0.0;-0.0;0.0")} | {(Math.Abs(gap) <= ModelTolerance + NoiseCheck.Z * sigma ? "yes" : "**no**")} | {F(fitted, "0.000")} |");
         }
         text.AppendLine();
-        text.AppendLine("(f: the shifted coin's head amplitude f − E, else the mean (1/N) Σ F(i).)");
+        text.AppendLine("(f: the shifted coin's head amplitude f − E, else the mean (1/N) Σ F(i). σ: the binomial standard error at the model's probability.)");
         text.AppendLine();
         var worst = rows.Max(r => Math.Abs(r.Observed - r.Predicted(model)) - NoiseCheck.Z * r.StandardError(model));
         text.AppendLine($"Largest gap beyond z·σ at s = 2/3: {F(Math.Max(0, worst), "0.000")} (the tolerance δ is {F(ModelTolerance, "0.00")}).");

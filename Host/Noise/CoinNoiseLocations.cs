@@ -6,9 +6,7 @@ namespace QuantumRayTracing.Noise;
 /// <summary>
 /// Noise locations (one per qubit per operation, measurements included; <see cref="NoiseLocations"/>) of the
 /// supersampling circuits, in closed form from the gates the Q# operations and the standard library's
-/// decompositions apply (tested against the circuits the QDK extracts). Exact when the subpixel count N is a
-/// power of two; otherwise the uniform preparation's controlled rotations are counted as the plain H gates of the
-/// next power of two (an undercount), as <see cref="NoiseLocations.PrepareAndMeasure"/> does.
+/// decompositions apply (tested against the circuits the QDK extracts), for any subpixel count N.
 /// </summary>
 public static class CoinNoiseLocations
 {
@@ -25,8 +23,7 @@ public static class CoinNoiseLocations
         ArgumentNullException.ThrowIfNull(amplitudes);
         if (kind == CoinKind.Direct) return 1 + 1; // one Ry, one measurement
         var n = CoinRegisters.SubpixelQubits(amplitudes.Count);
-        var prepare = kind == CoinKind.Shifted ? 2L * n + Oracle(amplitudes, 0) : Prepare(amplitudes, 0);
-        return prepare + n + 1;
+        return PrepareCoin(kind, amplitudes) + n + 1;
     }
 
     /// <summary>
@@ -39,9 +36,8 @@ public static class CoinNoiseLocations
         ArgumentNullException.ThrowIfNull(amplitudes);
         if (kind == CoinKind.Direct) return 4;
         var n = CoinRegisters.SubpixelQubits(amplitudes.Count);
-        var prepare = kind == CoinKind.Shifted ? 2L * n + Oracle(amplitudes, 0) : Prepare(amplitudes, 0);
         var mark = kind == CoinKind.Shifted ? 2L * n + ControlledZ(n) : 1;
-        return mark + 2 * prepare + Reflection(n, 0) + 4;
+        return mark + 2 * PrepareCoin(kind, amplitudes) + Reflection(n, 0) + 4;
     }
 
     /// <summary>
@@ -63,12 +59,29 @@ public static class CoinNoiseLocations
         return t + Prepare(amplitudes, 0) + ((1L << counterBits) - 1) * controlledGrover + 2 * (t / 2) + inverseQft + t;
     }
 
-    // The mean coin's preparation under `controls` extra controls: H on every subpixel qubit (a controlled H is
-    // 8 locations) and the oracle.
-    private static long Prepare(IReadOnlyList<double> amplitudes, int controls)
+    // A coin's preparation A, never under control: the shifted coin undoes its uniform superposition after the oracle.
+    private static long PrepareCoin(CoinKind kind, IReadOnlyList<double> amplitudes) =>
+        kind == CoinKind.Shifted
+            ? 2 * UniformPreparation(amplitudes.Count, CoinRegisters.SubpixelQubits(amplitudes.Count), 0) + Oracle(amplitudes, 0)
+            : Prepare(amplitudes, 0);
+
+    // The mean coin's preparation under `controls` extra controls: the uniform superposition and the oracle.
+    private static long Prepare(IReadOnlyList<double> amplitudes, int controls) =>
+        UniformPreparation(amplitudes.Count, CoinRegisters.SubpixelQubits(amplitudes.Count), controls) + Oracle(amplitudes, controls);
+
+    /// <summary>
+    /// Locations of <c>PrepareUniformSuperposition(count, register)</c> on <paramref name="width"/> qubits under
+    /// <paramref name="controls"/> extra controls, following its recursion: a power of two is H on every qubit; a count
+    /// above the lower half rotates the top qubit (Ry), spreads the lower half by H under the top qubit's |0⟩ (X on it
+    /// before and after, uncontrolled) and prepares the rest under its |1⟩, one control more; a smaller count recurses
+    /// on the lower qubits.
+    /// </summary>
+    public static long UniformPreparation(int count, int width, int controls)
     {
-        var n = CoinRegisters.SubpixelQubits(amplitudes.Count);
-        return n * (controls == 0 ? 1L : 8L) + Oracle(amplitudes, controls);
+        if (count == 1 << width) return width * ControlledH(controls);
+        var lowerHalf = 1 << (width - 1);
+        if (count <= lowerHalf) return UniformPreparation(count, width - 1, controls);
+        return ControlledRy(controls) + 2 + (width - 1) * ControlledH(controls + 1) + UniformPreparation(count - lowerHalf, width - 1, controls + 1);
     }
 
     // The shader oracle: per non-zero amplitude a_i, X on the subpixel qubits where i has a 0 bit and back, around
@@ -92,14 +105,22 @@ public static class CoinNoiseLocations
     /// </summary>
     public static long ControlledRy(int controls) => controls == 0 ? 1 : 10 + 6L * (controls - 1);
 
-    /// <summary>
-    /// Z with c controls: Z (1); CZ (2); two controls H·CCX·H (5); more: a ladder of CCX into auxiliaries around
-    /// that, done and undone (6 per control past the second).
-    /// </summary>
+    /// <summary>H with c controls: H (1); otherwise S, H, T, X with the c controls, T†, H, S† (6 and the controlled X).</summary>
+    public static long ControlledH(int controls) => controls == 0 ? 1 : 6 + ControlledX(controls);
+
+    /// <summary>X with c controls: X (1), CX (2), CCX (3); more: a ladder of CCX into auxiliaries around one CCX, done and undone.</summary>
+    public static long ControlledX(int controls) => controls switch
+    {
+        0 => 1,
+        1 => 2,
+        _ => 3 + 6L * (controls - 2),
+    };
+
+    /// <summary>Z with c controls: Z (1); CZ (2); more: H on the target around X with the c controls.</summary>
     public static long ControlledZ(int controls) => controls switch
     {
         0 => 1,
         1 => 2,
-        _ => 5 + 6L * (controls - 2),
+        _ => 2 + ControlledX(controls),
     };
 }
