@@ -137,8 +137,10 @@ public static class NoiseReport
         text.AppendLine();
         text.AppendLine($"**The check.** Each circuit run {shots} times on the noisy full-state simulator (`--engine fullstate --noise p`), with");
         text.AppendLine("the mean coin's amplitudes √F(i) and the shifted coin's F(i) − E as the estimators make them. A coin counts heads; a QSS run");
-        text.AppendLine("counts readouts at the ideal distribution's two most likely values (y and 2^t − y). Acceptance as above: |observed − model|");
-        text.AppendLine($"≤ δ + z·σ, δ = {F(ModelTolerance, "0.00")}, z = {F(NoiseCheck.Z, "0.00")}. The ideal column is the noiseless probability, which the simulator leaves far behind.");
+        text.AppendLine("counts readouts at the ideal distribution's two most likely values (y and 2^t − y). Acceptance: |observed − model| ≤ δ + z·σ,");
+        text.AppendLine($"σ the binomial standard error at the model's probability, z = {F(NoiseCheck.Z, "0.00")} (two-sided false-failure 1e-6 per comparison), δ = {F(ModelTolerance, "0.00")}");
+        text.AppendLine("the approximation's own tolerance, the same as for the searches. The ideal column is the noiseless probability, which the");
+        text.AppendLine("simulator leaves far behind.");
         text.AppendLine();
         text.AppendLine("| circuit | N | m or t | f | p | L | ideal | observed | model, s = 2/3 (direct: exact) | σ | gap | gap/σ | within δ + zσ | model, fitted s |");
         text.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|");
@@ -181,7 +183,7 @@ public static class NoiseReport
         var series = rows.GroupBy(r => r.Case.IsQss ? $"QSS N={r.Case.Subpixels} t={r.Case.CounterBits}" : $"{r.Case.Kind.ToString()!.ToLowerInvariant()} N={r.Case.Subpixels} m={r.Case.Iterations}")
             .Select(g => (g.Key, (IReadOnlyList<(double, double)>)g.Select(r => (r.Noise.PerGate, r.Observed - r.Predicted(model))).ToArray()))
             .ToArray();
-        text.AppendLine(plot("supersampling-check", NoisePlots.LogX("Observed - model (coin heads, QSS peak readouts), depolarizing Pauli noise p per gate (s = 2/3)", "per-gate error p", "observed - model", series, 0, "model"),
+        text.AppendLine(plot("supersampling-check", NoisePlots.LogX("Observed - model (coin heads, QSS peak readouts), depolarizing Pauli noise p per gate (s = 2/3; direct coin exact)", "per-gate error p", "observed - model", series, 0, "model"),
             "Gap between the noisy simulator and the depolarizing approximation of the coins and QSS against the per-gate error"));
         text.AppendLine();
     }
