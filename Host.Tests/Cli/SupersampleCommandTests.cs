@@ -148,6 +148,51 @@ public sealed class SupersampleCommandTests : IDisposable
         Assert.NotEqual(File.ReadAllBytes(_scratch.File("a.png")), File.ReadAllBytes(_scratch.File("c.png")));
     }
 
+    [Theory]
+    [InlineData("qcoin")]
+    [InlineData("qss")]
+    public void NoiseZeroGivesTheNoiselessBytesAndNoisySeedsRepeat(string method)
+    {
+        // --noise 0 is the ideal machine: the same draws as no --noise. A noisy analytic run is seeded like any
+        // other: the same seed gives the same bytes, and at p = 1e-2 the image differs from the ideal one.
+        var input = WriteImage("in.png", 12, 8, (x, y) => ((byte)(x * 20 + y), (byte)(100 + x * y), (byte)(255 - 9 * y)));
+        string[] Args(string output, params string[] extra) => ["supersample", "--image", input, "-m", method, "--subpixels", "4", "--seed", "7", "-o", _scratch.File(output), .. extra];
+        Assert.Equal(0, Run(Args("plain.png")).Code);
+        Assert.Equal(0, Run(Args("zero.png", "--noise", "0")).Code);
+        Assert.Equal(0, Run(Args("noisy-a.png", "--noise", "0.01")).Code);
+        Assert.Equal(0, Run(Args("noisy-b.png", "--noise", "0.01")).Code);
+        var plain = File.ReadAllBytes(_scratch.File("plain.png"));
+        Assert.Equal(plain, File.ReadAllBytes(_scratch.File("zero.png")));
+        Assert.Equal(File.ReadAllBytes(_scratch.File("noisy-a.png")), File.ReadAllBytes(_scratch.File("noisy-b.png")));
+        Assert.NotEqual(plain, File.ReadAllBytes(_scratch.File("noisy-a.png")));
+    }
+
+    [Fact]
+    public void NoisyRunNamesItsModel()
+    {
+        var input = WriteImage("in.png", 8, 8, (x, y) => ((byte)(x * 30), (byte)(y * 30), 9));
+        var (code, output, _) = ConsoleCapture.RunCapturingOutput("supersample", "--image", input, "-m", "mc", "--subpixels", "4", "--noise", "0.003",
+            "-o", _scratch.File("out.png"), "--json", _scratch.File("run.json"));
+        Assert.Equal(0, code);
+        const string description = "depolarizing Pauli noise p = 0.003 per gate and qubit (p/3 each of X, Y, Z), global depolarizing approximation";
+        Assert.Contains($"noise model: {description}", output);
+        var noise = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(_scratch.File("run.json")))!["noise"]!;
+        Assert.Equal("pauli, depolarizing approximation", (string?)noise["model"]);
+        Assert.Equal(0.001, (double)noise["rates"]!["px"]!, 12);
+        Assert.StartsWith(description, (string?)noise["description"]);
+    }
+
+    [Fact]
+    public void QubitLossOnTheAnalyticEngineIsOneUsageLineBeforeAnyWork()
+    {
+        var input = WriteImage("in.png", 8, 8, (_, _) => (5, 5, 5));
+        var (code, error) = Run("supersample", "--image", input, "--subpixels", "4", "--qubit-loss", "0.01", "-o", _scratch.File("out.png"));
+        Assert.NotEqual(0, code);
+        Assert.Contains("--qubit-loss: the analytic engine does not model qubit loss", error);
+        Assert.Single(error.Trim().Split('\n'));
+        Assert.Equal(["in.png"], _scratch.FileNames());
+    }
+
     [Fact]
     public void ImageNotAMultipleOfTheSubpixelsIsRefused()
     {

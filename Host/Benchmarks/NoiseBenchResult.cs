@@ -8,6 +8,7 @@ public sealed record NoiseBenchResult(
     string Machine,
     TimeSpan Elapsed,
     IReadOnlyList<NoiseCheckRow> Check,
+    IReadOnlyList<SupersamplingCheckRow> Supersampling,
     IReadOnlyList<NoiseBenchmark.DeviceRun> Device,
     CircuitCounts? DeviceSearch,
     CircuitCounts? DeviceOracle,

@@ -3,8 +3,8 @@ using QuantumRayTracing.Scenes;
 namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>What `bench noise` measures.</summary>
-/// <param name="Parts">Any of "model" (the approximation against the simulator), "device" (fig. 15), "render" (rendering under noise).</param>
-/// <param name="Shots">Runs per case of the model check.</param>
+/// <param name="Parts">Any of "model" (the approximation against the simulator), "supersampling" (the same for the coins and QSS), "device" (fig. 15), "render" (rendering under noise).</param>
+/// <param name="Shots">Runs per case of the model checks.</param>
 /// <param name="DeviceShots">Measurements per error rate of the device experiment.</param>
 /// <param name="Scenes">The scenes rendered under noise, by name.</param>
 /// <param name="Size">Pixels per side of the analytic renders.</param>
@@ -21,7 +21,7 @@ public sealed record NoiseBenchSettings(
     IReadOnlyList<double> ConfirmRates,
     int Workers)
 {
-    public static readonly string[] AllParts = ["model", "device", "render"];
+    public static readonly string[] AllParts = ["model", "supersampling", "device", "render"];
 
     /// <summary>The scenes the render part uses, from the scene directory.</summary>
     public static readonly string[] RenderScenes = ["qornell-64", "depth-complexity-64"];
@@ -33,6 +33,7 @@ public sealed record NoiseBenchSettings(
     public IEnumerable<string> PlotNames()
     {
         if (Parts.Contains("model")) yield return "model-check";
+        if (Parts.Contains("supersampling")) yield return "supersampling-check";
         if (Parts.Contains("device"))
         {
             yield return "device-histograms";

@@ -5,6 +5,7 @@ using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Benchmarks;
 
@@ -24,6 +25,7 @@ public static class NoiseBenchmark
         void Say(string message) => progress($"{message} ({clock.Elapsed.TotalSeconds:0} s so far)");
         string machine;
         IReadOnlyList<NoiseCheckRow> check = [];
+        IReadOnlyList<SupersamplingCheckRow> supersampling = [];
         IReadOnlyList<DeviceRun> device = [];
         CircuitCounts? deviceSearch = null, deviceOracle = null;
         using (var pool = new BridgePool(settings.Workers))
@@ -34,6 +36,11 @@ public static class NoiseBenchmark
             {
                 Say($"model check: {CheckRequests().Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
                 check = NoiseCheck.Measure(pool, CheckRequests(), CheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots);
+            }
+            if (settings.Parts.Contains("supersampling"))
+            {
+                Say($"supersampling model check: {SupersamplingCheckCases().Count} circuits x {SupersamplingCheckRates.Length} error rates x {settings.Shots} shots");
+                supersampling = SupersamplingNoiseCheck.Measure(pool, SupersamplingCheckCases(), SupersamplingCheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots);
             }
             if (settings.Parts.Contains("device"))
             {
@@ -63,7 +70,7 @@ public static class NoiseBenchmark
                 }
             }
         }
-        return new NoiseBenchResult(machine, clock.Elapsed, check, device, deviceSearch, deviceOracle, sweeps, confirmations);
+        return new NoiseBenchResult(machine, clock.Elapsed, check, supersampling, device, deviceSearch, deviceOracle, sweeps, confirmations);
     }
 
     /// <summary>Gate counts and depth of a Q# call's circuit, as the bridge summarises it.</summary>
@@ -96,6 +103,34 @@ public static class NoiseBenchmark
             new(device.Table.Marked(device.Window), 1, device),
             new(eight.Table.Marked(eight.Window), 1, eight),
             new(eight.Table.Marked(eight.Window), 2, eight),
+        ];
+    }
+
+    /// <summary>Per-gate error rates of the supersampling model check: the coins' and QSS's fidelities span about 0.99 to 0 over them.</summary>
+    public static readonly double[] SupersamplingCheckRates = [3e-4, 1e-3, 3e-3, 1e-2];
+
+    /// <summary>
+    /// The supersampling model check's circuits: the mean and the shifted (QCoin) coin over 4 subpixels at m = 0, 1, 2,
+    /// the mean coin over 16 subpixels (4x4, the default supersampling tile) at m = 1, the direct single-qubit coin (the
+    /// QCoin paper's hardware coin) at f = 0.1 and m = 4 and 16, and QSS readouts over 4 subpixels with 3 counter bits and
+    /// over 16 with 2. Means away from ½, where the amplified head probability sits far from the ½ noise pulls it to (the mean
+    /// coin's 0.0955 = sin²(π/10) gives a certain head at m = 2).
+    /// </summary>
+    public static IReadOnlyList<SupersamplingCheckCase> SupersamplingCheckCases()
+    {
+        var mean = SubpixelValues.MeanCoin([0.05, 0.2, 0.1, 0.032]);
+        var shifted = SubpixelValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
+        var tile = SubpixelValues.MeanCoin(Enumerable.Range(0, 16).Select(i => (i * 7 % 16) / 20.0).ToArray());
+        double[] direct = [Math.Sqrt(0.1)];
+        return
+        [
+            .. Enumerable.Range(0, 3).Select(m => SupersamplingCheckCase.Coin(CoinKind.Mean, mean, m)),
+            .. Enumerable.Range(0, 3).Select(m => SupersamplingCheckCase.Coin(CoinKind.Shifted, shifted, m)),
+            SupersamplingCheckCase.Coin(CoinKind.Mean, tile, 1),
+            SupersamplingCheckCase.Coin(CoinKind.Direct, direct, 4),
+            SupersamplingCheckCase.Coin(CoinKind.Direct, direct, 16),
+            SupersamplingCheckCase.Qss(mean, 3),
+            SupersamplingCheckCase.Qss(tile, 2),
         ];
     }
 

@@ -3,6 +3,7 @@ using System.Text;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Benchmarks;
 
@@ -28,12 +29,14 @@ public static class NoiseReport
         var text = new StringBuilder();
         text.AppendLine("# Hardware noise");
         text.AppendLine();
-        text.AppendLine("What Pauli noise does to the quantum searches: the analytic noise model proven against the noisy simulator, the ray tracing");
-        text.AppendLine("paper's device experiment (sec. 8, fig. 15) reproduced on the simulator, and what noise costs a render.");
+        text.AppendLine("What Pauli noise does to the quantum circuits: the analytic noise model of the searches and of the supersampling coins and");
+        text.AppendLine("QSS readouts proven against the noisy simulator, the ray tracing paper's device experiment (sec. 8, fig. 15) reproduced on");
+        text.AppendLine("the simulator, and what noise costs a render.");
         text.AppendLine();
         text.AppendLine($"Regenerate: `{command}` ({F(result.Elapsed.TotalMinutes, "0.0")} min). Machine: {result.Machine}.");
         text.AppendLine();
         if (settings.Parts.Contains("model")) Model(text, result.Check, settings.Shots, plot, result.Machine);
+        if (settings.Parts.Contains("supersampling")) SupersamplingCheck(text, result.Supersampling, settings.Shots, plot, result.Machine);
         if (settings.Parts.Contains("device")) Device(text, result.Device, settings.DeviceShots, result.DeviceSearch!, result.DeviceOracle!, plot, result.Machine);
         if (settings.Parts.Contains("render")) Render(text, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize, plot, result.Machine);
         return text.ToString();
@@ -111,6 +114,77 @@ public static class NoiseReport
             .ToArray();
         text.AppendLine(plot("model-check", NoisePlots.LogX("Observed - model P(marked), depolarizing Pauli noise p per gate (s = 2/3)", "per-gate error p", "observed - model", series, 0, "model"),
             "Gap between the noisy simulator and the depolarizing approximation against the per-gate error"));
+        text.AppendLine();
+    }
+
+    public static void SupersamplingCheck(StringBuilder text, IReadOnlyList<SupersamplingCheckRow> rows, int shots, PlotSink plot, string machine)
+    {
+        var model = DepolarizingApproximation.Default;
+        text.AppendLine("## The supersampling circuits under noise: the model against the noisy simulator");
+        text.AppendLine();
+        text.AppendLine("**The approximation** (`SupersamplingNoise`, used by `supersample --engine analytic --noise p`): the same global depolarizing");
+        text.AppendLine("form. A coin flip after m Grover operators shows a head with probability Φ · sin²((2m+1)θ) + (1 − Φ) · u, and a QSS readout");
+        text.AppendLine("is the ideal distribution mixed towards uniform over its 2^t values: Φ · P(y) + (1 − Φ) / 2^t. Φ = (1 − p)^(s · L) over the");
+        text.AppendLine("circuit's noise locations L (`CoinNoiseLocations`, closed forms checked against the circuits the QDK extracts), so");
+        text.AppendLine("Φ = F₀ · F^m with F = (1 − p)^(s · L_operator) per Grover operator; the preparation and measurement count by their own");
+        text.AppendLine("locations as F₀ (not as half an operator: for the mean coin they come to about F^(1/2) anyway). u is what a maximally mixed");
+        text.AppendLine("register reads as a head: ½ for the mean coin (head = coin qubit |1⟩) and the direct coin, 1/2^(n+1) for QCoin's shifted");
+        text.AppendLine("coin, whose head also needs its n subpixel qubits at 0. The direct coin is the QCoin paper's hardware coin (sec. 6): one");
+        text.AppendLine("qubit, √(1 − f)|0⟩ + √f|1⟩ by one Ry, a Grover operator of four gates (A Z A† Z), L = 2 + 4m. Its model is exact, with no s:");
+        text.AppendLine("on one qubit a Pauli error of total probability p (p/3 each) is the depolarizing channel ρ → (1 − 4p/3) ρ + (4p/3) I/2,");
+        text.AppendLine("which commutes with every gate, so Φ = (1 − 4p/3)^L (s = 2/3 would undercount its harm: a qubit in superposition has no");
+        text.AppendLine("harmless Pauli error, and the 4/3 counts the channel's own I/2 share).");
+        text.AppendLine();
+        text.AppendLine($"**The check.** Each circuit run {shots} times on the noisy full-state simulator (`--engine fullstate --noise p`), with");
+        text.AppendLine("the mean coin's amplitudes √F(i) and the shifted coin's F(i) − E as the estimators make them. A coin counts heads; a QSS run");
+        text.AppendLine("counts readouts at the ideal distribution's two most likely values (y and 2^t − y). Acceptance: |observed − model| ≤ δ + z·σ,");
+        text.AppendLine($"σ the binomial standard error at the model's probability, z = {F(NoiseCheck.Z, "0.00")} (two-sided false-failure 1e-6 per comparison), δ = {F(ModelTolerance, "0.00")}");
+        text.AppendLine("the approximation's own tolerance, the same as for the searches. The ideal column is the noiseless probability, which the");
+        text.AppendLine("simulator leaves far behind.");
+        text.AppendLine();
+        text.AppendLine("| circuit | N | m or t | f | p | L | ideal | observed | model, s = 2/3 (direct: exact) | σ | gap | gap/σ | within δ + zσ | model, fitted s |");
+        text.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|");
+        // The direct coin's model has no harmful share to fit (it is exact).
+        var shapes = rows.Where(r => r.Case.Kind != CoinKind.Direct).GroupBy(r => r.Case.Shape).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
+        foreach (var r in rows)
+        {
+            var c = r.Case;
+            var predicted = r.Predicted(model);
+            var gap = r.Observed - predicted;
+            var sigma = r.StandardError(model);
+            var fitted = shapes.TryGetValue(c.Shape, out var share) ? r.Predicted(new DepolarizingApproximation(share)) : predicted;
+            var mean = c.Kind == CoinKind.Shifted ? c.HeadAmplitude : c.HeadAmplitude * c.HeadAmplitude;
+            text.AppendLine($"| {(c.IsQss ? "QSS" : $"{c.Kind.ToString()!.ToLowerInvariant()} coin")} | {c.Subpixels} | {(c.IsQss ? $"t = {c.CounterBits}" : $"m = {c.Iterations}")} | {F(mean, "0.000")} | {Rate(r.Noise.PerGate)} | {c.Locations} | {F(r.Ideal, "0.000")} | {F(r.Observed, "0.000")} | {F(predicted, "0.000")} | {F(sigma, "0.000")} | {F(gap, "+0.000;-0.000;0.000")} | {F(gap / sigma, "+0.0;-0.0;0.0")} | {(Math.Abs(gap) <= ModelTolerance + NoiseCheck.Z * sigma ? "yes" : "**no**")} | {F(fitted, "0.000")} |");
+        }
+        text.AppendLine();
+        text.AppendLine("(f: the shifted coin's head amplitude f − E, else the mean (1/N) Σ F(i). σ: the binomial standard error at the model's probability.)");
+        text.AppendLine();
+        var worst = rows.Max(r => Math.Abs(r.Observed - r.Predicted(model)) - NoiseCheck.Z * r.StandardError(model));
+        text.AppendLine($"Largest gap beyond z·σ at s = 2/3: {F(Math.Max(0, worst), "0.000")} (the tolerance δ is {F(ModelTolerance, "0.00")}).");
+        var direct = rows.Where(r => r.Case.Kind == CoinKind.Direct).ToArray();
+        if (direct.Length > 0)
+            text.AppendLine($"The direct coin's exact model: largest |gap|/σ {F(direct.Max(r => Math.Abs(r.Observed - r.Predicted(model)) / r.StandardError(model)), "0.0")} over its {direct.Length} rows (sampling error alone).");
+        var rejected = rows.Count(r => Math.Abs(r.Observed - r.Ideal) > ModelTolerance + NoiseCheck.Z * r.StandardError(model));
+        text.AppendLine($"The ideal (noiseless) probability falls outside the same acceptance region in {rejected} of {rows.Count} rows.");
+        text.AppendLine();
+        text.AppendLine("**Fitted s per circuit shape** (least squares in units of σ over the shape's rows), and the fidelities it gives: F per Grover");
+        text.AppendLine("operator for a coin (Φ of a whole run for QSS) at two error rates:");
+        text.AppendLine();
+        text.AppendLine("| circuit | fitted s | L per operator (QSS: per run) | F at p = 1e-3, s = 2/3 | F at p = 1e-3, fitted s | F at p = 1e-2, fitted s |");
+        text.AppendLine("|---|---:|---:|---:|---:|---:|");
+        foreach (var (shape, s) in shapes)
+        {
+            var c = rows.First(r => r.Case.Shape == shape).Case;
+            long locations = c.Kind is { } kind ? CoinNoiseLocations.GroverOperator(kind, c.Amplitudes) : c.Locations;
+            var fitted = new DepolarizingApproximation(s);
+            text.AppendLine($"| {shape} | {F(s, "0.000")} | {locations} | {F(model.Fidelity(NoiseModel.Depolarizing(1e-3), locations), "0.000")} | {F(fitted.Fidelity(NoiseModel.Depolarizing(1e-3), locations), "0.000")} | {F(fitted.Fidelity(NoiseModel.Depolarizing(1e-2), locations), "0.000")} |");
+        }
+        text.AppendLine();
+        var series = rows.GroupBy(r => r.Case.IsQss ? $"QSS N={r.Case.Subpixels} t={r.Case.CounterBits}" : $"{r.Case.Kind.ToString()!.ToLowerInvariant()} N={r.Case.Subpixels} m={r.Case.Iterations}")
+            .Select(g => (g.Key, (IReadOnlyList<(double, double)>)g.Select(r => (r.Noise.PerGate, r.Observed - r.Predicted(model))).ToArray()))
+            .ToArray();
+        text.AppendLine(plot("supersampling-check", NoisePlots.LogX("Observed - model (coin heads, QSS peak readouts), depolarizing Pauli noise p per gate (s = 2/3; direct coin exact)", "per-gate error p", "observed - model", series, 0, "model"),
+            "Gap between the noisy simulator and the depolarizing approximation of the coins and QSS against the per-gate error"));
         text.AppendLine();
     }
 

@@ -10,9 +10,10 @@ namespace QuantumRayTracing.Benchmarks;
 /// The ray searches a soak renders with, one per render, built as `render` builds them
 /// (<see cref="EngineOptions.CreateHitSearch"/>), with the fullstate and gate engines on one bridge pool
 /// for the whole soak: each render would otherwise start and compile fresh Node bridges, seconds per
-/// render. Disposing stops the bridges.
+/// render. That pool is <paramref name="shared"/> when given (a cluster's, left running), else started here and
+/// stopped on disposing.
 /// </summary>
-public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultMaxQubits) : IDisposable
+public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultMaxQubits, BridgePool? shared = null) : IDisposable
 {
     private BridgePool? _pool;
 
@@ -25,13 +26,14 @@ public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultM
             kind == EngineKind.Gate ? maxQubits : null, simulated ? Pool : null);
     }
 
-    private BridgePool Pool => _pool ??= new BridgePool(workers);
+    private BridgePool Pool => shared ?? (_pool ??= new BridgePool(workers));
 
     /// <summary>The qsharp-lang and Node versions of the bridges, or nulls when no simulator ran.</summary>
     public (string? QSharp, string? Node) Versions()
     {
-        if (_pool is null || _pool.Bridges[0].QSharpVersion is null) return (null, null);
-        var version = _pool.Bridges[0].Version();
+        var pool = shared ?? _pool;
+        if (pool is null || pool.Bridges[0].QSharpVersion is null) return (null, null);
+        var version = pool.Bridges[0].Version();
         return (version["qsharp"]?.GetValue<string>(), version["node"]?.GetValue<string>());
     }
 

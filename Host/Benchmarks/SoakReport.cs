@@ -1,10 +1,10 @@
 using System.Globalization;
-using System.Text;
 using QuantumRayTracing.Cli;
+using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Benchmarks;
 
-/// <summary>A soak's rows as table cells, and as the Markdown report `bench soak -o` writes (docs/soak.md).</summary>
+/// <summary>A soak's rows as table cells, and as the report `bench soak -o` writes (docs/soak.md).</summary>
 public static class SoakReport
 {
     public static readonly string[] Columns =
@@ -49,30 +49,30 @@ public static class SoakReport
     public static string Summary(IReadOnlyList<SoakRow> rows) =>
         $"{rows.Count(r => r.Status == SoakStatus.Ok)} ok, {rows.Count(r => r.Status == SoakStatus.Failed)} FAILED, {rows.Count(r => r.Status == SoakStatus.Skipped)} skipped";
 
-    /// <summary>The report's body: what was run and checked, the table and the summary (the caller adds the machine and command).</summary>
-    public static StringBuilder Markdown(IReadOnlyList<SoakRow> rows, SoakSettings settings, TimeSpan total)
+    public const string Title = "Soak: every scene on every engine";
+
+    /// <summary>The report: what was run and checked, the table and the summary.</summary>
+    public static Report Of(IReadOnlyList<SoakRow> rows, SoakSettings settings, TimeSpan total)
     {
-        var text = new StringBuilder();
-        text.AppendLine("# Soak: every scene on every engine");
-        text.AppendLine();
-        text.AppendLine($"Every scene file rendered on {string.Join(", ", settings.Engines.Select(EngineOptions.Name))} with seeds {string.Join(" and ", settings.Seeds)}");
-        text.AppendLine($"through `render`'s default pipeline at {settings.Size}x{settings.Size} pixels (the gate engine at {settings.GateSize}x{settings.GateSize}), {settings.Iterations} TracePass and {settings.ShadowIterations} DirectPass rounds,");
-        text.AppendLine($"{settings.AreaSamples} area samples and {settings.Vpl} VPLs per point. Each render is checked: no exception; finite radiance and a PNG that");
-        text.AppendLine("decodes to its pixels; the classical engine equal to the classical reference, the quantum engines (analytic, fullstate,");
-        text.AppendLine($"gate) at most the #Dpix bound from it (the {1 - DifferentPixelBound.FalseFailure:0.######} quantile of Binomial(pixels, {DifferentPixelBound.Rate})); the seedable engines");
-        text.AppendLine("(classical, randomized, analytic) render each seed twice and must give the same PNG bytes at the same search cost;");
-        text.AppendLine("another seed must change the analytic and randomized renders (the image, or where the seeds give the same image, the");
-        text.AppendLine("search cost) and the classical image exactly when the scene samples light. The fullstate and gate engines cannot be");
-        text.AppendLine($"seeded. The gate engine skips a render forecast to take over {settings.GateBudget.TotalSeconds:0} s (rays x N^2.5 x {GateCostEstimate.SecondsPerRayUnit * 1e6:0} µs) and a search");
-        text.AppendLine("wider than its qubit limit" + (settings.SimulatorsOnSmallestSceneOnly ? "; in this short form fullstate and gate run on the smallest scene only." : "."));
-        text.AppendLine("Int/Ray is the conservative count averaged over the seeds; wall time is per render. See [reliability.md](reliability.md).");
-        text.AppendLine();
-        text.AppendLine("| " + string.Join(" | ", Columns) + " |");
-        text.AppendLine("|" + string.Concat(Enumerable.Repeat("---|", Columns.Length)));
-        foreach (var row in rows) text.AppendLine("| " + string.Join(" | ", Cells(row).Select(c => c.Replace("|", "\\|"))) + " |");
-        text.AppendLine();
-        text.AppendLine($"{Summary(rows)}; {Time(total)} in all.");
-        return text;
+        var report = new Report(Title);
+        report.Text($"""
+            Every scene file rendered on {string.Join(", ", settings.Engines.Select(EngineOptions.Name))} with seeds {string.Join(" and ", settings.Seeds)}
+            through `render`'s default pipeline at {settings.Size}x{settings.Size} pixels (the gate engine at {settings.GateSize}x{settings.GateSize}), {settings.Iterations} TracePass and {settings.ShadowIterations} DirectPass rounds,
+            {settings.AreaSamples} area samples and {settings.Vpl} VPLs per point. Each render is checked: no exception; finite radiance and a PNG that
+            decodes to its pixels; the classical engine equal to the classical reference, the quantum engines (analytic, fullstate,
+            gate) at most the #Dpix bound from it (the {1 - DifferentPixelBound.FalseFailure:0.######} quantile of Binomial(pixels, {DifferentPixelBound.Rate})); the seedable engines
+            (classical, randomized, analytic) render each seed twice and must give the same PNG bytes at the same search cost;
+            another seed must change the analytic and randomized renders (the image, or where the seeds give the same image, the
+            search cost) and the classical image exactly when the scene samples light. The fullstate and gate engines cannot be
+            seeded. The gate engine skips a render forecast to take over {settings.GateBudget.TotalSeconds:0} s (rays x N^2.5 x {GateCostEstimate.SecondsPerRayUnit * 1e6:0} µs) and a search
+            wider than its qubit limit{(settings.SimulatorsOnSmallestSceneOnly ? "; in this short form fullstate and gate run on the smallest scene only." : ".")}
+            Int/Ray is the conservative count averaged over the seeds; wall time is per render. See [reliability.md](reliability.md).
+            """);
+        var table = new TextTable("soak", Columns);
+        foreach (var row in rows) table.Row(Cells(row));
+        report.Table(table);
+        report.Text($"{Summary(rows)}; {Time(total)} in all.");
+        return report;
     }
 
     private static string Time(TimeSpan time) => time.TotalSeconds < 100

@@ -1,3 +1,4 @@
+using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Rendering;
@@ -9,7 +10,8 @@ namespace QuantumRayTracing.Benchmarks;
 /// the gate engine, which simulates every comparator of its oracle and gets <see cref="GateSize"/>), the
 /// TracePass and DirectPass rounds, the area samples and VPLs, and how the two Q# simulator engines are
 /// kept to a bounded time: the gate engine by <see cref="GateBudget"/>, and in the short form (<see
-/// cref="SimulatorsOnSmallestSceneOnly"/>) both of them only on the scene with the fewest primitives.
+/// cref="SimulatorsOnSmallestSceneOnly"/>) both of them only on the scene with the fewest primitives. The two
+/// run on <see cref="Pool"/>'s bridges when given (a cluster), else on <see cref="Workers"/> local ones.
 /// Everything else is `render`'s default pipeline (<see cref="RenderDefaults"/>).
 /// </summary>
 public sealed record SoakSettings(
@@ -24,7 +26,8 @@ public sealed record SoakSettings(
     TimeSpan GateBudget,
     bool SimulatorsOnSmallestSceneOnly,
     int Workers,
-    int MaxQubits = GateEngine.DefaultMaxQubits)
+    int MaxQubits = GateEngine.DefaultMaxQubits,
+    BridgePool? Pool = null)
 {
     /// <summary>Every engine, in the order the report lists them: the reference first, the simulators last.</summary>
     public static readonly EngineKind[] AllEngines =

@@ -5,7 +5,7 @@ using QuantumRayTracing.Output;
 namespace QuantumRayTracing.Cli;
 
 /// <summary>
-/// `bench noise`: the depolarizing approximation against the noisy simulator, the paper's device experiment
+/// `bench noise`: the depolarizing approximation against the noisy simulator (searches, coins and QSS), the paper's device experiment
 /// (fig. 15) under Pauli noise, and rendering under noise; writes docs/noise.md and its plots.
 /// </summary>
 public sealed class BenchNoiseCommand : Command
@@ -16,7 +16,7 @@ public sealed class BenchNoiseCommand : Command
 
     private readonly Option<int> _shots = new("--shots")
     {
-        Description = "Runs per case of the model check.",
+        Description = "Runs per case of the model checks (searches, coins and QSS).",
         DefaultValueFactory = _ => 2000,
     };
 
@@ -47,7 +47,7 @@ public sealed class BenchNoiseCommand : Command
 
     private readonly Option<string[]> _parts = new("--parts")
     {
-        Description = "Which parts to run and report: model (the approximation against the simulator), device (fig. 15), render (rendering under noise).",
+        Description = "Which parts to run and report: model (the approximation against the simulator), supersampling (the same for the coins and QSS readouts), device (fig. 15), render (rendering under noise).",
         DefaultValueFactory = _ => NoiseBenchSettings.AllParts,
         AllowMultipleArgumentsPerToken = true,
     };
@@ -70,7 +70,7 @@ public sealed class BenchNoiseCommand : Command
         _parts.Validators.Add(r =>
         {
             foreach (var part in r.GetValueOrDefault<string[]>() ?? [])
-                if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of model, device, render");
+                if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of {string.Join(", ", NoiseBenchSettings.AllParts)}");
         });
         _shots.Between(100, 1_000_000);
         _deviceShots.Between(16, 1_000_000);

@@ -48,12 +48,12 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
         Description = "Also write every table of the report as CSV beside it (<report>-<table>.csv), for scripts. Needs --output.",
     };
 
-    /// <summary>Adds the shared options; <paramref name="cluster"/> for experiments that run Q# engines.</summary>
-    public void AddTo(Command command, bool scenes = true, bool seed = true, bool cluster = false)
+    /// <summary>Adds the shared options; <paramref name="cluster"/> for experiments that run Q# engines, no <paramref name="workers"/> for those that start no bridges.</summary>
+    public void AddTo(Command command, bool scenes = true, bool seed = true, bool cluster = false, bool workers = true)
     {
         if (scenes) command.Options.Add(Scenes);
         if (seed) command.Options.Add(Seed);
-        command.Options.Add(Workers);
+        if (workers) command.Options.Add(Workers);
         if (cluster) command.Options.Add(Cluster);
         command.Options.Add(Output);
         command.Options.Add(Csv);

@@ -1,6 +1,5 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
-using System.Diagnostics;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
@@ -93,7 +92,7 @@ public sealed class BenchSoakCommand : Command
         Options.Add(_vpl);
         Options.Add(_gateBudget);
         Options.Add(_maxQubits);
-        _report.AddTo(this, scenes: false, seed: false);
+        _report.AddTo(this, scenes: false, seed: false, cluster: true);
         _engines.CustomParser = ParseEngines;
         _seeds.Validators.Add(r =>
         {
@@ -115,13 +114,14 @@ public sealed class BenchSoakCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var report = _report.Report(parse);
+        var writer = _report.Writer(parse);
         var directory = parse.GetValue(_scenes)?.FullName ?? RepositoryScenes(Environment.CurrentDirectory)
             ?? throw new UserError("--scenes: no Scenes/ folder of this repository above the current directory; name the scene directory");
         if (!Directory.Exists(directory)) throw new UserError($"--scenes: {directory} does not exist");
         var files = Directory.GetFiles(directory, "*.json").Order(StringComparer.Ordinal).ToArray();
         if (files.Length == 0) throw new UserError($"--scenes: {directory} holds no *.json scene files");
 
+        using var cluster = _report.StartBridges(parse);
         var workers = parse.GetValue(_report.Workers);
         var settings = parse.GetValue(_short) ? SoakSettings.Short(workers) : SoakSettings.Full(workers);
         settings = settings with
@@ -134,32 +134,34 @@ public sealed class BenchSoakCommand : Command
             Vpl = parse.GetValue(_vpl),
             GateBudget = TimeSpan.FromSeconds(parse.GetValue(_gateBudget)),
             MaxQubits = parse.GetValue(_maxQubits),
+            Pool = cluster,
         };
         AnsiConsole.WriteLine($"soak: {files.Length} scene files in {directory}, engines {string.Join(", ", settings.Engines.Select(EngineOptions.Name))}, seeds {string.Join(" ", settings.Seeds)}, {settings.Size}x{settings.Size} (gate {settings.GateSize}x{settings.GateSize})");
 
-        var clock = Stopwatch.StartNew();
         ConsoleProgress? current = null;
-        IReadOnlyList<SoakRow> rows;
-        (string? QSharp, string? Node) versions;
-        using (var engines = new SoakEngines(workers, settings.MaxQubits))
-        {
-            rows = Soak.Run(files, settings, engines.Create,
-                label =>
-                {
-                    current?.Finish();
-                    return current = new ConsoleProgress(label);
-                },
-                row =>
-                {
-                    current?.Finish();
-                    var engine = row.Engine is { } kind ? EngineOptions.Name(kind) : "(no engine)";
-                    Console.Error.WriteLine($"{row.Scene} on {engine}: {row.StatusText}");
-                });
-            versions = engines.Versions();
-        }
-        var total = clock.Elapsed;
+        var result = SoakExperiment.Run(files, settings,
+            label =>
+            {
+                current?.Finish();
+                return current = new ConsoleProgress(label);
+            },
+            row =>
+            {
+                current?.Finish();
+                var engine = row.Engine is { } kind ? EngineOptions.Name(kind) : "(no engine)";
+                Console.Error.WriteLine($"{row.Scene} on {engine}: {row.StatusText}");
+            });
 
-        // Scenes by engines, so the table fits 80 columns; the reasons follow it.
+        PrintMatrix(result);
+        // The console gets the matrix above, which fits 80 columns; the report's wide table goes to the file only.
+        writer.Write(result.Report, BenchReportOptions.Footer(MachineDescription.Describe(result.Versions.QSharp, result.Versions.Node), cluster), print: false);
+        return result.Failed ? ChecksFailed : 0;
+    }
+
+    // Scenes by engines, so the table fits 80 columns; the reasons follow it.
+    private static void PrintMatrix(SoakResult result)
+    {
+        var rows = result.Rows;
         var engineKinds = rows.Where(r => r.Engine is not null).Select(r => r.Engine!.Value).Distinct().ToArray();
         var table = new Table().Title("soak: scenes by engines");
         table.AddColumn("scene");
@@ -170,12 +172,7 @@ public sealed class BenchSoakCommand : Command
         AnsiConsole.Write(table);
         foreach (var row in rows.Where(r => r.Status != SoakStatus.Ok))
             AnsiConsole.WriteLine($"{row.Scene}{(row.Engine is { } e ? " on " + EngineOptions.Name(e) : "")}: {row.StatusText}");
-        AnsiConsole.WriteLine($"{SoakReport.Summary(rows)}; {total.TotalSeconds:0.0} s");
-
-        var text = SoakReport.Markdown(rows, settings, total);
-        BenchReportOptions.AppendFooter(text, MachineDescription.Describe(versions.QSharp, versions.Node));
-        report.Write(text.ToString());
-        return rows.Any(r => r.Status == SoakStatus.Failed) ? ChecksFailed : 0;
+        AnsiConsole.WriteLine($"{SoakReport.Summary(rows)}; {result.Total.TotalSeconds:0.0} s");
     }
 
     /// <summary>Scenes/ of the repository (the directory holding QuantumRayTracing.sln) at or above <paramref name="start"/>, or null.</summary>

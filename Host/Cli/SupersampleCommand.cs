@@ -167,6 +167,8 @@ public sealed class SupersampleCommand : Command
         _json.EnsureWritable(parse, inputPath is null ? outputs : [.. outputs, inputPath]);
 
         var kind = parse.GetValue(_engine.Engine);
+        var noise = _engine.GetNoise(parse);
+        EngineOptions.CheckNoise(kind, noise);
         using var bridges = _engine.StartBridges(parse);
         var (input, inputName, inputTime) = imageFile is not null
             ? (LoadImage(imageFile, settings.Side, kind), imageFile.Name, (TimeSpan?)null)
@@ -186,10 +188,7 @@ public sealed class SupersampleCommand : Command
         var clock = Stopwatch.StartNew();
         SupersampleResult result;
         var supersampling = new ConsoleProgress(EngineOptions.Name(kind));
-        var noise = _engine.GetNoise(parse);
-        if (!noise.IsNoiseless && kind != EngineKind.FullState)
-            throw new UserError("--noise and --qubit-loss: supersampling models noise on the fullstate engine only; use --engine fullstate");
-        if (kind == EngineKind.FullState) Console.WriteLine($"noise model: {noise.Description()}");
+        Console.WriteLine($"noise model: {EngineOptions.NoiseDescription(kind, noise)}");
         using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), noise, bridges))
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         supersampling.Finish();
@@ -205,12 +204,12 @@ public sealed class SupersampleCommand : Command
             result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
             result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
         var ranOn = EngineOptions.Place(kind, bridges, parse.GetValue(_engine.Workers));
-        Print(figures, EngineOptions.Name(kind), noise, ranOn.Description);
+        Print(figures, EngineOptions.Name(kind), EngineOptions.NoiseDescription(kind, noise), noise.IsNoiseless, ranOn.Description);
         _json.Write(parse, figures, _engine, ranOn);
         return 0;
     }
 
-    private static void Print(SupersampleFigures figures, string engineName, Noise.NoiseModel noise, string where)
+    private static void Print(SupersampleFigures figures, string engineName, string noise, bool noiseless, string where)
     {
         var error = figures.Error;
         var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
@@ -219,7 +218,7 @@ public sealed class SupersampleCommand : Command
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {noise.Description()}")}; ran on {where}");
+        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noiseless ? "" : $" under {noise}")}; ran on {where}");
         foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
     }
 
@@ -265,7 +264,7 @@ public sealed class SupersampleCommand : Command
     public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, Noise.NoiseModel? noise = null, Bridge.BridgePool? pool = null) => kind switch
     {
         EngineKind.FullState => new FullStateSupersamplingEngine(pool ?? new Bridge.BridgePool(workers), ownsPool: pool is null, maxQubits: maxQubits, noise: noise),
-        _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine)),
+        _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine), noise),
     };
 
     // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.

@@ -4,6 +4,19 @@ using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Noise;
 
+/// <summary>A circuit measured many times on the noisy simulator: the share of one outcome, beside what the approximation predicts.</summary>
+public interface IModelCheckRow
+{
+    /// <summary>Runs measured.</summary>
+    int Shots { get; }
+
+    /// <summary>The outcome's observed share.</summary>
+    double Observed { get; }
+
+    /// <summary>The outcome's probability under the approximation with harmful share <paramref name="approximation"/>.</summary>
+    double Predicted(DepolarizingApproximation approximation);
+}
+
 /// <summary>One Grover run measured many times on the noisy simulator, beside what the depolarizing approximation predicts.</summary>
 /// <param name="Oracle">"lookup" or "gate".</param>
 /// <param name="Request">The run: N, the marked set, r, and for the gate oracle the ray's input.</param>
@@ -11,7 +24,7 @@ namespace QuantumRayTracing.Noise;
 /// <param name="Locations">Noise locations of the whole run (preparation, r iterations, measurement).</param>
 /// <param name="Shots">Runs measured.</param>
 /// <param name="Hits">Runs that read a marked index.</param>
-public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseModel Noise, double Locations, int Shots, int Hits)
+public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseModel Noise, double Locations, int Shots, int Hits) : IModelCheckRow
 {
     public int Count => Request.Marked.Count;
 
@@ -94,7 +107,7 @@ public static class NoiseCheck
     /// The harmful share that best fits the rows (least squares in units of each row's standard error, on a
     /// grid of step 0.005 over 0.05 … 1.5): the fitted effective F = (1 − p)^(s · L) of one circuit shape.
     /// </summary>
-    public static double FitHarmfulShare(IReadOnlyList<NoiseCheckRow> rows)
+    public static double FitHarmfulShare(IReadOnlyList<IModelCheckRow> rows)
     {
         var (best, bestCost) = (DepolarizingApproximation.DefaultHarmfulShare, double.PositiveInfinity);
         for (var s = 0.05; s <= 1.5 + 1e-9; s += 0.005)

@@ -34,6 +34,12 @@ public sealed class Report(string title)
     public Report Image(string name, RgbImage image, string caption) => Add(new ReportImage(name, image, caption));
 
     /// <summary>
+    /// Images side by side, each written to <c>&lt;report&gt;-name.png</c>: a table whose headings are the captions
+    /// and whose one row shows the pictures, each named by its file.
+    /// </summary>
+    public Report ImageRow(IReadOnlyList<ReportImage> images) => Add(new ReportImageRow(images));
+
+    /// <summary>
     /// Data for scripts, written only as CSV: <c>&lt;report&gt;.csv</c> when <paramref name="table"/> has no
     /// name, <c>&lt;report&gt;-name.csv</c> otherwise; the Markdown does not show it.
     /// </summary>

@@ -18,3 +18,6 @@ public sealed record ReportPlot(string Name, PlotSpec Spec, string Caption) : Re
 public sealed record ReportImage(string Name, RgbImage Image, string Caption) : ReportBlock;
 
 public sealed record ReportData(TextTable Table) : ReportBlock;
+
+/// <summary>Images side by side: one table row of pictures under their captions as column headings.</summary>
+public sealed record ReportImageRow(IReadOnlyList<ReportImage> Images) : ReportBlock;

@@ -1,14 +1,23 @@
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
 
 namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// Samples the supersampling circuits' exact outcome distributions (<see cref="CoinProbability"/>) with a
-/// seeded generator, in request order: the same seed and requests give the same outcomes.
+/// seeded generator, in request order: the same seed and requests give the same outcomes. Under noise each
+/// flip and readout is drawn from the global depolarizing approximation (<see cref="SupersamplingNoise"/>).
 /// </summary>
-public sealed class AnalyticSupersamplingEngine(SeededRandom random) : ISupersamplingEngine
+public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel? noise = null, DepolarizingApproximation? approximation = null) : ISupersamplingEngine
 {
     public string Name => "analytic";
+
+    /// <summary>The noise outcomes are sampled under; the ideal model takes the exact path, draw for draw.</summary>
+    public NoiseModel Noise { get; } = noise is { QubitLoss: > 0 }
+        ? throw new ArgumentException("the analytic engine does not model qubit loss", nameof(noise))
+        : noise ?? NoiseModel.None;
+
+    public DepolarizingApproximation Approximation { get; } = approximation ?? DepolarizingApproximation.Default;
 
     public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
     {
@@ -16,7 +25,9 @@ public sealed class AnalyticSupersamplingEngine(SeededRandom random) : ISupersam
         for (var k = 0; k < requests.Count; k++)
         {
             var request = requests[k];
-            var p = CoinProbability.Head(CoinProbability.HeadAmplitude(request.Kind, request.Amplitudes), request.Iterations);
+            var p = Noise.IsNoiseless
+                ? CoinProbability.Head(CoinProbability.HeadAmplitude(request.Kind, request.Amplitudes), request.Iterations)
+                : SupersamplingNoise.CoinHeadProbability(request.Kind, request.Amplitudes, request.Iterations, Noise, Approximation);
             heads[k] = Binomial(request.Flips, p);
         }
         return heads;
@@ -28,7 +39,9 @@ public sealed class AnalyticSupersamplingEngine(SeededRandom random) : ISupersam
         for (var k = 0; k < requests.Count; k++)
         {
             var request = requests[k];
-            var distribution = CoinProbability.QssReadout(CoinProbability.HeadAmplitude(CoinKind.Mean, request.Amplitudes) is var s ? s * s : 0, request.CounterBits);
+            var distribution = Noise.IsNoiseless
+                ? CoinProbability.QssReadout(CoinProbability.HeadAmplitude(CoinKind.Mean, request.Amplitudes) is var s ? s * s : 0, request.CounterBits)
+                : SupersamplingNoise.QssReadout(request.Amplitudes, request.CounterBits, Noise, Approximation);
             readouts[k] = new int[request.Shots];
             for (var shot = 0; shot < request.Shots; shot++) readouts[k][shot] = Categorical(distribution);
         }

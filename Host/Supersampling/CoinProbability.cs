@@ -7,13 +7,14 @@ namespace QuantumRayTracing.Supersampling;
 /// </summary>
 public static class CoinProbability
 {
-    /// <summary>sin θ of a coin: the head amplitude √((1/N) Σ a_i²) or |(1/N) Σ a_i|, clamped into [0, 1].</summary>
+    /// <summary>sin θ of a coin: the head amplitude √((1/N) Σ a_i²) (mean and direct coins) or |(1/N) Σ a_i| (shifted), clamped into [0, 1].</summary>
     public static double HeadAmplitude(CoinKind kind, IReadOnlyList<double> amplitudes)
     {
+        var squares = kind != CoinKind.Shifted;
         var sum = 0.0;
-        foreach (var a in amplitudes) sum += kind == CoinKind.Mean ? a * a : a;
+        foreach (var a in amplitudes) sum += squares ? a * a : a;
         var mean = sum / amplitudes.Count;
-        return Math.Clamp(kind == CoinKind.Mean ? Math.Sqrt(mean) : Math.Abs(mean), 0, 1);
+        return Math.Clamp(squares ? Math.Sqrt(mean) : Math.Abs(mean), 0, 1);
     }
 
     /// <summary>Probability of a head after <paramref name="iterations"/> Grover operators on a coin of head amplitude sin θ.</summary>

@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// Runs the supersampling circuits as Q# on the QDK full-state simulator: a batch is cut into chunks of
-/// bounded simulation work, each chunk is one call of <c>CountCoinHeadsBatch</c> or <c>MeasureQssBatch</c>
+/// bounded simulation work, each chunk is one call of <c>CountCoinHeadsBatch</c>, <c>CountDirectCoinHeadsBatch</c> or <c>MeasureQssBatch</c>
 /// on its own bridge, and the chunks run on all workers at once. Outcomes cannot be seeded. A batch
 /// holding a circuit wider than <see cref="MaxQubits"/> is refused before any of it is sent. Under a
 /// <see cref="NoiseModel"/> other than the ideal one the calls run on the noisy simulator.
@@ -20,6 +20,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     public NoiseModel Noise { get; } = noise ?? NoiseModel.None;
 
     public const string CoinOperation = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
+    public const string DirectCoinOperation = "QuantumRayTracing.Supersampling.CountDirectCoinHeadsBatch";
     public const string QssOperation = "QuantumRayTracing.Supersampling.MeasureQssBatch";
 
     /// <summary>Oracle applications (each N controlled rotations) per call: a few seconds of simulation, far below the bridge's time limit.</summary>
@@ -30,7 +31,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     /// <summary>Qubits a circuit may use: by default the widest dense state this machine holds (<see cref="SimulatorCapacity"/>).</summary>
     public int MaxQubits { get; } = maxQubits ?? SimulatorCapacity.DefaultMaxQubits(pool.Workers);
 
-    private static int CoinQubits(CoinRequest request) => CoinRegisters.Coin(request.Amplitudes.Length);
+    private static int CoinQubits(CoinRequest request) => CoinRegisters.Coin(request.Kind, request.Amplitudes.Length);
 
     private static int QssQubits(QssRequest request) => CoinRegisters.Qss(request.Amplitudes.Length, request.CounterBits);
 
@@ -38,22 +39,30 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     {
         if (requests.Count > 0)
         {
-            var qubits = requests.Max(CoinQubits);
-            SimulatorCapacity.Check($"a coin over {requests.Max(r => r.Amplitudes.Length)} subpixels", qubits, qubits, MaxQubits);
+            var widest = requests.MaxBy(CoinQubits)!;
+            var qubits = CoinQubits(widest);
+            SimulatorCapacity.Check($"a coin over {widest.Amplitudes.Length} subpixels", qubits, qubits, MaxQubits);
         }
+        // The direct coin is its own Q# operation; each kind's requests go as one batch, answers back in request order.
         var heads = new int[requests.Count];
-        Run(requests, r => (double)r.Queries * r.Amplitudes.Length, CoinOperation, CoinExpression, (chunk, start, json) =>
-        {
-            var values = JsonSerializer.Deserialize<int[]>(json) ?? throw new BridgeException($"{CoinOperation} returned no value");
-            if (values.Length != chunk.Count) throw new BridgeException($"{CoinOperation} returned {values.Length} counts for {chunk.Count} requests");
-            for (var k = 0; k < chunk.Count; k++)
-            {
-                if (values[k] < 0 || values[k] > chunk[k].Flips) throw new BridgeException($"{CoinOperation} returned {values[k]} heads of {chunk[k].Flips} flips");
-                heads[start + k] = values[k];
-            }
-        });
+        var direct = Enumerable.Range(0, requests.Count).Where(k => requests[k].Kind == CoinKind.Direct).ToArray();
+        var subpixel = Enumerable.Range(0, requests.Count).Where(k => requests[k].Kind != CoinKind.Direct).ToArray();
+        FlipBatch(subpixel.Select(k => requests[k]).ToArray(), r => (double)r.Queries * r.Amplitudes.Length, CoinOperation, CoinExpression, subpixel, heads);
+        FlipBatch(direct.Select(k => requests[k]).ToArray(), r => r.Queries, DirectCoinOperation, DirectCoinExpression, direct, heads);
         return heads;
     }
+
+    private void FlipBatch(CoinRequest[] requests, Func<CoinRequest, double> cost, string operation, Func<IReadOnlyList<CoinRequest>, string> expression, int[] positions, int[] heads) =>
+        Run(requests, cost, operation, expression, (chunk, start, json) =>
+        {
+            var values = JsonSerializer.Deserialize<int[]>(json) ?? throw new BridgeException($"{operation} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{operation} returned {values.Length} counts for {chunk.Count} requests");
+            for (var k = 0; k < chunk.Count; k++)
+            {
+                if (values[k] < 0 || values[k] > chunk[k].Flips) throw new BridgeException($"{operation} returned {values[k]} heads of {chunk[k].Flips} flips");
+                heads[positions[start + k]] = values[k];
+            }
+        });
 
     public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests)
     {
@@ -125,6 +134,21 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return text.Append("])").ToString();
     }
 
+    /// <summary>The direct coins' call: each request's head amplitude √f (<see cref="CoinProbability.HeadAmplitude"/>), m and flips.</summary>
+    public static string DirectCoinExpression(IReadOnlyList<CoinRequest> requests)
+    {
+        var text = new StringBuilder(DirectCoinOperation).Append("([");
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var r = requests[k];
+            if (k > 0) text.Append(", ");
+            text.Append('(').Append(QSharpDouble(CoinProbability.HeadAmplitude(CoinKind.Direct, r.Amplitudes)))
+                .Append(", ").Append(r.Iterations.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(r.Flips.ToString(CultureInfo.InvariantCulture)).Append(')');
+        }
+        return text.Append("])").ToString();
+    }
+
     public static string QssExpression(IReadOnlyList<QssRequest> requests)
     {
         var text = new StringBuilder(QssOperation).Append("([");
@@ -147,10 +171,12 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         for (var i = 0; i < values.Length; i++)
         {
             if (i > 0) text.Append(", ");
-            text.Append(Math.Clamp(values[i], -1, 1).ToString("0.0###################", CultureInfo.InvariantCulture));
+            text.Append(QSharpDouble(values[i]));
         }
         text.Append(']');
     }
+
+    private static string QSharpDouble(double value) => Math.Clamp(value, -1, 1).ToString("0.0###################", CultureInfo.InvariantCulture);
 
     public void Dispose()
     {

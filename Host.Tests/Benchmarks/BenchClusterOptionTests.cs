@@ -1,0 +1,104 @@
+using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Cluster;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Tests.Cli;
+using QuantumRayTracing.Tests.Cluster;
+using QuantumRayTracing.Tests.Engines;
+
+namespace QuantumRayTracing.Tests.Benchmarks;
+
+/// <summary>
+/// `--cluster` on the benches whose experiments run Q# engines: a cluster file that is missing or names no worker
+/// stops the command with one line and its exit code before any report is written, and on a running cluster each
+/// experiment's simulator work goes to the cluster's workers.
+/// </summary>
+[Collection(QSharpCollection.Name)]
+public sealed class BenchClusterOptionTests : IDisposable
+{
+    private readonly ScratchDirectory _scratch = new("qrt-bench-cluster-");
+
+    public void Dispose() => _scratch.Dispose();
+
+    // Tiny forms of each bench that takes --cluster, writing their report in the scratch directory.
+    private string[] Bench(string name, string cluster) => name switch
+    {
+        "pareto" => ["bench", "pareto", "--scene", Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"), "--size", "1", "--cluster", cluster, "-o", _scratch.File("speed-vs-error.md")],
+        "grover" => ["bench", "grover", "--sizes", "8", "--batches", "1", "--cluster", cluster, "-o", _scratch.File("performance.md")],
+        "soak" => ["bench", "soak", "--short", "--engines", "fullstate", "--scenes", RepositoryPaths.Scenes, "--cluster", cluster, "-o", _scratch.File("soak.md")],
+        _ => throw new ArgumentOutOfRangeException(nameof(name)),
+    };
+
+    [Theory]
+    [InlineData("pareto")]
+    [InlineData("grover")]
+    [InlineData("soak")]
+    public void AMissingClusterFileIsOneLineAndBadInput(string bench)
+    {
+        var missing = _scratch.File("no-such-cluster.json");
+        var (code, error) = ConsoleCapture.Run(Bench(bench, missing));
+        Assert.Equal(CommandLine.BadInput, code);
+        Assert.StartsWith($"error: {missing}: ", error.Trim());
+        Assert.DoesNotContain('\n', error.Trim());
+        Assert.Equal([], _scratch.FileNames());
+    }
+
+    [Fact]
+    public void AClusterWithNoWorkerIsOneLineAndAQuantumFailure()
+    {
+        using var empty = new TestCluster(10);
+        var (code, error) = ConsoleCapture.Run(Bench("grover", empty.ConfigPath));
+        Assert.Equal(CommandLine.QuantumFailure, code);
+        // The error's one line, then the hint every Q# failure gets.
+        var lines = error.Trim().Split('\n');
+        Assert.Equal(2, lines.Length);
+        Assert.StartsWith($"error: {empty.ConfigPath}: no worker", lines[0]);
+        Assert.Equal("(run again with --verbose for the details)", lines[1].TrimEnd());
+        Assert.Equal([], _scratch.FileNames());
+    }
+
+    [Fact]
+    public void ParetoRendersItsFullStateRowsOnTheCluster()
+    {
+        using var worker = new WorkerBridges(1);
+        using var cluster = new TestCluster(120, worker);
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        var scene = SceneLoader.Load(Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"));
+        var report = SpeedVsErrorExperiment.Run(new SpeedVsErrorSettings(scene, 1, 1, 1, pool), _ => { });
+
+        Assert.True(cluster.Served(0) > 0, "the full-state renders should have sent their chunks to the worker");
+        var rows = report.Table("points").Rows;
+        Assert.Equal(SpeedVsErrorExperiment.Engines.Length * SpeedVsErrorExperiment.Configurations(1, 1).Count, rows.Count);
+        Assert.Contains(rows, r => r[0] == "fullstate");
+    }
+
+    [Fact]
+    public void GroverTimesItsAllBridgesColumnOnTheCluster()
+    {
+        using var worker = new WorkerBridges(1);
+        using var cluster = new TestCluster(120, worker);
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        var report = GroverPerformanceExperiment.Run(new GroverPerformanceSettings([8], [1, 3], 1, 1, pool), _ => { });
+
+        // A warm-up call and 9 timed calls (batch 1), then a warm-up and 3 timed calls (batch 3).
+        Assert.Equal(14, cluster.Served(0));
+        var table = report.Table("runs");
+        Assert.Equal("fullstate, 1 cluster bridge: ms/run", table.Header[4]);
+        Assert.Equal([["8", "2", "1"], ["8", "2", "3"]], table.Rows.Select(r => r[..3]));
+    }
+
+    [Fact]
+    public void SoakRendersItsSimulatorRowsOnTheCluster()
+    {
+        using var worker = new WorkerBridges(1);
+        using var cluster = new TestCluster(120, worker);
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        var settings = SoakSettings.Short(1) with { Engines = [EngineKind.FullState, EngineKind.Gate], Pool = pool };
+        var result = SoakExperiment.Run([Path.Combine(RepositoryPaths.Scenes, "qornell-8.json")], settings);
+
+        Assert.All(result.Rows, r => Assert.Equal(SoakStatus.Ok, r.Status));
+        Assert.True(cluster.Served(0) > 0, "the fullstate and gate renders should have sent their chunks to the worker");
+        Assert.Equal(2, result.Report.Table("soak").Rows.Count);
+    }
+}

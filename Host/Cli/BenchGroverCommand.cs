@@ -1,0 +1,54 @@
+using System.CommandLine;
+using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Bridge;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>`bench grover`: options → <see cref="GroverPerformanceSettings"/> → <see cref="GroverPerformanceExperiment"/> (docs/performance.md).</summary>
+public sealed class BenchGroverCommand : Command
+{
+    public const string CommandLine = "qrt bench grover";
+
+    private readonly Option<int[]> _sizes = new("--sizes")
+    {
+        Description = "Search sizes N (space-separated).",
+        DefaultValueFactory = _ => [8, 64, 512],
+        AllowMultipleArgumentsPerToken = true,
+    };
+
+    private readonly Option<int[]> _batches = new("--batches")
+    {
+        Description = "Requests per engine call (space-separated).",
+        DefaultValueFactory = _ => [1, 100, 1000],
+        AllowMultipleArgumentsPerToken = true,
+    };
+
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/performance.md");
+
+    public BenchGroverCommand() : base("grover", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")
+    {
+        Options.Add(_sizes);
+        Options.Add(_batches);
+        _report.AddTo(this, scenes: false, cluster: true);
+        _sizes.Validators.Add(r =>
+        {
+            if ((r.GetValueOrDefault<int[]>() ?? []).Any(n => n is < 1 or > 4096)) r.AddError("--sizes: each N must be between 1 and 4096");
+        });
+        _batches.Validators.Add(r =>
+        {
+            if ((r.GetValueOrDefault<int[]>() ?? []).Any(b => b < 1)) r.AddError("--batches: each batch size must be at least 1");
+        });
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var writer = _report.Writer(parse);
+        using var cluster = _report.StartBridges(parse);
+        var settings = new GroverPerformanceSettings(parse.GetValue(_sizes)!, parse.GetValue(_batches)!, parse.GetValue(_report.Workers), parse.GetValue(_report.Seed), cluster);
+        var report = GroverPerformanceExperiment.Run(settings, Console.Error.WriteLine);
+        var tools = ToolVersions.Detect();
+        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(tools.QsharpLang, tools.Node), cluster));
+        return 0;
+    }
+}
