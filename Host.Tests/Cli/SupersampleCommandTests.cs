@@ -46,6 +46,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("mc")]
     [InlineData("qcoin")]
     [InlineData("mlae")]
+    [InlineData("mlae-noise")]
     [InlineData("qss")]
     [InlineData("qss", "--qss-values", "continuous")]
     [InlineData("qss", "--planes", "1")]
@@ -134,6 +135,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("mc")]
     [InlineData("qcoin")]
     [InlineData("mlae")]
+    [InlineData("mlae-noise")]
     [InlineData("qss")]
     public void SameSeedGivesTheSameBytes(string method)
     {
@@ -229,7 +231,8 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("--qss-values applies to --method qss only", "-m", "mlae", "--qss-values", "continuous")]
     [InlineData("--planes applies to --qss-values planes only", "-m", "qss", "--qss-values", "continuous", "--planes", "4")]
     [InlineData("--steps applies to --method qcoin only", "-m", "mlae", "--steps", "3")]
-    [InlineData("--levels applies to --method mlae only", "-m", "qcoin", "--levels", "3")]
+    [InlineData("--levels applies to --method mlae and mlae-noise only", "-m", "qcoin", "--levels", "3")]
+    [InlineData("--method mlae-noise with --levels 10 needs at least 353 queries, got 240", "-m", "mlae-noise", "--levels", "10")]
     [InlineData("--method qcoin with 6 steps needs at least 133 queries, got 100", "-m", "qcoin", "--steps", "6", "--queries", "100")]
     [InlineData("--method mlae with --levels 10 needs at least 353 queries, got 240", "-m", "mlae", "--levels", "10")]
     [InlineData("--size applies to scenes only", "--size", "4")]
@@ -239,7 +242,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("--counter-bits must be at most 12, got 13", "--counter-bits", "13")]
     [InlineData("--planes must be at least 1, got 0", "--planes", "0")]
     [InlineData("--engine classical is not available here", "--engine", "classical")]
-    [InlineData("--method: 'bogus' is not one of mc, qss, qcoin, mlae", "-m", "bogus")]
+    [InlineData("--method: 'bogus' is not one of mc, qss, qcoin, mlae, mlae-noise", "-m", "bogus")]
     [InlineData("--engine: 'bogus' is not one of", "-e", "bogus")]
     [InlineData("--qss-values: '2' is not one of planes, continuous", "--qss-values", "2")]
     public void ImpossibleCombinationsAreUsageErrors(string message, params string[] options)

@@ -18,6 +18,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchSoakCommand());
         Subcommands.Add(new BenchAccuracyCommand());
         Subcommands.Add(new BenchNoiseCommand());
+        Subcommands.Add(new BenchNoiseEstimationCommand());
         Subcommands.Add(new BenchFullStateCommand());
         Subcommands.Add(new BenchClusterCommand());
     }

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
+using System.Runtime.Serialization;
 
 namespace QuantumRayTracing.Cli;
 
@@ -71,10 +72,18 @@ public static class OptionRules
     {
         var token = result.Tokens.Count == 1 ? result.Tokens[0].Value : "";
         // Enum.TryParse also takes numbers: only the names count.
-        var match = Enum.GetNames<T>().FirstOrDefault(n => string.Equals(n, token, StringComparison.OrdinalIgnoreCase));
-        if (match is not null) return Enum.Parse<T>(match);
-        result.AddError($"{name}: '{token}' is not one of {string.Join(", ", Enum.GetNames<T>().Select(n => n.ToLowerInvariant()))}");
+        var match = Enum.GetValues<T>().Cast<T?>().FirstOrDefault(v => string.Equals(ChoiceName(v!.Value), token, StringComparison.OrdinalIgnoreCase));
+        if (match is not null) return match;
+        result.AddError($"{name}: '{token}' is not one of {string.Join(", ", Enum.GetValues<T>().Select(v => ChoiceName(v)))}");
         return null;
+    }
+
+    /// <summary>How a choice is written on the command line: its <see cref="EnumMemberAttribute"/> value (e.g. mlae-noise), else its name in lower case.</summary>
+    public static string ChoiceName<T>(T value) where T : struct, Enum
+    {
+        var name = value.ToString();
+        var member = typeof(T).GetField(name)?.GetCustomAttributes(typeof(EnumMemberAttribute), false).OfType<EnumMemberAttribute>().FirstOrDefault();
+        return member?.Value ?? name.ToLowerInvariant();
     }
 
     private static void Check(System.CommandLine.Parsing.OptionResult result, string name, long value, long min, long max)

@@ -51,14 +51,16 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<SupersampleMethod> _method = new("--method", "-m")
     {
-        Description = "mc (Monte Carlo), qss (quantum supersampling), qcoin (QCoin, Algorithm 1), mlae (maximum-likelihood amplitude estimation).",
+        Description = "mc (Monte Carlo), qss (quantum supersampling), qcoin (QCoin, Algorithm 1), mlae (maximum-likelihood amplitude estimation), "
+            + "mlae-noise (MLAE for noisy machines: the same flips, but each level's head probability is that of a depolarized coin, "
+            + "F^m sin²((2m+1)θ) + (1 − F^m)/2, and the fidelity F per Grover operator is fitted together with the mean, so levels the noise has flattened count for little instead of biasing the estimate).",
         DefaultValueFactory = _ => DefaultMethod,
-        HelpName = "mc|qss|qcoin|mlae",
+        HelpName = "mc|qss|qcoin|mlae|mlae-noise",
     };
 
     private readonly Option<long?> _queries = new("--queries", "-q")
     {
-        Description = $"Queries per pixel and channel for mc, qcoin and mlae (a coin flip 1, a Grover operator 2). Default: {SupersampleSettings.DefaultQueries}. Not for qss, whose count follows from --counter-bits.",
+        Description = $"Queries per pixel and channel for mc, qcoin, mlae and mlae-noise (a coin flip 1, a Grover operator 2). Default: {SupersampleSettings.DefaultQueries}. Not for qss, whose count follows from --counter-bits.",
     };
 
     private readonly Option<int?> _steps = new("--steps")
@@ -68,7 +70,7 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<int?> _levels = new("--levels")
     {
-        Description = "mlae: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
+        Description = "mlae and mlae-noise: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
     };
 
     private readonly Option<int?> _counterBits = new("--counter-bits", "-t")
@@ -158,7 +160,7 @@ public sealed class SupersampleCommand : Command
         var stem = imageFile is not null ? Path.GetFileNameWithoutExtension(imageFile.Name)
             : sceneFile is not null ? Path.GetFileNameWithoutExtension(sceneFile.Name)
             : $"qornell-{RenderCommand.DefaultQornellPrimitives}";
-        var methodName = settings.Method.ToString().ToLowerInvariant();
+        var methodName = OptionRules.ChoiceName(settings.Method);
         var output = parse.GetValue(_output) ?? $"{stem}-{methodName}.png";
         var outputs = settings.UsesLookupTable ? new[] { output, RenderCommand.Sibling(output, "confidence") } : [output];
         ImageFiles.EnsureWritable(outputs, inputPath is null ? [] : [inputPath]);

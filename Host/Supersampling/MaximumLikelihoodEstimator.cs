@@ -51,7 +51,18 @@ public sealed class MaximumLikelihoodEstimator : IMeanEstimator
 
     public long Queries { get; }
 
-    public IReadOnlyList<double> Estimate(IReadOnlyList<double[]> values, ISupersamplingEngine engine)
+    public IReadOnlyList<double> Estimate(IReadOnlyList<double[]> values, ISupersamplingEngine engine) =>
+        Flip(values, engine).Select(levels =>
+        {
+            var observed = levels.Select(l => (Factor: 2 * l.Iterations + 1, l.Heads, l.Flips)).ToArray();
+            return Math.Clamp(Math.Pow(Math.Sin(MostLikelyAngle(observed)), 2), 0, 1);
+        }).ToArray();
+
+    /// <summary>
+    /// Flips every item's mean coin at every level of the schedule, all in one engine batch, and returns per item the
+    /// heads seen at each level. The noise-aware estimator fits the same outcomes with its own likelihood.
+    /// </summary>
+    public IReadOnlyList<MlaeLevel[]> Flip(IReadOnlyList<double[]> values, ISupersamplingEngine engine)
     {
         foreach (var v in values) SubpixelValues.Check(v);
         var requests = new List<CoinRequest>();
@@ -61,13 +72,10 @@ public sealed class MaximumLikelihoodEstimator : IMeanEstimator
             for (var l = 0; l < Iterations.Length; l++) requests.Add(new CoinRequest(CoinKind.Mean, amplitudes, Iterations[l], Flips[l]));
         }
         var heads = engine.FlipCoins(requests);
-        var estimates = new double[values.Count];
+        var outcomes = new MlaeLevel[values.Count][];
         for (var j = 0; j < values.Count; j++)
-        {
-            var observed = Iterations.Select((m, l) => (Factor: 2 * m + 1, Heads: heads[j * Iterations.Length + l], Flips: requests[j * Iterations.Length + l].Flips)).ToArray();
-            estimates[j] = Math.Clamp(Math.Pow(Math.Sin(MostLikelyAngle(observed)), 2), 0, 1);
-        }
-        return estimates;
+            outcomes[j] = Iterations.Select((m, l) => new MlaeLevel(m, heads[j * Iterations.Length + l], requests[j * Iterations.Length + l].Flips)).ToArray();
+        return outcomes;
     }
 
     /// <summary>θ ∈ [0, π/2] maximising the likelihood of the observed heads at each amplification factor 2m+1.</summary>

@@ -1,3 +1,5 @@
+using System.Runtime.Serialization;
+
 namespace QuantumRayTracing.Supersampling;
 
 /// <summary>How `supersample` estimates each pixel's mean.</summary>
@@ -14,4 +16,11 @@ public enum SupersampleMethod
 
     /// <summary>Maximum-likelihood amplitude estimation with the exponential schedule.</summary>
     Mlae,
+
+    /// <summary>
+    /// MLAE whose likelihood includes a depolarizing decay per Grover operator, estimated jointly with the mean
+    /// (<see cref="NoiseAwareMaximumLikelihoodEstimator"/>): the same flips as <see cref="Mlae"/>.
+    /// </summary>
+    [EnumMember(Value = "mlae-noise")]
+    MlaeNoise,
 }

@@ -6,9 +6,9 @@ namespace QuantumRayTracing.Supersampling;
 /// </summary>
 /// <param name="Method">The estimator.</param>
 /// <param name="Side">s: each output pixel averages s x s subpixels.</param>
-/// <param name="Queries">Per pixel and channel, for mc, qcoin and mlae (default <see cref="DefaultQueries"/>); QSS's follow from its counter.</param>
+/// <param name="Queries">Per pixel and channel, for mc, qcoin, mlae and mlae-noise (default <see cref="DefaultQueries"/>); QSS's follow from its counter.</param>
 /// <param name="Steps">QCoin's k (default <see cref="QCoinEstimator.DefaultSteps"/>).</param>
-/// <param name="Levels">MLAE's K (default <see cref="MaximumLikelihoodEstimator.DefaultLevels"/>).</param>
+/// <param name="Levels">MLAE's K, plain or noise-aware (default <see cref="MaximumLikelihoodEstimator.DefaultLevels"/>).</param>
 /// <param name="CounterBits">QSS's t (default: ceil(log2 N) for bit planes, 7 for continuous values).</param>
 /// <param name="Planes">QSS bit planes P (default 8, exact for 8-bit inputs).</param>
 /// <param name="Values">QSS's input: bit planes (default) or continuous values.</param>
@@ -31,6 +31,9 @@ public sealed record SupersampleSettings(
     public const int DefaultContinuousCounterBits = 7;
 
     public int Subpixels => Side * Side;
+
+    /// <summary>Plain or noise-aware MLAE: the same schedule and --levels.</summary>
+    public bool IsMlae => Method is SupersampleMethod.Mlae or SupersampleMethod.MlaeNoise;
 
     public QssValues QssValues => Values ?? QssValues.Planes;
 
@@ -61,7 +64,7 @@ public sealed record SupersampleSettings(
             if (QssValues == QssValues.Continuous && Planes is not null) return "--planes applies to --qss-values planes only";
         }
         if (Steps is not null && Method != SupersampleMethod.QCoin) return "--steps applies to --method qcoin only";
-        if (Levels is not null && Method != SupersampleMethod.Mlae) return "--levels applies to --method mlae only";
+        if (Levels is not null && !IsMlae) return "--levels applies to --method mlae and mlae-noise only";
         var queries = QueriesOrDefault;
         if (Method == SupersampleMethod.QCoin)
         {
@@ -69,8 +72,8 @@ public sealed record SupersampleSettings(
             if (queries < QCoinEstimator.MinimumQueries(k))
                 return $"--method qcoin with {k} step{(k == 1 ? "" : "s")} needs at least {QCoinEstimator.MinimumQueries(k)} queries, got {queries}";
         }
-        if (Method == SupersampleMethod.Mlae && Levels is { } levels && queries < MaximumLikelihoodEstimator.QueriesPerShot(levels))
-            return $"--method mlae with --levels {levels} needs at least {MaximumLikelihoodEstimator.QueriesPerShot(levels)} queries, got {queries}";
+        if (IsMlae && Levels is { } levels && queries < MaximumLikelihoodEstimator.QueriesPerShot(levels))
+            return $"--method {(Method == SupersampleMethod.Mlae ? "mlae" : "mlae-noise")} with --levels {levels} needs at least {MaximumLikelihoodEstimator.QueriesPerShot(levels)} queries, got {queries}";
         return null;
     }
 
@@ -84,6 +87,7 @@ public sealed record SupersampleSettings(
             SupersampleMethod.Mc => new MonteCarloEstimator(queries),
             SupersampleMethod.QCoin => new QCoinEstimator(queries, Steps ?? QCoinEstimator.DefaultSteps(queries)),
             SupersampleMethod.Mlae => new MaximumLikelihoodEstimator(queries, Levels ?? MaximumLikelihoodEstimator.DefaultLevels(queries)),
+            SupersampleMethod.MlaeNoise => new NoiseAwareMaximumLikelihoodEstimator(queries, Levels ?? MaximumLikelihoodEstimator.DefaultLevels(queries)),
             _ when QssValues == QssValues.Continuous => new QssEstimator(CounterBitsOrDefault),
             _ => new BitPlaneQssEstimator(CheckedTable(table), PlanesOrDefault),
         };

@@ -1,0 +1,161 @@
+using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Supersampling;
+
+namespace QuantumRayTracing.Tests.Supersampling;
+
+/// <summary>
+/// The noise-aware MLAE on noisy direct coins of the analytic engine (<see cref="DepolarizedCoinEngine"/>, fixed seeds) and plain MLAE beside it.
+/// Every statistical bound is stated with its false-failure rate; z = 5.73 is the two-sided normal point of 1e-8.
+/// </summary>
+public class NoiseAwareMlaeTests
+{
+    private const double Z = 5.73;
+
+    private static double[][] UniformMeans(int count, ulong seed)
+    {
+        var random = new SeededRandom(seed);
+        return Enumerable.Range(0, count).Select(_ => new[] { random.NextDouble() }).ToArray();
+    }
+
+    [Fact]
+    public void PlainMlaeStillEstimatesFromItsOwnFlipsAlone()
+    {
+        // The shared flip step must not change plain MLAE: the same requests in the same order, read by MostLikelyAngle.
+        var values = UniformMeans(300, 3).Concat([[0.0, 0.0], [1.0, 1.0], [0.25, 0.75, 1.0]]).ToArray();
+        foreach (var queries in new long[] { 60, 240, 3200 })
+        {
+            var mlae = new MaximumLikelihoodEstimator(queries, MaximumLikelihoodEstimator.DefaultLevels(queries));
+            var estimates = mlae.Estimate(values, new AnalyticSupersamplingEngine(new SeededRandom(7)));
+            var engine = new AnalyticSupersamplingEngine(new SeededRandom(7));
+            var requests = values.SelectMany(v => mlae.Iterations.Select((m, l) => new CoinRequest(CoinKind.Mean, SubpixelValues.MeanCoin(v), m, mlae.Flips[l]))).ToArray();
+            var heads = engine.FlipCoins(requests);
+            for (var j = 0; j < values.Length; j++)
+            {
+                var observed = mlae.Iterations.Select((m, l) => (2 * m + 1, heads[j * mlae.Iterations.Length + l], mlae.Flips[l])).ToArray();
+                var expected = Math.Clamp(Math.Pow(Math.Sin(MaximumLikelihoodEstimator.MostLikelyAngle(observed)), 2), 0, 1);
+                Assert.Equal(expected, estimates[j]);
+            }
+        }
+    }
+
+    [Fact]
+    public void WithoutNoiseReadsAlmostEveryPixelAsPlainMlae()
+    {
+        // On noiseless flips the likelihood-ratio test keeps the plain fit unless the decay wins by 5.41 (its 1% point,
+        // asymptotically). Bound: at most 4% of 2000 means read differently: Binomial(2000, 0.01) exceeds 80 with
+        // probability below 1e-15, so a 1% test fails this with probability below 1e-8 even if its small-sample rate were twice that.
+        var values = UniformMeans(2000, 5);
+        foreach (var queries in new long[] { 240, 960 })
+        {
+            var levels = MaximumLikelihoodEstimator.DefaultLevels(queries);
+            var plain = new MaximumLikelihoodEstimator(queries, levels).Estimate(values, new AnalyticSupersamplingEngine(new SeededRandom(9)));
+            var aware = new NoiseAwareMaximumLikelihoodEstimator(queries, levels).Estimate(values, new AnalyticSupersamplingEngine(new SeededRandom(9)));
+            var differing = plain.Zip(aware).Count(p => p.First != p.Second);
+            Assert.True(differing <= 80, $"{queries} queries: {differing} of 2000 means read differently from plain MLAE");
+        }
+    }
+
+    [Fact]
+    public void RecoversAKnownMeanAndDecayFromSyntheticFlips()
+    {
+        // Many flips per level, so the Cramér–Rao bound is the error scale: over 60 trials the mean of the estimates lies
+        // within Z·σ/√60 (+ a bias allowance of σ/4 for a finite sample) of the truth, for the mean and for the decay,
+        // with σ from the Fisher information; false-failure below 1e-8 each for an efficient, unbiased estimator.
+        const double mean = 0.3, decay = 0.05;
+        const int trials = 60, flips = 3000;
+        int[] iterations = [0, 1, 2, 3, 5, 8, 11, 17];
+        var levels = iterations.Select(m => (m, flips)).ToArray();
+        var theta = Math.Asin(Math.Sqrt(mean));
+        var random = new SeededRandom(13);
+        var (means, decays) = (new double[trials], new double[trials]);
+        for (var t = 0; t < trials; t++)
+        {
+            var observed = iterations.Select(m =>
+            {
+                var p = NoiseAwareMaximumLikelihoodEstimator.HeadProbability(theta, decay, m);
+                return new MlaeLevel(m, Enumerable.Range(0, flips).Count(_ => random.NextDouble() < p), flips);
+            }).ToArray();
+            var (angle, fitted) = NoiseAwareMaximumLikelihoodEstimator.MostLikely(observed);
+            (means[t], decays[t]) = (Math.Pow(Math.Sin(angle), 2), fitted);
+        }
+        var sigmaMean = MlaeFisherInformation.StandardError(mean, decay, levels);
+        var sigmaDecay = MlaeFisherInformation.DecayStandardError(mean, decay, levels);
+        Assert.InRange(means.Average(), mean - Z * sigmaMean / Math.Sqrt(trials) - sigmaMean / 4, mean + Z * sigmaMean / Math.Sqrt(trials) + sigmaMean / 4);
+        Assert.InRange(decays.Average(), decay - Z * sigmaDecay / Math.Sqrt(trials) - sigmaDecay / 4, decay + Z * sigmaDecay / Math.Sqrt(trials) + sigmaDecay / 4);
+        // And the spread is the predicted one: the root mean square error within 0.6x..1.6x of σ (a chi-square with 60
+        // degrees of freedom leaves that range with probability below 1e-8 at the true σ; the MLE is efficient here).
+        var rms = Math.Sqrt(means.Average(m => (m - mean) * (m - mean)));
+        Assert.InRange(rms, 0.6 * sigmaMean, 1.6 * sigmaMean);
+    }
+
+    [Fact]
+    public void PlainMlaeErrsOnNoisyFlipsWhereTheNoiseAwareOneDoesNot()
+    {
+        // Decay 0.1 per Grover operator, 960 queries (levels up to m = 17, where Φ = e^(−γ(m+½)) = 0.17). Plain MLAE reads the
+        // flattened levels as a wrong angle. Measured on 200 trials per mean (seeds fixed): plain's mean absolute error is 4.9x
+        // and 5.4x the noise-aware one's at f = 0.2 and 0.8 (2.3x at 0.6; 1.5x at 0.45, near the anomalous ½). Bounds: the
+        // noise-aware estimates are unbiased within Z standard errors of their mean (false failure 1e-8 each), and plain's mean
+        // absolute error is at least 2x theirs: each mean absolute error over 200 trials has a relative standard error under
+        // 10% here, so a ratio near 5 sits more than 4 standard errors above 2 (false failure below 1e-4 each). Dropping the
+        // decay from the likelihood makes the two estimators one, and the ratio 1.
+        const long queries = 960;
+        const double decay = 0.1;
+        const int trials = 200;
+        var levels = MaximumLikelihoodEstimator.DefaultLevels(queries);
+        foreach (var mean in new[] { 0.2, 0.8 })
+        {
+            var values = Enumerable.Repeat(new[] { mean }, trials).ToArray();
+            var plain = new MaximumLikelihoodEstimator(queries, levels).Estimate(values, DepolarizedCoinEngine.Create(new SeededRandom(11), decay));
+            var aware = new NoiseAwareMaximumLikelihoodEstimator(queries, levels).Estimate(values, DepolarizedCoinEngine.Create(new SeededRandom(11), decay));
+            var average = aware.Average();
+            var sd = Math.Sqrt(aware.Sum(e => (e - average) * (e - average)) / (trials - 1));
+            Assert.True(Math.Abs(average - mean) <= Z * sd / Math.Sqrt(trials), $"f = {mean}: noise-aware mean estimate {average:0.00000}, standard error {sd / Math.Sqrt(trials):0.00000}");
+            var (plainError, awareError) = (plain.Average(e => Math.Abs(e - mean)), aware.Average(e => Math.Abs(e - mean)));
+            Assert.True(plainError >= 2 * awareError, $"f = {mean}: plain MLAE's mean absolute error {plainError:0.00000} against the noise-aware {awareError:0.00000}");
+        }
+    }
+
+    [Theory]
+    [InlineData(0.0)]
+    [InlineData(0.05)]
+    [InlineData(0.5)]
+    public void MeansAtAndNearTheEndsStayFiniteAndInRange(double decay)
+    {
+        const double epsilon = 1e-9;
+        double[][] values = [[0.0], [1.0], [epsilon], [1 - epsilon], [0, 0, 0, 4 * epsilon], [1, 1, 1, 1 - 4 * epsilon], [0, 1]];
+        foreach (var queries in new long[] { 1, 240, 3200 })
+        {
+            var estimator = new NoiseAwareMaximumLikelihoodEstimator(queries, MaximumLikelihoodEstimator.DefaultLevels(queries));
+            var inputs = values.SelectMany(v => Enumerable.Repeat(v, 50)).ToArray();
+            var estimates = estimator.Estimate(inputs, DepolarizedCoinEngine.Create(new SeededRandom(19), decay));
+            Assert.All(estimates, e => Assert.True(double.IsFinite(e) && e is >= 0 and <= 1, $"{estimator.Name}, decay {decay}: estimate {e}"));
+            if (decay == 0)
+            {
+                // Without noise a mean of 0 shows no head and a mean of 1 no tail: both are exact.
+                Assert.All(estimates.Take(50), e => Assert.Equal(0, e));
+                Assert.All(estimates.Skip(50).Take(50), e => Assert.Equal(1, e));
+            }
+        }
+    }
+
+    [Fact]
+    public void FisherInformationSaturatesUnderNoiseAndFindsItsAnomalousMeans()
+    {
+        var mlae = new MaximumLikelihoodEstimator(3200, MaximumLikelihoodEstimator.DefaultLevels(3200));
+        var levels = MlaeFisherInformation.Levels(mlae.Iterations, mlae.Flips);
+        // Without noise, every level adds (2m+1)²-weighted information; under noise the deep levels add little.
+        var ideal = MlaeFisherInformation.AverageMeanAbsoluteError(0, levels, decayKnown: true);
+        var noisy = MlaeFisherInformation.AverageMeanAbsoluteError(0.1, levels);
+        Assert.True(noisy > 5 * ideal, $"predicted error {noisy} under decay 0.1 against {ideal} without noise");
+        // The same flips with the deep levels left out predict almost the same error under noise: they carry nothing.
+        var shallow = levels.Where(l => l.Iterations <= 17).ToArray();
+        var shallowError = MlaeFisherInformation.AverageMeanAbsoluteError(0.1, shallow);
+        Assert.InRange(noisy / shallowError, 0.9, 1.0 + 1e-9);
+        // f = ½ (θ = π/4) is anomalous under noise: every level reads ½ whatever γ, so nearby θ and γ trade off and
+        // fitting the decay costs at least 1.5x in σ. Away from such fractions (f = 0.1) fitting it costs little.
+        var anomalous = MlaeFisherInformation.AnomalousMeans(0.03, levels);
+        Assert.Contains(anomalous, f => Math.Abs(f - 0.5) < 1e-3);
+        Assert.True(MlaeFisherInformation.StandardError(0.5004, 0.03, levels) > 1.5 * MlaeFisherInformation.StandardError(0.5004, 0.03, levels, decayKnown: true));
+        Assert.DoesNotContain(anomalous, f => Math.Abs(f - 0.1) < 0.005);
+    }
+}

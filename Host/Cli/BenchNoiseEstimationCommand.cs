@@ -1,0 +1,61 @@
+using System.CommandLine;
+using System.Globalization;
+using QuantumRayTracing.Benchmarks;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// `bench noise-estimation`: options → <see cref="NoiseEstimationSettings"/> → <see cref="NoiseEstimationExperiment"/>, composed by
+/// <see cref="NoiseEstimationReport"/> (docs/noise-estimation.md).
+/// </summary>
+public sealed class BenchNoiseEstimationCommand : Command
+{
+    public const string CommandLine = "qrt bench noise-estimation";
+
+    private readonly Option<int> _trials = new("--trials")
+    {
+        Description = "Estimates per point: repeated runs at f = 0.5 (fig. 10), random pixels (fig. 12) or random means (the noise-aware comparison).",
+        DefaultValueFactory = _ => 1000,
+    };
+
+    private readonly Option<double> _deviceRate = new("--device-rate")
+    {
+        Description = "Per-gate depolarizing error standing in for the QCoin paper's device in fig. 10's plot and fig. 1 (the rate at which QCoin on the direct coin stops improving past k = 5).",
+        DefaultValueFactory = _ => NoiseEstimationSettings.DefaultDeviceRate,
+    };
+
+    private readonly Option<int> _imageSize = new("--image-size")
+    {
+        Description = "Output pixels per side of the fig. 1 image (8x8 subpixels each, rendered classically at 8 times the size).",
+        DefaultValueFactory = _ => 64,
+    };
+
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/noise-estimation.md");
+
+    public BenchNoiseEstimationCommand() : base("noise-estimation", "Mean estimation under noise: the QCoin paper's fig. 10 (k against noise), fig. 12 (QSS against QCoin, MLAE and MC against the per-gate error), fig. 1 right (QCoin image under noise) and the noise-aware MLAE; -o docs/noise-estimation.md.")
+    {
+        Options.Add(_trials);
+        Options.Add(_deviceRate);
+        Options.Add(_imageSize);
+        _report.AddTo(this, scenes: false);
+        _trials.Between(10, 100_000);
+        _imageSize.Between(1, 256);
+        _deviceRate.Validators.Add(r =>
+        {
+            var rate = r.GetValueOrDefault<double>();
+            if (!NoiseEstimationSettings.StepRates.Contains(rate))
+                r.AddError($"--device-rate: {rate.ToString(CultureInfo.InvariantCulture)} is not one of the swept rates {string.Join(", ", NoiseEstimationSettings.StepRates.Where(p => p > 0).Select(p => p.ToString(CultureInfo.InvariantCulture)))}");
+        });
+        SetAction(Execute);
+    }
+
+    private int Execute(ParseResult parse)
+    {
+        var writer = _report.Writer(parse);
+        var settings = new NoiseEstimationSettings(parse.GetValue(_trials), parse.GetValue(_deviceRate), parse.GetValue(_imageSize), parse.GetValue(_report.Seed));
+        var result = NoiseEstimationExperiment.Run(settings, Console.Error.WriteLine);
+        var machine = MachineDescription.Describe(null, null);
+        writer.Write(NoiseEstimationReport.Build(result, settings, machine), BenchReportOptions.Footer(machine));
+        return 0;
+    }
+}

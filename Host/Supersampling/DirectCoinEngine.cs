@@ -1,0 +1,23 @@
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// The QCoin paper's hardware setting (sec. 6): every coin is one qubit rotated straight to its head amplitude, which the
+/// host computes from the subpixel values, instead of the subpixel register and the shader oracle. A mean coin becomes
+/// √(1 − f)|0⟩ + √f|1⟩ with f = (1/N) Σ a_i²; QCoin's shifted coin √(1 − (f − E)²)|0⟩ + (f − E)|1⟩. The head
+/// probabilities are those of the full coins; only the circuits, and so their noise, differ. QSS readouts pass through.
+/// </summary>
+public sealed class DirectCoinEngine(ISupersamplingEngine inner) : ISupersamplingEngine
+{
+    public string Name => $"{inner.Name}, direct single-qubit coins";
+
+    public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests) =>
+        inner.FlipCoins(requests.Select(r => r.Kind switch
+        {
+            CoinKind.Shifted => r with { Kind = CoinKind.Direct, Amplitudes = [CoinProbability.HeadAmplitude(CoinKind.Shifted, r.Amplitudes)] },
+            _ => r with { Kind = CoinKind.Direct },
+        }).ToArray());
+
+    public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests) => inner.ReadCounters(requests);
+
+    public void Dispose() => inner.Dispose();
+}
