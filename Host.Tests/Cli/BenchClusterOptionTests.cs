@@ -11,7 +11,7 @@ public sealed class BenchClusterOptionTests : IDisposable
     public void Dispose() => _scratch.Dispose();
 
     private (int Code, string Error) Bench(string cluster) => ConsoleCapture.Run("bench", "fullstate", "--scenes", RepositoryPaths.Scenes, "--scene-names", "qornell-8",
-        "--sizes", "2", "--workers", "1", "--cluster", cluster, "-o", _scratch.File("report.md"));
+        "--sizes", "2", "--workers", "1", "--cluster", cluster, "-o", _scratch.File("performance-fullstate.md"));
 
     [Fact]
     public void AMissingClusterFileIsBadInput()
