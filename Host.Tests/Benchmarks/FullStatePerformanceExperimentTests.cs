@@ -19,13 +19,13 @@ public sealed class FullStatePerformanceExperimentTests
         var report = FullStatePerformanceExperiment.Run(settings, _ => { });
 
         var renders = report.Table("renders");
-        Assert.Equal(["baseline", "current"], renders.Rows.Select(r => r[renders.IndexOf("engine")]));
+        Assert.Equal(["baseline", "current"], renders.Rows.Select(r => renders.Cell(r, "engine")));
         // The render's calls, plus the 10 calls (a warm-up and 9 timed) that measure the call floor before each render.
-        var calls = renders.Rows.Sum(r => long.Parse(r[renders.IndexOf("calls")], NumberStyles.AllowThousands, CultureInfo.InvariantCulture));
+        var calls = renders.Rows.Sum(r => long.Parse(renders.Cell(r, "calls"), NumberStyles.AllowThousands, CultureInfo.InvariantCulture));
         Assert.Equal(pool.Requests, calls + 2 * 10);
         // The primary rays at least, the same on both engines' pipelines.
-        Assert.All(renders.Rows, r => Assert.True(int.Parse(r[renders.IndexOf("rays")], NumberStyles.AllowThousands, CultureInfo.InvariantCulture) >= 4));
-        Assert.All(renders.Rows, r => Assert.True(long.Parse(r[renders.IndexOf("Grover runs")], NumberStyles.AllowThousands, CultureInfo.InvariantCulture) > 0));
+        Assert.All(renders.Rows, r => Assert.True(int.Parse(renders.Cell(r, "rays"), NumberStyles.AllowThousands, CultureInfo.InvariantCulture) >= 4));
+        Assert.All(renders.Rows, r => Assert.True(long.Parse(renders.Cell(r, "Grover runs"), NumberStyles.AllowThousands, CultureInfo.InvariantCulture) > 0));
         // The pool's workers, not the local worker count the settings would start without it.
         Assert.Contains("seed 5, 1 workers", report.Blocks.OfType<ReportText>().First().Markdown);
         Assert.Single(report.Table("ratios").Rows);

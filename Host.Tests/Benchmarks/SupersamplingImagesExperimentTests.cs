@@ -12,7 +12,7 @@ public sealed class SupersamplingImagesExperimentTests
     [Fact]
     public void DataHoldOneRunPerConfigurationAndSeed()
     {
-        var runs = Report.Data();
+        var runs = Report.DataTable();
         // Fig. 1's six estimators, then MC and QSS on the colour and the black-and-white 4x4 output.
         Assert.Equal(6 + 4, runs.Rows.Count);
         Assert.Equal(["MC", "QSS planes t=4 P=1"], runs.Rows.Where(r => r[0] == "qornell black-and-white").Select(r => r[3]));
@@ -22,17 +22,17 @@ public sealed class SupersamplingImagesExperimentTests
     [Fact]
     public void TablesShowTheRunsErrors()
     {
-        var runs = Report.Data();
+        var runs = Report.DataTable();
         var figure = Report.Table("fig-1");
         foreach (var run in runs.Rows.Where(r => r[2] == "64"))
         {
             // The data keep 6 significant digits, the tables 3 or 1 decimals: equal within the table's rounding.
-            Assert.Equal(Number(run[6]), Number(figure.Cell(run[3], "mean abs error (levels)")), 0.0005 + 1e-9);
-            Assert.Equal(100 * Number(run[9]), Number(figure.Cell(run[3], "exact pixels").TrimEnd('%')), 0.05 + 1e-9);
+            Assert.Equal(Number(run[6]), Number(figure.Cell(figure.Rows.Single(r => r[0] == run[3]), "mean abs error (levels)")), 0.0005 + 1e-9);
+            Assert.Equal(100 * Number(run[9]), Number(figure.Cell(figure.Rows.Single(r => r[0] == run[3]), "exact pixels").TrimEnd('%')), 0.05 + 1e-9);
         }
         var tables = Report.Table("tables");
         var mc = runs.Rows.Single(r => r[0] == "qornell" && r[2] == "16" && r[3] == "MC");
-        var cell = tables.Rows.Single(r => r[0] == "qornell")[tables.IndexOf("exact MC")];
+        var cell = tables.Cell(tables.Rows.Single(r => r[0] == "qornell"), "exact MC");
         Assert.Equal(100 * Number(mc[9]), Number(cell.TrimEnd('%')), 0.05 + 1e-9);
     }
 
@@ -42,7 +42,7 @@ public sealed class SupersamplingImagesExperimentTests
     public void ConfidenceBinsCountEveryPixelOnce()
     {
         var correlation = Report.Table("confidence-correlation");
-        var bins = Report.Data("confidence");
+        var bins = Report.DataTable("confidence");
         foreach (var input in correlation.Rows)
         {
             var pixels = bins.Rows.Where(b => b[0] == input[0]).Sum(b => int.Parse(b[3], CultureInfo.InvariantCulture));
@@ -50,7 +50,7 @@ public sealed class SupersamplingImagesExperimentTests
         }
         // 4x4 outputs for the thesis's inputs, 64x64 for fig. 1's.
         Assert.Equal(["16", "16", "4096"], correlation.Rows.Select(r => r[1]));
-        Assert.Equal(["tables", "confidence-bins"], Report.Plots().Select(p => p.Name));
+        Assert.Equal(["tables", "confidence-bins"], Report.PlotBlocks().Select(p => p.Name));
         Assert.Equal(["fig1", "confidence-map"], Report.Blocks.OfType<ReportImage>().Select(i => i.Name));
     }
 }

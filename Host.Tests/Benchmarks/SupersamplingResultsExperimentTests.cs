@@ -25,10 +25,10 @@ public sealed class SupersamplingResultsExperimentTests
         foreach (var q in SupersamplingBenchmark.QueryLevels)
         {
             var key = q.ToString(CultureInfo.InvariantCulture);
-            Assert.Equal(E(Points.Single(p => p.Method == "mc" && p.Queries == q).MeanError), table.Cell(key, "MC"));
+            Assert.Equal(E(Points.Single(p => p.Method == "mc" && p.Queries == q).MeanError), table.Cell(table.Rows.Single(r => r[0] == key), "MC"));
             var qcoin = Points.Where(p => p.Method == "qcoin" && p.Queries == q).ToList();
             var best = qcoin.MinBy(p => p.MeanError)!;
-            Assert.Equal($"{E(best.MeanError)} ({best.Parameter})", table.Cell(key, "QCoin best (k)"));
+            Assert.Equal($"{E(best.MeanError)} ({best.Parameter})", table.Cell(table.Rows.Single(r => r[0] == key), "QCoin best (k)"));
             // The best is no worse than any fixed k shown.
             Assert.All(qcoin, p => Assert.True(best.MeanError <= p.MeanError));
         }
@@ -37,13 +37,13 @@ public sealed class SupersamplingResultsExperimentTests
     [Fact]
     public void DataHoldEveryPointAndThePlotsOneSeriesPerCurve()
     {
-        var data = Report.Data();
+        var data = Report.DataTable();
         Assert.Equal(["method", "parameter", "queries", "mean_abs_error"], data.Header);
         Assert.Equal(Points.Count, data.Rows.Count);
         Assert.Equal(Points.Select(p => p.MeanError.ToString("G6", CultureInfo.InvariantCulture)), data.Rows.Select(r => r[3]));
-        Assert.Equal(["error-vs-queries", "qcoin-k"], Report.Plots().Select(p => p.Name));
-        Assert.Equal(5, Report.Plots()[0].Spec.Series.Count);
-        Assert.Equal(6, Report.Plots()[1].Spec.Series.Count);
+        Assert.Equal(["error-vs-queries", "qcoin-k"], Report.PlotBlocks().Select(p => p.Name));
+        Assert.Equal(5, Report.PlotBlocks()[0].Spec.Series.Count);
+        Assert.Equal(6, Report.PlotBlocks()[1].Spec.Series.Count);
     }
 
     [Fact]

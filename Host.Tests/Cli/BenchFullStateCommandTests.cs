@@ -3,8 +3,8 @@ using QuantumRayTracing.Tests.Cluster;
 
 namespace QuantumRayTracing.Tests.Cli;
 
-/// <summary>A bench given `--cluster` it cannot use stops with one line and the cluster's exit code, before any work and without a report.</summary>
-public sealed class BenchClusterOptionTests : IDisposable
+/// <summary>`bench fullstate` given a `--cluster` it cannot use stops with one line and the cluster's exit code, before any work and without a report.</summary>
+public sealed class BenchFullStateCommandTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-bench-cluster-option");
 
