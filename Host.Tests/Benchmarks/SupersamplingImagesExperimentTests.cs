@@ -50,7 +50,8 @@ public sealed class SupersamplingImagesExperimentTests
         }
         // 4x4 outputs for the thesis's inputs, 64x64 for fig. 1's.
         Assert.Equal(["16", "16", "4096"], correlation.Rows.Select(r => r[1]));
-        Assert.Equal(["tables", "confidence-bins"], Report.PlotBlocks().Select(p => p.Name));
-        Assert.Equal(["fig1", "confidence-map"], Report.Blocks.OfType<ReportImage>().Select(i => i.Name));
+        // The names the command checks before the work are the ones the report writes.
+        Assert.Equal(SupersamplingImagesExperiment.Pictures.Order(), Report.Blocks.Select(b => b switch { ReportPlot p => p.Name, ReportImage i => i.Name, _ => null }).OfType<string>().Order());
+        Assert.Equal(SupersamplingImagesExperiment.DataTables.Order(), Report.Blocks.OfType<ReportData>().Select(d => d.Table.Name ?? "").Order());
     }
 }

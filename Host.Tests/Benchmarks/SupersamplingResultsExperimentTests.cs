@@ -41,7 +41,9 @@ public sealed class SupersamplingResultsExperimentTests
         Assert.Equal(["method", "parameter", "queries", "mean_abs_error"], data.Header);
         Assert.Equal(Points.Count, data.Rows.Count);
         Assert.Equal(Points.Select(p => p.MeanError.ToString("G6", CultureInfo.InvariantCulture)), data.Rows.Select(r => r[3]));
-        Assert.Equal(["error-vs-queries", "qcoin-k"], Report.PlotBlocks().Select(p => p.Name));
+        // The names the command checks before the work are the ones the report writes.
+        Assert.Equal(SupersamplingResultsExperiment.Pictures, Report.PlotBlocks().Select(p => p.Name));
+        Assert.Equal(SupersamplingResultsExperiment.DataTables, Report.Blocks.OfType<ReportData>().Select(d => d.Table.Name ?? ""));
         Assert.Equal(5, Report.PlotBlocks()[0].Spec.Series.Count);
         Assert.Equal(6, Report.PlotBlocks()[1].Spec.Series.Count);
     }

@@ -16,6 +16,9 @@ namespace QuantumRayTracing.Benchmarks;
 /// </summary>
 public static class FrameSweepExperiment
 {
+    /// <summary>The report's plot, by name, for checking its file before the work.</summary>
+    public static readonly string[] Pictures = [HardwareReport.RuntimePlot];
+
     public static Report Run(FrameSweepSettings settings, Action<string> progress)
     {
         var qornell64 = Qornell(64);

@@ -16,6 +16,9 @@ public static class SupersamplingImagesExperiment
 {
     public const string Title = "Supersampling images";
 
+    /// <summary>The report's plots, images and data tables, by name, for checking their files before the work.</summary>
+    public static readonly string[] Pictures = ["fig1", "tables", "confidence-bins", "confidence-map"], DataTables = ["", "confidence"];
+
     // Thesis 004, tables 4.1 and 4.2 (4x4 subpixels): mean error per pixel (%) and ideal pixels (%), classical / quantum.
     private static readonly Dictionary<int, (int McError, int QssError, int McExact, int QssExact)> Thesis = new()
     {

@@ -15,6 +15,9 @@ public static class SupersamplingResultsExperiment
 {
     public const string Title = "Supersampling results";
 
+    /// <summary>The report's plots and data tables, by name, for checking their files before the work.</summary>
+    public static readonly string[] Pictures = ["error-vs-queries", "qcoin-k"], DataTables = [""];
+
     public static Report Run(SupersamplingResultsSettings settings, Action<string> progress)
     {
         progress($"error against queries over {settings.Trials} means");

@@ -26,6 +26,8 @@ public sealed class BenchSupersampleCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
+        writer.EnsureWritable(SupersamplingResultsExperiment.Pictures);
+        writer.EnsureDataWritable(SupersamplingResultsExperiment.DataTables);
         var settings = new SupersamplingResultsSettings(parse.GetValue(_trials), parse.GetValue(_report.Seed));
         var report = SupersamplingResultsExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));

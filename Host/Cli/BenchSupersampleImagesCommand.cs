@@ -40,6 +40,8 @@ public sealed class BenchSupersampleImagesCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
+        writer.EnsureWritable(SupersamplingImagesExperiment.Pictures);
+        writer.EnsureDataWritable(SupersamplingImagesExperiment.DataTables);
         var settings = new SupersamplingImagesSettings(parse.GetValue(_seeds), parse.GetValue(_sizes)!);
         var report = SupersamplingImagesExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));

@@ -100,7 +100,7 @@ public sealed class EstimateFrameSweepCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandLine);
-        writer.EnsureWritable();
+        writer.EnsureWritable(FrameSweepExperiment.Pictures);
         var versions = ToolVersions.Detect();
         var machine = MachineDescription.Describe(versions.QsharpLang, versions.Node);
         var settings = new FrameSweepSettings(parse.GetValue(_sizes)!, parse.GetValue(_primitives)!, parse.GetValue(_scalingSize), parse.GetValue(_detailedSize),

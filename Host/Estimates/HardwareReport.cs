@@ -22,6 +22,9 @@ public sealed record HardwareReport(
 {
     public const string Title = "What a frame costs on a fault-tolerant machine";
 
+    /// <summary>The name of the runtime plot, written as &lt;report&gt;-runtime-vs-primitives.png.</summary>
+    public const string RuntimePlot = "runtime-vs-primitives";
+
     /// <summary>The report; <paramref name="machine"/> names what the classical renders were timed on.</summary>
     public Report ToReport(string machine)
     {
@@ -131,7 +134,7 @@ public sealed record HardwareReport(
         foreach (var (n, frame) in ByPrimitives)
             qubits.Row([n.ToString(CultureInfo.InvariantCulture), .. frame.Cost.Total.Split.Select(s => $"{N(s.PhysicalQubits)} ({Distance(s)})")]);
         report.Table(qubits);
-        report.Plot("runtime-vs-primitives", FramePlots.RuntimeAgainstPrimitives($"Runtime per frame, Qornell box, {ScalingSize}x{ScalingSize}, one QPU",
+        report.Plot(RuntimePlot, FramePlots.RuntimeAgainstPrimitives($"Runtime per frame, Qornell box, {ScalingSize}x{ScalingSize}, one QPU",
                 ByPrimitives.Select(p => p.Primitives).ToArray(),
                 models.Select((m, i) => (m.ToString(), (IReadOnlyList<double>)ByPrimitives.Select(p => p.Frame.Cost.Total.Split[i].SequentialNanoseconds / 1e9).ToArray())).ToArray(),
                 ByPrimitives.Select(p => p.Frame.ClassicalTime(p.Frame.Cost.Total.Name).TotalSeconds).ToArray()),
