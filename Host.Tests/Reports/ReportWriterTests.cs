@@ -57,6 +57,18 @@ public sealed class ReportWriterTests : IDisposable
     }
 
     [Fact]
+    public void APictureItDidNotWriteFailsTheCheckBeforeTheWork()
+    {
+        File.WriteAllText(_scratch.File("performance-curve.png"), "someone's picture");
+        var writer = new ReportWriter(_scratch.File("performance.md"), Command);
+        writer.EnsureWritable(["other"]);
+        var error = Assert.Throws<UserError>(() => writer.EnsureWritable(["other", "curve"]));
+        Assert.Contains("performance-curve.png", error.Message);
+        // A report printed only writes no picture, so none is checked.
+        new ReportWriter(null, Command).EnsureWritable(["curve"]);
+    }
+
+    [Fact]
     public void ARerunReplacesItsOwnFiles()
     {
         var path = _scratch.File("performance.md");
