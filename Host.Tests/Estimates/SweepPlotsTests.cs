@@ -1,5 +1,6 @@
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Tests.Estimates;
 
@@ -31,9 +32,10 @@ public sealed class SweepPlotsTests
     {
         var plots = SweepPlots.Draw(Report(withCircuits: true), Primitives, Bits);
         Assert.Equal(["ccz-vs-primitives", "qubits-vs-primitives", "gates-vs-primitives", "qubits-vs-bits", "gates-vs-bits"], plots.Select(p => p.Suffix));
-        Assert.All(plots, p => Assert.Equal((800, 500), (p.Image.Width, p.Image.Height)));
+        var images = plots.Select(p => PlotImage.Render(p.Spec)).ToArray();
+        Assert.All(images, image => Assert.Equal((800, 500), (image.Width, image.Height)));
         // Each plot draws its series in colour on a white background.
-        Assert.All(plots, p => Assert.True(HasColour(p.Image.Pixels.ToArray()), $"{p.Suffix} has no coloured pixel"));
+        Assert.All(plots.Zip(images), p => Assert.True(HasColour(p.Second.Pixels.ToArray()), $"{p.First.Suffix} has no coloured pixel"));
     }
 
     private static bool HasColour(byte[] rgb)

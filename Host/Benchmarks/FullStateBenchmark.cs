@@ -61,10 +61,14 @@ public static class FullStateBenchmark
         return times[repeats / 2];
     }
 
-    /// <summary>Renders <paramref name="scene"/> with the default pipeline on a fresh pool of <paramref name="workers"/> bridges.</summary>
-    public static Row Run(string name, Scene scene, int size, Variant variant, int workers, ulong seed)
+    /// <summary>
+    /// Renders <paramref name="scene"/> with the default pipeline on <paramref name="pool"/> (a cluster's bridges) when given,
+    /// else on a fresh pool of <paramref name="workers"/> local bridges.
+    /// </summary>
+    public static Row Run(string name, Scene scene, int size, Variant variant, int workers, ulong seed, BridgePool? pool = null)
     {
-        using var pool = new BridgePool(workers);
+        using var fresh = pool is null ? new BridgePool(workers) : null;
+        pool ??= fresh!;
         var floor = CallFloorMilliseconds(pool.Bridges[0], variant == Variant.Current ? FullStateEngine.BatchOperation : BaselineEngine.Operation);
         var (requests, time) = (pool.Requests, pool.RequestTime);
         var root = new SeededRandom(seed);
@@ -75,7 +79,7 @@ public static class FullStateBenchmark
             result = SceneRenderer.Render(scene, search, DefaultPipeline(size, seed));
         var wall = clock.Elapsed;
         var runs = engine is FullStateEngine current ? current.GroverRuns : ((BaselineEngine)engine).GroverRuns;
-        return new Row(name, size, variant, workers, result.Total.Rays, wall, pool.Requests - requests, pool.RequestTime - time, runs, floor, LoadAverage());
+        return new Row(name, size, variant, pool.Workers, result.Total.Rays, wall, pool.Requests - requests, pool.RequestTime - time, runs, floor, LoadAverage());
     }
 
     /// <summary>The 1-minute load average (Linux /proc/loadavg), or NaN: what else the machine was running.</summary>

@@ -1,5 +1,3 @@
-using System.Globalization;
-using System.Text;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Supersampling;
 
@@ -100,13 +98,5 @@ public static class SupersamplingBenchmark
         var log = 0.0;
         for (var i = 1; i <= x; i++) log += Math.Log((double)(n - x + i) / i);
         return Math.Exp(log + x * Math.Log(p) + (n - x) * Math.Log(1 - p));
-    }
-
-    public static string Csv(IEnumerable<Point> points)
-    {
-        var text = new StringBuilder("method,parameter,queries,mean_abs_error\n");
-        foreach (var p in points)
-            text.Append(CultureInfo.InvariantCulture, $"{p.Method},{p.Parameter},{p.Queries},{p.MeanError:G6}\n");
-        return text.ToString();
     }
 }

@@ -1,5 +1,3 @@
-using System.Globalization;
-using System.Text;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
@@ -101,14 +99,5 @@ public static class SupersamplingImageBenchmark
             if (seen >= cut) break;
         }
         return inside / total;
-    }
-
-    public static string RunsCsv(IEnumerable<Run> runs)
-    {
-        var text = new StringBuilder("image,output_size,subpixels,method,queries,seed,mae_levels,mae_fraction,estimator_error,exact_share\n");
-        foreach (var r in runs)
-            text.Append(CultureInfo.InvariantCulture,
-                $"{r.Image},{r.Size},{r.Side * r.Side},{r.Method},{r.Queries},{r.Seed},{r.Error.MeanLevels:G6},{r.Error.MeanFraction:G6},{r.Error.EstimatorError:G6},{r.Error.ExactShare:G6}\n");
-        return text.ToString();
     }
 }

@@ -1,20 +1,10 @@
 using System.CommandLine;
-using System.Globalization;
-using System.Text;
 using QuantumRayTracing.Benchmarks;
-using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Cluster;
-using QuantumRayTracing.Engines;
-using QuantumRayTracing.Rendering;
-using QuantumRayTracing.Scenes;
-using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>
-/// `bench cluster`: the same fullstate render on local bridges and on a cluster's workers, and the time one
-/// bridge request takes on each path (the per-chunk overhead of the cluster).
-/// </summary>
+/// <summary>`bench cluster`: options → <see cref="ClusterPerformanceSettings"/> → <see cref="ClusterPerformanceExperiment"/> (docs/cluster-performance.md).</summary>
 public sealed class BenchClusterCommand : Command
 {
     private readonly BenchReportOptions _report = new("qrt bench cluster", "docs/cluster-performance.md");
@@ -51,36 +41,12 @@ public sealed class BenchClusterCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var report = _report.Report(parse);
+        var writer = _report.Writer(parse);
         var scene = _report.Load(parse, "qornell-64");
-        var (size, workers, seed) = (parse.GetValue(_size), parse.GetValue(_report.Workers), parse.GetValue(_report.Seed));
-        var options = RenderDefaults.Options(size, size, seed);
-        var reference = RenderMeasurement.Reference(scene, options);
-        using var cluster = ClusterBridges.Start(parse.GetValue(_cluster)!.FullName, workers);
-        using var local = new BridgePool(workers);
-
-        var requests = parse.GetValue(_requests);
-        var localTrip = ClusterBenchmark.RoundTripMilliseconds(local, requests);
-        var clusterTrip = ClusterBenchmark.RoundTripMilliseconds(cluster, requests);
-        // Local first, then the cluster, each after the round trips started its bridges.
-        var onLocal = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, workers, reference, pool: local);
-        var onCluster = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, workers, reference, pool: cluster);
-
-        string F(double x, string format) => x.ToString(format, CultureInfo.InvariantCulture);
-        var text = new StringBuilder();
-        text.AppendLine($"# Cluster against local bridges");
-        text.AppendLine();
-        text.AppendLine($"Fullstate render of {scene.Name} at {size}x{size}, seed {seed}, `render`'s default pipeline; one run each, local first. "
-            + "#Dpix against the classical render (the simulator cannot be seeded, so the two renders differ by chance).");
-        text.AppendLine();
-        text.AppendLine("| where | bridges | wall time | ms per ray | against local | #Dpix |");
-        text.AppendLine("|---|---|---|---|---|---|");
-        text.AppendLine($"| {local.Where} | {local.Workers} | {F(onLocal.WallTime.TotalSeconds, "0.00")} s | {F(onLocal.MillisecondsPerRay, "0.000")} | 1.00x | {onLocal.Error.DifferentPixels} |");
-        text.AppendLine($"| {cluster.Where} | {cluster.Workers} | {F(onCluster.WallTime.TotalSeconds, "0.00")} s | {F(onCluster.MillisecondsPerRay, "0.000")} | {F(onCluster.WallTime / onLocal.WallTime, "0.00")}x | {onCluster.Error.DifferentPixels} |");
-        text.AppendLine();
-        text.AppendLine($"One bridge request at a time (its version; {requests} requests after a warm-up): local {F(localTrip, "0.00")} ms, cluster {F(clusterTrip, "0.00")} ms; "
-            + $"the cluster path's difference per chunk: {F(clusterTrip - localTrip, "+0.00;-0.00")} ms (a difference below a millisecond or two is within the noise of a shared machine).");
-        BenchReportOptions.Publish(report, text);
+        using var cluster = ClusterBridges.Start(parse.GetValue(_cluster)!.FullName, parse.GetValue(_report.Workers));
+        var settings = new ClusterPerformanceSettings(scene, parse.GetValue(_size), parse.GetValue(_requests), parse.GetValue(_report.Seed), parse.GetValue(_report.Workers), cluster);
+        var report = ClusterPerformanceExperiment.Run(settings, Console.Error.WriteLine);
+        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
         return 0;
     }
 }

@@ -2,19 +2,13 @@ using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Estimates;
-using QuantumRayTracing.Output;
-using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
-using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>
-/// `estimate frame-sweep`: whole-frame costs on fault-tolerant machines for Qornell-64 and Depth
-/// Complexity 64 at several sizes, and for the Qornell box against N, written as Markdown
-/// (docs/hardware.md) with a plot of runtime per frame against N beside it.
-/// </summary>
+/// <summary>`estimate frame-sweep`: options → <see cref="FrameSweepSettings"/> → <see cref="FrameSweepExperiment"/> (docs/hardware.md, with a plot of runtime per frame against N).</summary>
 public sealed class EstimateFrameSweepCommand : Command
 {
     public const string CommandLine = "qrt estimate frame-sweep";
@@ -105,68 +99,14 @@ public sealed class EstimateFrameSweepCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_output);
-        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandLine));
-        report.EnsureWritable();
-        var plotPath = output is null ? null : Path.Combine(output.DirectoryName!, $"{Path.GetFileNameWithoutExtension(output.Name)}-runtime-vs-primitives.png");
-        if (plotPath is not null) ImageFiles.EnsureWritable([plotPath], []);
-
-        var models = _options.QubitModels(parse);
-        var construction = _options.Construction(parse);
-        var budget = parse.GetValue(_errorBudget);
-        var qpus = parse.GetValue(_qpus);
-        var seed = parse.GetValue(_seed);
-        FrameSettings Settings(Scene scene, int size) =>
-            new(scene, RenderDefaults.Options(size, size, seed), new QSearchOptions(), construction, models, budget, qpus);
-        var qornell64 = Qornell(64);
-        var depthComplexity = SceneLoader.Parse(DepthComplexityScene.Build(64).ToJson(), "built-in depth-complexity-64");
-
-        HardwareReport hardware;
-        string machine;
-        using (var pool = new BridgePool(parse.GetValue(_options.Workers)))
-        {
-            FrameEstimate Frame(Scene scene, int size)
-            {
-                var progress = new ConsoleProgress($"{scene.Name}, {size}x{size}");
-                var frame = FrameEstimate.Run(Settings(scene, size), pool, progress);
-                progress.Finish();
-                Console.Error.WriteLine($"{scene.Name}, {size}x{size}: {frame.Recording.Runs.Count} runs, {frame.EstimatorJobs} estimator jobs, render {frame.WallTimes.Render.TotalSeconds:0.0} s, pricing {frame.WallTimes.Pricing.TotalSeconds:0.0} s");
-                return frame;
-            }
-            var frames = new Dictionary<(string, int), FrameEstimate>();
-            FrameEstimate Cached(string key, Scene scene, int size)
-            {
-                if (!frames.TryGetValue((key, size), out var frame)) frames[(key, size)] = frame = Frame(scene, size);
-                return frame;
-            }
-            var sizes = parse.GetValue(_sizes)!;
-            var scenes = sizes.Select(s => ("Qornell-64", s, Cached("qornell-64", qornell64, s)))
-                .Concat(sizes.Select(s => ("Depth Complexity 64", s, Cached("depth-complexity-64", depthComplexity, s)))).ToArray();
-            var scaling = parse.GetValue(_scalingSize);
-            var byPrimitives = parse.GetValue(_primitives)!.Order()
-                .Select(n => (n, Cached($"qornell-{n}", n == 64 ? qornell64 : Qornell(n), scaling))).ToArray();
-            var detailed = Cached("qornell-64", qornell64, parse.GetValue(_detailedSize));
-            var paper = EstimateSweep.Subject(4, EstimateSweep.DefaultCoordinateBits) with { Iterations = 1 };
-            var device = new ResourceEstimator(pool, models, withCircuits: false).Estimate([(EstimatedCircuits.SearchRun, paper with { Oracle = paper.Oracle with { Construction = construction } })])[0];
-            hardware = new HardwareReport(scenes, byPrimitives, scaling, detailed, device);
-            var versions = pool.Bridges[0].Version();
-            machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
-        }
-
-        var arguments = string.Join(' ', Environment.GetCommandLineArgs().Skip(1));
-        var text = hardware.Markdown($"dotnet run --project Host -c Release -- {arguments}", machine, plotPath is null ? null : Path.GetFileName(plotPath));
-        Console.WriteLine(text);
-        report.Write(text);
-        if (plotPath is not null)
-        {
-            var plot = FramePlots.RuntimeAgainstPrimitives($"Runtime per frame, Qornell box, {hardware.ScalingSize}x{hardware.ScalingSize}, one QPU",
-                hardware.ByPrimitives.Select(p => p.Primitives).ToArray(),
-                models.Select((m, i) => (m.ToString(), (IReadOnlyList<double>)hardware.ByPrimitives.Select(p => p.Frame.Cost.Total.Split[i].SequentialNanoseconds / 1e9).ToArray())).ToArray(),
-                hardware.ByPrimitives.Select(p => p.Frame.ClassicalTime(p.Frame.Cost.Total.Name).TotalSeconds).ToArray());
-            ImageFiles.Write([(PlotImage.Render(plot), plotPath)]);
-        }
+        var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandLine);
+        writer.EnsureWritable(FrameSweepExperiment.Pictures);
+        var versions = ToolVersions.Detect();
+        var machine = MachineDescription.Describe(versions.QsharpLang, versions.Node);
+        var settings = new FrameSweepSettings(parse.GetValue(_sizes)!, parse.GetValue(_primitives)!, parse.GetValue(_scalingSize), parse.GetValue(_detailedSize),
+            parse.GetValue(_seed), _options.Construction(parse), _options.QubitModels(parse), parse.GetValue(_errorBudget), parse.GetValue(_qpus), parse.GetValue(_options.Workers), machine);
+        var report = FrameSweepExperiment.Run(settings, Console.Error.WriteLine);
+        writer.Write(report, BenchReportOptions.Footer(machine));
         return 0;
     }
-
-    private static Scene Qornell(int primitives) => SceneLoader.Parse(QornellBox.Build(primitives).ToJson(), $"built-in qornell-{primitives}");
 }

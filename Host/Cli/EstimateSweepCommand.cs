@@ -1,14 +1,12 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Estimates;
-using QuantumRayTracing.Output;
+using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>
-/// `estimate sweep`: the oracle's resource estimates against the number of primitives and the
-/// coordinate bits, before and after the smaller construction, written as Markdown (docs/estimates.md).
-/// </summary>
+/// <summary>`estimate sweep`: options → <see cref="OracleSweepSettings"/> → <see cref="OracleSweepExperiment"/> (docs/estimates.md).</summary>
 public sealed class EstimateSweepCommand : Command
 {
     public const string CommandLine = "qrt estimate sweep";
@@ -62,40 +60,13 @@ public sealed class EstimateSweepCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_output);
-        var report = new GeneratedReport(output?.FullName, GeneratedReport.MarkdownMarker(CommandLine));
-        report.EnsureWritable();
-        var primitives = parse.GetValue(_primitives)!;
-        var bits = parse.GetValue(_bits)!;
-        var ablation = parse.GetValue(_ablation)!;
-
-        var wanted = SweepReport.Wanted(primitives, bits, ablation).ToArray();
-        var subjects = wanted.Select(p => (p.Primitives, p.Bits)).Distinct().ToDictionary(p => p, p => EstimateSweep.Subject(p.Primitives, p.Bits));
-        var jobs = wanted.Select(p => (EstimatedCircuits.Oracle, subjects[(p.Primitives, p.Bits)].With(p.Construction))).ToArray();
-
-        var estimator = _options.Create(parse, out var pool);
-        IReadOnlyList<CircuitEstimate> estimates;
-        string machine;
-        using (pool)
-        {
-            var versions = pool.Bridges[0].Version();
-            machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
-            estimates = EstimateProgress.Run(estimator, jobs, $"estimating {jobs.Length} oracles");
-        }
-
-        var points = wanted.Zip(estimates).ToDictionary(p => (p.First.Primitives, p.First.Bits, p.First.Construction.Name), p => p.Second);
-        var sweep = new SweepReport(points, estimator.Models);
-        // Plots go beside the report as <report>-<suffix>.png; without a report file there is nowhere to put them.
-        var plots = output is null ? [] : SweepPlots.Draw(sweep, primitives, bits)
-            .Select(p => (p.Image, Path: Path.Combine(output.DirectoryName!, $"{Path.GetFileNameWithoutExtension(output.Name)}-{p.Suffix}.png"), p.Caption))
-            .ToArray();
-        ImageFiles.EnsureWritable(plots.Select(p => p.Path).ToArray(), []);
-        var arguments = string.Join(' ', Environment.GetCommandLineArgs().Skip(1));
-        var text = sweep.Markdown(primitives, bits, ablation, $"dotnet run --project Host -c Release -- {arguments}", machine,
-            plots.Select(p => (Path.GetFileName(p.Path), p.Caption)).ToArray());
-        Console.WriteLine(text);
-        report.Write(text);
-        ImageFiles.Write(plots.Select(p => (p.Image, p.Path)));
+        var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandLine);
+        writer.EnsureWritable();
+        var settings = new OracleSweepSettings(parse.GetValue(_primitives)!, parse.GetValue(_bits)!, parse.GetValue(_ablation)!,
+            _options.QubitModels(parse), WithCircuits: !parse.GetValue(_options.NoCircuit), parse.GetValue(_options.Workers));
+        var report = OracleSweepExperiment.Run(settings, Console.Error.WriteLine);
+        var versions = ToolVersions.Detect();
+        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(versions.QsharpLang, versions.Node)));
         return 0;
     }
 }

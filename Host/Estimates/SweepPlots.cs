@@ -6,8 +6,8 @@ namespace QuantumRayTracing.Estimates;
 /// <summary>The PNG plots of a resource sweep: Toffolis, qubits and gates against N and against the coordinate bits.</summary>
 public static class SweepPlots
 {
-    /// <summary>One plot: the file name's suffix (estimates-&lt;suffix&gt;.png beside the report), its caption and image.</summary>
-    public sealed record Plot(string Suffix, string Caption, RgbImage Image);
+    /// <summary>One plot: the file name's suffix (estimates-&lt;suffix&gt;.png beside the report), its caption and what it draws.</summary>
+    public sealed record Plot(string Suffix, string Caption, PlotSpec Spec);
 
     public static IReadOnlyList<Plot> Draw(SweepReport report, IReadOnlyList<int> primitives, IReadOnlyList<int> bits)
     {
@@ -24,7 +24,7 @@ public static class SweepPlots
             new(label, bits.Where(b => report.Points.ContainsKey((n, b, k.Name))).Select(b => ((double)b, value(report.Points[(n, b, k.Name)]))).ToArray());
         void Add(string suffix, string caption, PlotSpec spec)
         {
-            if (spec.Series.Any(s => s.Points.Count > 0)) plots.Add(new Plot(suffix, caption, PlotImage.Render(spec)));
+            if (spec.Series.Any(s => s.Points.Count > 0)) plots.Add(new Plot(suffix, caption, spec));
         }
 
         Add("ccz-vs-primitives", $"Toffolis (CCZ) of one oracle call against N, {c}-bit grid",

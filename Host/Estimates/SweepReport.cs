@@ -1,6 +1,6 @@
 using System.Globalization;
-using System.Text;
 using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Estimates;
 
@@ -11,6 +11,8 @@ namespace QuantumRayTracing.Estimates;
 /// </summary>
 public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, string Construction), CircuitEstimate> points, IReadOnlyList<QubitModel> models)
 {
+    public const string Title = "Resource estimates of the gate-level oracle";
+
     /// <summary>Every estimate, by (N, coordinate bits, construction name).</summary>
     public IReadOnlyDictionary<(int Primitives, int Bits, string Construction), CircuitEstimate> Points => points;
 
@@ -45,149 +47,142 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
         return wanted.DistinctBy(p => (p.Item1, p.Item2, p.Item3.Name));
     }
 
-    /// <summary>The report's Markdown.</summary>
+    /// <summary>The report.</summary>
     /// <param name="primitives">N of the sweep over primitives.</param>
     /// <param name="bits">Coordinate bits of the sweep over the grid.</param>
     /// <param name="ablation">N at which each change is measured alone.</param>
-    /// <param name="command">The command line that regenerates the report.</param>
-    /// <param name="machine">What the estimates ran on.</param>
-    /// <param name="plots">PNG files written beside the report (relative paths) with their captions, shown at the end.</param>
-    public string Markdown(IReadOnlyList<int> primitives, IReadOnlyList<int> bits, IReadOnlyList<int> ablation, string command, string machine,
-        IReadOnlyList<(string File, string Caption)> plots)
+    /// <param name="plots">The sweep's plots, shown at the end.</param>
+    public Report ToReport(IReadOnlyList<int> primitives, IReadOnlyList<int> bits, IReadOnlyList<int> ablation, IReadOnlyList<SweepPlots.Plot> plots)
     {
         var withCircuits = points.Values.All(p => p.Counts is not null);
         var c4 = EstimateSweep.DefaultCoordinateBits;
-        var text = new StringBuilder();
-        text.AppendLine("# Resource estimates of the gate-level oracle");
-        text.AppendLine();
-        text.AppendLine("What the intersection oracle Int_r (paper sec. 4.2, figs. 3-5) costs as a circuit: the Microsoft Resource Estimator's logical counts");
-        text.AppendLine("and physical figures, and the gates and depth of the circuit the QDK extracts (`getCircuit`). Each point is one application of the");
-        text.AppendLine("oracle on fresh registers (`ApplyIntersectionOracleOnNewRegisters`: load, compare, XOR the flags' AND into an output qubit, uncompute),");
-        text.AppendLine($"for the worst-case camera ray of a {EstimateSweep.ImageSize}x{EstimateSweep.ImageSize} image of a generated sweep scene (`SweepScene`: N rectangles on a c-bit integer grid; the ray");
-        text.AppendLine("whose search needs the most qubits, then the most depth bits; its first search, every depth and id accepted). `qrt estimate` gives the");
-        text.AppendLine("same figures, and those of a Grover iteration and a QSearch run, for any scene and pixel.");
-        text.AppendLine();
-        text.AppendLine($"Regenerate: `{command}` (under a minute on 2 cores). Machine: {machine}.");
-        text.AppendLine();
+        var report = new Report(Title);
+        report.Text($"""
+            What the intersection oracle Int_r (paper sec. 4.2, figs. 3-5) costs as a circuit: the Microsoft Resource Estimator's logical counts
+            and physical figures, and the gates and depth of the circuit the QDK extracts (`getCircuit`). Each point is one application of the
+            oracle on fresh registers (`ApplyIntersectionOracleOnNewRegisters`: load, compare, XOR the flags' AND into an output qubit, uncompute),
+            for the worst-case camera ray of a {EstimateSweep.ImageSize}x{EstimateSweep.ImageSize} image of a generated sweep scene (`SweepScene`: N rectangles on a c-bit integer grid; the ray
+            whose search needs the most qubits, then the most depth bits; its first search, every depth and id accepted). `qrt estimate` gives the
+            same figures, and those of a Grover iteration and a QSearch run, for any scene and pixel.
+            """);
 
-        text.AppendLine("## The paper's table 9 beside ours (N = 4)");
-        text.AppendLine();
-        text.AppendLine("| oracle | qubits | gates | depth | basis |");
-        text.AppendLine("|---|---:|---:|---:|---|");
-        text.AppendLine($"| paper (Qiskit) | {PaperQubits} | {PaperGates} | {PaperDepth} | Qiskit's, after its decomposition (not stated further) |");
+        report.Heading("The paper's table 9 beside ours (N = 4)");
+        var table9 = new TextTable("table-9", ["oracle", "qubits", "gates", "depth", "basis"]).AlignRight(1, 2, 3);
+        table9.Row("paper (Qiskit)", N(PaperQubits), N(PaperGates), N(PaperDepth), "Qiskit's, after its decomposition (not stated further)");
         foreach (var construction in new[] { OracleConstruction.Baseline, OracleConstruction.Compact, OracleConstruction.Narrow })
         {
             if (!points.TryGetValue((4, c4, construction.Name), out var p)) continue;
             if (p.Counts is { } counts)
             {
-                text.AppendLine($"| ours, {construction} | {p.Logical.Qubits} | {counts.Native.GateCount} | {counts.Native.Depth} | QDK intrinsics (CCX is one gate) |");
-                text.AppendLine($"| ours, {construction} | {p.Logical.Qubits} | {counts.QiskitCcx.GateCount} | {counts.QiskitCcx.Depth} | CCX as Qiskit's 15 Clifford+T gates |");
+                table9.Row($"ours, {construction}", N(p.Logical.Qubits), N(counts.Native.GateCount), N(counts.Native.Depth), "QDK intrinsics (CCX is one gate)");
+                table9.Row($"ours, {construction}", N(p.Logical.Qubits), N(counts.QiskitCcx.GateCount), N(counts.QiskitCcx.Depth), "CCX as Qiskit's 15 Clifford+T gates");
             }
-            else text.AppendLine($"| ours, {construction} | {p.Logical.Qubits} | – | – | (circuit not extracted) |");
+            else table9.Row($"ours, {construction}", N(p.Logical.Qubits), "–", "–", "(circuit not extracted)");
         }
-        text.AppendLine();
-        text.AppendLine("How the bases differ. The QDK's circuit is the trace of the simulator's intrinsic gates: X, H, S, T, rotations, CX, CZ and");
-        text.AppendLine("CCX (a Toffoli is one gate), with measurements and resets listed apart. The standard library uncomputes every AND and every");
-        text.AppendLine("table lookup by measurement: an X-basis measurement and, on some outcomes, a CZ or Z, where a unitary circuit (as Qiskit's");
-        text.AppendLine("multi-controlled gates build) spends a second Toffoli. Qiskit reports counts after decomposing to its basis, typically single-");
-        text.AppendLine("qubit gates and CX, where a Toffoli is 15 gates (2 H, 6 CX, 7 T/T†) and depth 11; the second row of each of ours replaces");
-        text.AppendLine("every CCX by exactly that definition, which is the closer comparison, though Qiskit's transpiler would also merge adjacent");
-        text.AppendLine("single-qubit gates. Qubits are not basis-dependent: ours count the peak in use, the standard library's auxiliary qubits");
-        text.AppendLine("(lookup helpers, comparator carries, the unlookup's power products) included.");
-        text.AppendLine();
+        report.Table(table9);
+        report.Text("""
+            How the bases differ. The QDK's circuit is the trace of the simulator's intrinsic gates: X, H, S, T, rotations, CX, CZ and
+            CCX (a Toffoli is one gate), with measurements and resets listed apart. The standard library uncomputes every AND and every
+            table lookup by measurement: an X-basis measurement and, on some outcomes, a CZ or Z, where a unitary circuit (as Qiskit's
+            multi-controlled gates build) spends a second Toffoli. Qiskit reports counts after decomposing to its basis, typically single-
+            qubit gates and CX, where a Toffoli is 15 gates (2 H, 6 CX, 7 T/T†) and depth 11; the second row of each of ours replaces
+            every CCX by exactly that definition, which is the closer comparison, though Qiskit's transpiler would also merge adjacent
+            single-qubit gates. Qubits are not basis-dependent: ours count the peak in use, the standard library's auxiliary qubits
+            (lookup helpers, comparator carries, the unlookup's power products) included.
+            """);
 
-        text.AppendLine($"## The oracle against the number of primitives ({c4}-bit grid), before → after");
-        text.AppendLine();
-        text.AppendLine($"Before: `{OracleConstruction.Baseline}`, the oracle as first built (commit 97cb017; the same circuit, kept as `--oracle baseline`): x, y and z");
-        text.AppendLine("tested for every primitive, minimum then maximum in one register, so 6 lookups and an unlookup per computation. After:");
-        text.AppendLine($"`{OracleConstruction.Compact}`, the default: only the two axes in each primitive's plane (on the flat axis the point is the plane and");
-        text.AppendLine("min = max, so that test always passes) and both bounds loaded at once, so 2 lookups and an unlookup, for one more coordinate");
-        text.AppendLine("register and one flag fewer. Every construction is checked against verify-rpc on every basis state (`GateOracleTests`).");
-        text.AppendLine();
-        SweepTable(text, "N", primitives.Select(n => (n.ToString(CultureInfo.InvariantCulture), (n, c4))), withCircuits);
+        report.Heading($"The oracle against the number of primitives ({c4}-bit grid), before → after");
+        report.Text($"""
+            Before: `{OracleConstruction.Baseline}`, the oracle as first built (commit 97cb017; the same circuit, kept as `--oracle baseline`): x, y and z
+            tested for every primitive, minimum then maximum in one register, so 6 lookups and an unlookup per computation. After:
+            `{OracleConstruction.Compact}`, the default: only the two axes in each primitive's plane (on the flat axis the point is the plane and
+            min = max, so that test always passes) and both bounds loaded at once, so 2 lookups and an unlookup, for one more coordinate
+            register and one flag fewer. Every construction is checked against verify-rpc on every basis state (`GateOracleTests`).
+            """);
+        report.Table(SweepTable("by-primitives", "N", primitives.Select(n => (N(n), (n, c4))), withCircuits));
 
-        text.AppendLine($"## The oracle against the coordinate bits (N = {EstimateSweep.DefaultPrimitives}), before → after");
-        text.AppendLine();
-        SweepTable(text, "bits", bits.Select(c => (c.ToString(CultureInfo.InvariantCulture), (EstimateSweep.DefaultPrimitives, c))), withCircuits);
+        report.Heading($"The oracle against the coordinate bits (N = {EstimateSweep.DefaultPrimitives}), before → after");
+        report.Table(SweepTable("by-bits", "bits", bits.Select(c => (N(c), (EstimateSweep.DefaultPrimitives, c))), withCircuits));
 
-        text.AppendLine("## Unload by measurement or by lookup");
-        text.AppendLine();
-        text.AppendLine("Both constructions above clear the loaded registers with the standard library's measurement-based unlookup (`Adjoint Select`:");
-        text.AppendLine("X-basis measurements, then a phase lookup over the index register built from power products, which needs");
-        text.AppendLine("2^⌊n/2⌋ + 2^⌈n/2⌉ − n − 2 auxiliary qubits). Unloading with a second lookup of the same data instead (`narrow` is `compact` so built)");
-        text.AppendLine("needs only the lookup's n − 1 helpers but a lookup's Toffolis. Figures are measured → lookup.");
-        text.AppendLine();
-        text.AppendLine("| N | " + string.Join(" | ", UnloadPairs.Select(p => $"{p.Measured}: qubits | CCZ | CCZ change")) + " |");
-        text.AppendLine("|---:|" + string.Concat(UnloadPairs.Select(_ => "---:|---:|---:|")));
+        report.Heading("Unload by measurement or by lookup");
+        report.Text("""
+            Both constructions above clear the loaded registers with the standard library's measurement-based unlookup (`Adjoint Select`:
+            X-basis measurements, then a phase lookup over the index register built from power products, which needs
+            2^⌊n/2⌋ + 2^⌈n/2⌉ − n − 2 auxiliary qubits). Unloading with a second lookup of the same data instead (`narrow` is `compact` so built)
+            needs only the lookup's n − 1 helpers but a lookup's Toffolis. Figures are measured → lookup.
+            """);
+        var unload = new TextTable("unload", ["N", .. UnloadPairs.SelectMany(p => new[] { $"{p.Measured}: qubits", "CCZ", "CCZ change" })]);
+        unload.AlignRight(Enumerable.Range(0, unload.Header.Count));
         foreach (var n in primitives)
         {
-            var cells = new List<string>();
+            var cells = new List<string> { N(n) };
             foreach (var (measured, lookup) in UnloadPairs)
             {
                 if (points.TryGetValue((n, c4, measured.Name), out var m) && points.TryGetValue((n, c4, lookup.Name), out var l))
-                    cells.Add($"{Arrow(m.Logical.Qubits, l.Logical.Qubits)} | {Arrow(m.Logical.Ccz, l.Logical.Ccz)} | {Change(m.Logical.Ccz, l.Logical.Ccz)}");
-                else cells.Add("– | – | –");
+                    cells.AddRange([Arrow(m.Logical.Qubits, l.Logical.Qubits), Arrow(m.Logical.Ccz, l.Logical.Ccz), Change(m.Logical.Ccz, l.Logical.Ccz)]);
+                else cells.AddRange(["–", "–", "–"]);
             }
-            text.AppendLine($"| {n} | {string.Join(" | ", cells)} |");
+            unload.Row(cells);
         }
-        text.AppendLine();
-        text.AppendLine("The unlookup's power products set the peak width from N = 32 on; the lookup keeps it at the registers plus n − 1. The Toffoli");
-        text.AppendLine("price of the lookup is the same two extra lookups per oracle call in both constructions, so it weighs more, relative to the");
-        text.AppendLine("rest, in the compact one, which has fewer lookups to begin with.");
-        text.AppendLine();
+        report.Table(unload);
+        report.Text("""
+            The unlookup's power products set the peak width from N = 32 on; the lookup keeps it at the registers plus n − 1. The Toffoli
+            price of the lookup is the same two extra lookups per oracle call in both constructions, so it weighs more, relative to the
+            rest, in the compact one, which has fewer lookups to begin with.
+            """);
 
-        text.AppendLine("## Each change on its own");
-        text.AppendLine();
-        text.AppendLine("| N | construction | axes | bound registers | qubits | CCZ | measurements |" + (withCircuits ? " gates (QDK) | depth (QDK) |" : ""));
-        text.AppendLine("|---:|---|---:|---:|---:|---:|---:|" + (withCircuits ? "---:|---:|" : ""));
+        report.Heading("Each change on its own");
+        var changes = new TextTable("each-change", ["N", "construction", "axes", "bound registers", "qubits", "CCZ", "measurements", .. withCircuits ? new[] { "gates (QDK)", "depth (QDK)" } : []]);
+        changes.AlignRight(Enumerable.Range(0, changes.Header.Count).Where(k => k != 1));
         foreach (var n in ablation)
             foreach (var construction in Ablation)
             {
                 if (!points.TryGetValue((n, c4, construction.Name), out var p)) continue;
-                var circuit = p.Counts is { } counts ? $" {counts.Native.GateCount} | {counts.Native.Depth} |" : withCircuits ? " – | – |" : "";
-                text.AppendLine($"| {n} | {construction} | {construction.Axes} | {construction.BoundRegisters} | {p.Logical.Qubits} | {p.Logical.Ccz} | {p.Logical.Measurements} |{circuit}");
+                string[] circuit = p.Counts is { } counts ? [N(counts.Native.GateCount), N(counts.Native.Depth)] : withCircuits ? ["–", "–"] : [];
+                changes.Row([N(n), construction.ToString(), N(construction.Axes), N(construction.BoundRegisters), N(p.Logical.Qubits), N(p.Logical.Ccz), N(p.Logical.Measurements), .. circuit]);
             }
-        text.AppendLine();
+        report.Table(changes);
 
-        text.AppendLine($"## Physical estimates ({OracleConstruction.Compact}, {c4}-bit grid)");
-        text.AppendLine();
-        text.AppendLine("| N | " + string.Join(" | ", models.Select(m => $"{m}: physical qubits | runtime | code distance")) + " |");
-        text.AppendLine("|---:|" + string.Concat(models.Select(_ => "---:|---:|---:|")));
+        report.Heading($"Physical estimates ({OracleConstruction.Compact}, {c4}-bit grid)");
+        var physical = new TextTable("physical", ["N", .. models.SelectMany(m => new[] { $"{m}: physical qubits", "runtime", "code distance" })]);
+        physical.AlignRight(Enumerable.Range(0, physical.Header.Count));
         foreach (var n in primitives)
         {
             if (!points.TryGetValue((n, c4, OracleConstruction.Compact.Name), out var p)) continue;
-            text.AppendLine($"| {n} | " + string.Join(" | ", p.Physical.Select(e => $"{e.PhysicalQubits} | {EstimateTable.Duration(e.RuntimeNanoseconds)} | {e.CodeDistance}")) + " |");
+            physical.Row([N(n), .. p.Physical.SelectMany(e => new[] { N(e.PhysicalQubits), EstimateTable.Duration(e.RuntimeNanoseconds), N(e.CodeDistance) })]);
         }
-        text.AppendLine();
+        report.Table(physical);
 
         if (plots.Count > 0)
         {
-            text.AppendLine("## Plots");
-            text.AppendLine();
-            foreach (var (file, caption) in plots) text.AppendLine($"{caption}:").AppendLine().AppendLine($"![{caption}]({file})").AppendLine();
+            report.Heading("Plots");
+            foreach (var plot in plots) report.Text($"{plot.Caption}:").Plot(plot.Suffix, plot.Spec, plot.Caption);
         }
 
-        text.AppendLine("## Conventions");
-        text.AppendLine();
-        foreach (var note in EstimateTable.Conventions(withCircuits)) text.AppendLine($"- {note}");
-        text.AppendLine("- \"a → b\": the baseline construction's figure, then the compact one's, on the same ray.");
-        return text.ToString();
+        report.Heading("Conventions");
+        report.Text(string.Join('\n', EstimateTable.Conventions(withCircuits).Select(note => $"- {note}")
+            .Append("- \"a → b\": the baseline construction's figure, then the compact one's, on the same ray.")));
+        return report;
     }
 
-    private void SweepTable(StringBuilder text, string key, IEnumerable<(string Label, (int Primitives, int Bits) Point)> rows, bool withCircuits)
+    private TextTable SweepTable(string name, string key, IEnumerable<(string Label, (int Primitives, int Bits) Point)> rows, bool withCircuits)
     {
-        text.AppendLine($"| {key} | depth bits | qubits | ancillas | CCZ | measurements |" + (withCircuits ? " gates (QDK) | depth (QDK) | gates (CCX as 15) | depth (CCX as 15) |" : ""));
-        text.AppendLine("|---:|---:|---:|---:|---:|---:|" + (withCircuits ? "---:|---:|---:|---:|" : ""));
+        var table = new TextTable(name, [key, "depth bits", "qubits", "ancillas", "CCZ", "measurements",
+            .. withCircuits ? new[] { "gates (QDK)", "depth (QDK)", "gates (CCX as 15)", "depth (CCX as 15)" } : []]);
+        table.AlignRight(Enumerable.Range(0, table.Header.Count));
         foreach (var (label, (n, c)) in rows)
         {
             if (!points.TryGetValue((n, c, OracleConstruction.Baseline.Name), out var b) || !points.TryGetValue((n, c, OracleConstruction.Compact.Name), out var a)) continue;
-            var line = $"| {label} | {a.Subject.Oracle.Table.DepthBits} | {Arrow(b.Logical.Qubits, a.Logical.Qubits)} | {Arrow(b.Registers!.Value.AncillaQubits, a.Registers!.Value.AncillaQubits)} | {Arrow(b.Logical.Ccz, a.Logical.Ccz)} | {Arrow(b.Logical.Measurements, a.Logical.Measurements)} |";
+            List<string> cells = [label, N(a.Subject.Oracle.Table.DepthBits), Arrow(b.Logical.Qubits, a.Logical.Qubits), Arrow(b.Registers!.Value.AncillaQubits, a.Registers!.Value.AncillaQubits),
+                Arrow(b.Logical.Ccz, a.Logical.Ccz), Arrow(b.Logical.Measurements, a.Logical.Measurements)];
             if (withCircuits && b.Counts is { } bc && a.Counts is { } ac)
-                line += $" {Arrow(bc.Native.GateCount, ac.Native.GateCount)} | {Arrow(bc.Native.Depth, ac.Native.Depth)} | {Arrow(bc.QiskitCcx.GateCount, ac.QiskitCcx.GateCount)} | {Arrow(bc.QiskitCcx.Depth, ac.QiskitCcx.Depth)} |";
-            text.AppendLine(line);
+                cells.AddRange([Arrow(bc.Native.GateCount, ac.Native.GateCount), Arrow(bc.Native.Depth, ac.Native.Depth), Arrow(bc.QiskitCcx.GateCount, ac.QiskitCcx.GateCount), Arrow(bc.QiskitCcx.Depth, ac.QiskitCcx.Depth)]);
+            table.Row(cells);
         }
-        text.AppendLine();
+        return table;
     }
+
+    private static string N(long value) => value.ToString(CultureInfo.InvariantCulture);
 
     private static string Arrow(long before, long after) => $"{before} → {after}";
 

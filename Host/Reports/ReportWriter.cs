@@ -34,6 +34,13 @@ public sealed class ReportWriter(string? markdownPath, string command, bool tabl
     public string Beside(string name, string extension) =>
         Path.Combine(Directory ?? ".", (name.Length == 0 ? Stem : $"{Stem}-{name}") + extension);
 
+    /// <summary>Checks the CSV files of the report's data tables named <paramref name="data"/> ("" for the unnamed one) before the work.</summary>
+    public void EnsureDataWritable(IEnumerable<string> data)
+    {
+        if (markdownPath is null) return;
+        foreach (var name in data) new GeneratedReport(Beside(name, ".csv"), CsvMarker(command)).EnsureWritable();
+    }
+
     /// <summary>The report as Markdown, with <paramref name="footer"/> lines (machine, command) at its end.</summary>
     public string Markdown(Report report, IEnumerable<string> footer)
     {

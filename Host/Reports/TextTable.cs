@@ -9,6 +9,7 @@ namespace QuantumRayTracing.Reports;
 public sealed class TextTable(string? name, IReadOnlyList<string> header)
 {
     private readonly List<string[]> _rows = [];
+    private readonly HashSet<int> _rightAligned = [];
 
     public string? Name => name;
 
@@ -24,11 +25,18 @@ public sealed class TextTable(string? name, IReadOnlyList<string> header)
         return this;
     }
 
+    /// <summary>Right-aligns the Markdown columns at <paramref name="columns"/> (0-based), for numbers.</summary>
+    public TextTable AlignRight(params IEnumerable<int> columns)
+    {
+        _rightAligned.UnionWith(columns);
+        return this;
+    }
+
     public string ToMarkdown()
     {
         var text = new StringBuilder();
         text.AppendLine($"| {string.Join(" | ", header.Select(Cell))} |");
-        text.AppendLine($"|{string.Concat(header.Select(_ => "---|"))}");
+        text.AppendLine($"|{string.Concat(header.Select((_, k) => _rightAligned.Contains(k) ? "---:|" : "---|"))}");
         foreach (var row in _rows) text.AppendLine($"| {string.Join(" | ", row.Select(Cell))} |");
         return text.ToString();
     }

@@ -1,0 +1,51 @@
+using System.Globalization;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Reports;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>
+/// `bench cluster`: the same fullstate render on local bridges and on a cluster's workers, and the time one bridge
+/// request takes on each path, the per-chunk overhead of the cluster (docs/cluster-performance.md).
+/// </summary>
+public static class ClusterPerformanceExperiment
+{
+    public const string Title = "Cluster against local bridges";
+
+    public static Report Run(ClusterPerformanceSettings settings, Action<string> progress)
+    {
+        var (scene, size, seed, cluster) = (settings.Scene, settings.Size, settings.Seed, settings.Cluster);
+        var options = RenderDefaults.Options(size, size, seed);
+        progress($"classical reference of {scene.Name} at {size}x{size}");
+        var reference = RenderMeasurement.Reference(scene, options);
+        using var local = new BridgePool(settings.Workers);
+
+        progress($"{settings.Requests} single requests on local bridges, then on the cluster");
+        var localTrip = ClusterBenchmark.RoundTripMilliseconds(local, settings.Requests);
+        var clusterTrip = ClusterBenchmark.RoundTripMilliseconds(cluster, settings.Requests);
+        // Local first, then the cluster, each after the round trips started its bridges.
+        progress("fullstate render on local bridges");
+        var onLocal = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, settings.Workers, reference, pool: local);
+        progress("fullstate render on the cluster");
+        var onCluster = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, settings.Workers, reference, pool: cluster);
+
+        var report = new Report(Title);
+        report.Text($"Fullstate render of {scene.Name} at {size}x{size}, seed {seed}, `render`'s default pipeline; one run each, local first. "
+            + "#Dpix against the classical render (the simulator cannot be seeded, so the two renders differ by chance).");
+        var renders = new TextTable("renders", ["where", "bridges", "wall time", "ms per ray", "against local", "#Dpix"]);
+        renders.Row(local.Where, N(local.Workers), F(onLocal.WallTime.TotalSeconds, "0.00") + " s", F(onLocal.MillisecondsPerRay, "0.000"), "1.00x", N(onLocal.Error.DifferentPixels));
+        renders.Row(cluster.Where, N(cluster.Workers), F(onCluster.WallTime.TotalSeconds, "0.00") + " s", F(onCluster.MillisecondsPerRay, "0.000"),
+            F(onCluster.WallTime / onLocal.WallTime, "0.00") + "x", N(onCluster.Error.DifferentPixels));
+        report.Table(renders);
+        report.Text($"One bridge request at a time (its version; {settings.Requests} requests after a warm-up): local {F(localTrip, "0.00")} ms, cluster {F(clusterTrip, "0.00")} ms; "
+            + $"the cluster path's difference per chunk: {F(clusterTrip - localTrip, "+0.00;-0.00")} ms (a difference below a millisecond or two is within the noise of a shared machine).");
+        return report;
+    }
+
+    private static string F(double value, string format) => value.ToString(format, CultureInfo.InvariantCulture);
+
+    private static string N(long value) => value.ToString(CultureInfo.InvariantCulture);
+}

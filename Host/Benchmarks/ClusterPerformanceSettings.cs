@@ -1,0 +1,11 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Scenes;
+
+namespace QuantumRayTracing.Benchmarks;
+
+/// <summary>
+/// What `bench cluster` measures: a fullstate render of <paramref name="Scene"/> at <paramref name="Size"/>² on
+/// <paramref name="Workers"/> local bridges and on <paramref name="Cluster"/>'s, and <paramref name="Requests"/>
+/// single bridge requests timed on each.
+/// </summary>
+public sealed record ClusterPerformanceSettings(Scene Scene, int Size, int Requests, ulong Seed, int Workers, BridgePool Cluster);
