@@ -141,8 +141,9 @@ public sealed class SupersampleCommand : Command
     private int Execute(ParseResult parse)
     {
         var settings = Settings(parse);
-        ImageFiles.EnsureWritable(settings.Files, settings.InputFile is { } input ? [input] : []);
-        _json.EnsureWritable(parse, [.. settings.Files, .. settings.InputFile is { } file ? [file] : Array.Empty<string>()]);
+        string[] inputs = settings.InputFile is { } input ? [input] : [];
+        ImageFiles.EnsureWritable(settings.Files, inputs);
+        _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         EngineOptions.CheckNoise(settings.Engine, settings.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
         var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => PrintPlan(settings, plan));
