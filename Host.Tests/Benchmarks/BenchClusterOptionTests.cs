@@ -27,6 +27,7 @@ public sealed class BenchClusterOptionTests : IDisposable
         "pareto" => ["bench", "pareto", "--scene", Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"), "--size", "1", "--cluster", cluster, "-o", _scratch.File("speed-vs-error.md")],
         "grover" => ["bench", "grover", "--sizes", "8", "--batches", "1", "--cluster", cluster, "-o", _scratch.File("performance.md")],
         "soak" => ["bench", "soak", "--short", "--engines", "fullstate", "--scenes", RepositoryPaths.Scenes, "--cluster", cluster, "-o", _scratch.File("soak.md")],
+        "noise" => ["bench", "noise", "--parts", "device", "--device-shots", "16", "--cluster", cluster, "-o", _scratch.File("noise.md")],
         _ => throw new ArgumentOutOfRangeException(nameof(name)),
     };
 
@@ -34,6 +35,7 @@ public sealed class BenchClusterOptionTests : IDisposable
     [InlineData("pareto")]
     [InlineData("grover")]
     [InlineData("soak")]
+    [InlineData("noise")]
     public void AMissingClusterFileIsOneLineAndBadInput(string bench)
     {
         var missing = _scratch.File("no-such-cluster.json");
@@ -100,5 +102,22 @@ public sealed class BenchClusterOptionTests : IDisposable
         Assert.All(result.Rows, r => Assert.Equal(SoakStatus.Ok, r.Status));
         Assert.True(cluster.Served(0) > 0, "the fullstate and gate renders should have sent their chunks to the worker");
         Assert.Equal(2, result.Report.Table("soak").Rows.Count);
+    }
+
+    [Fact]
+    public void NoiseRunsItsDeviceExperimentOnTheCluster()
+    {
+        using var worker = new WorkerBridges(1);
+        using var cluster = new TestCluster(120, worker);
+        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        var settings = new NoiseBenchSettings(new HashSet<string> { "device" }, 100, 16, [], 8, 0, [], 1, pool);
+        var (report, machine) = NoiseExperiment.Run(settings, _ => { });
+
+        Assert.True(cluster.Served(0) > 0, "the device experiment's gate-level runs should have gone to the worker");
+        var rows = report.Table("device-histograms").Rows;
+        Assert.Equal(NoiseBenchSettings.DeviceRates.Length, rows.Count);
+        // Each row: the rate, the share of each of the 4 indices (16 shots), the distance from uniform.
+        Assert.All(rows, r => Assert.Equal(1.0, r[1..5].Sum(share => double.Parse(share, System.Globalization.CultureInfo.InvariantCulture)), 2));
+        Assert.Contains("qsharp-lang", machine, StringComparison.Ordinal);
     }
 }

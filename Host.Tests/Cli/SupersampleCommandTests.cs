@@ -2,6 +2,7 @@ using QuantumRayTracing.Cli;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Output;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
@@ -291,7 +292,7 @@ public sealed class SupersampleCommandTests : IDisposable
         var input = WriteImage("in.png", 17, 16, (_, _) => (5, 5, 5));
         var (code, error) = Run("supersample", "--image", input, "--subpixels", "1", "-e", "fullstate", "-o", _scratch.File("out.png"));
         Assert.Equal(CommandLine.BadInput, code);
-        Assert.Contains($"at most {SupersampleCommand.MaxFullStatePixels} output pixels", error);
+        Assert.Contains($"at most {SupersampleRunSettings.MaxFullStatePixels} output pixels", error);
         Assert.Contains("this input has 272", error);
         Assert.Equal(["in.png"], _scratch.FileNames());
     }

@@ -1,3 +1,4 @@
+using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Benchmarks;
@@ -10,7 +11,8 @@ namespace QuantumRayTracing.Benchmarks;
 /// <param name="Size">Pixels per side of the analytic renders.</param>
 /// <param name="ConfirmSize">Pixels per side of the fullstate confirmation renders; 0 skips them.</param>
 /// <param name="ConfirmRates">Per-gate error rates of the confirmation renders.</param>
-/// <param name="Workers">Node bridge processes.</param>
+/// <param name="Workers">Node bridge processes started when <paramref name="Pool"/> is null.</param>
+/// <param name="Pool">Bridges the simulator work runs on (a cluster's), used and not stopped; null starts <paramref name="Workers"/> local ones.</param>
 public sealed record NoiseBenchSettings(
     IReadOnlySet<string> Parts,
     int Shots,
@@ -19,7 +21,8 @@ public sealed record NoiseBenchSettings(
     int Size,
     int ConfirmSize,
     IReadOnlyList<double> ConfirmRates,
-    int Workers)
+    int Workers,
+    BridgePool? Pool = null)
 {
     public static readonly string[] AllParts = ["model", "supersampling", "device", "render"];
 

@@ -17,7 +17,7 @@ public static class NoiseBenchmark
 {
     /// <summary>
     /// Runs the parts <paramref name="settings"/> asks for, in order: the model check and the device experiment on
-    /// one bridge pool, then the analytic renders and the fullstate confirmations.
+    /// one bridge pool (the cluster's when the settings give one), then the analytic renders and the fullstate confirmations.
     /// </summary>
     public static NoiseBenchResult Run(NoiseBenchSettings settings, Action<string> progress)
     {
@@ -28,8 +28,9 @@ public static class NoiseBenchmark
         IReadOnlyList<SupersamplingCheckRow> supersampling = [];
         IReadOnlyList<DeviceRun> device = [];
         CircuitCounts? deviceSearch = null, deviceOracle = null;
-        using (var pool = new BridgePool(settings.Workers))
+        using (var local = settings.Pool is null ? new BridgePool(settings.Workers) : null)
         {
+            var pool = settings.Pool ?? local!;
             var versions = pool.Bridges[0].Version();
             machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>()) + " (shared with other work while measured)";
             if (settings.Parts.Contains("model"))
@@ -66,7 +67,7 @@ public static class NoiseBenchmark
                 {
                     Say($"{name} at {settings.ConfirmSize}x{settings.ConfirmSize}: analytic and fullstate, p = {p}");
                     var analytic = RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, classical, NoiseModel.Depolarizing(p));
-                    confirmations.Add((name, p, analytic, NoisyRenderBenchmark.FullState(scene, settings.ConfirmSize, p, settings.Workers, classical)));
+                    confirmations.Add((name, p, analytic, NoisyRenderBenchmark.FullState(scene, settings.ConfirmSize, p, settings.Workers, classical, settings.Pool)));
                 }
             }
         }

@@ -4,8 +4,8 @@ using ScottPlot;
 namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>
-/// The plots of docs/noise.md: the line plots through <see cref="PlotImage"/> like every other plot, the device
-/// histograms (bars, which a <see cref="PlotSpec"/> does not describe) with ScottPlot directly. Every plot names its
+/// The plots of docs/noise.md: the line plots as <see cref="PlotSpec"/>s, which the report writer draws like every other
+/// plot, the device histograms (bars, which a <see cref="PlotSpec"/> does not describe) drawn with ScottPlot directly. Every plot names its
 /// noise model in its title; the report beside them names the machine.
 /// </summary>
 public static class NoisePlots
@@ -48,13 +48,13 @@ public static class NoisePlots
     /// A line plot against the per-gate error on a log axis: each series a list of (p, y) points with p > 0, and
     /// optionally a labelled horizontal reference line across them.
     /// </summary>
-    public static RgbImage LogX(string title, string xLabel, string yLabel, IReadOnlyList<(string Name, IReadOnlyList<(double X, double Y)> Points)> series, double? horizontal = null, string? horizontalLabel = null)
+    public static PlotSpec LogX(string title, string xLabel, string yLabel, IReadOnlyList<(string Name, IReadOnlyList<(double X, double Y)> Points)> series, double? horizontal = null, string? horizontalLabel = null)
     {
         var lines = series.Select(s => new PlotSeries(s.Name, s.Points)).ToList();
         var xs = series.SelectMany(s => s.Points).Select(p => p.X).ToArray();
         if (horizontal is { } y && xs.Length > 0)
             lines.Add(new PlotSeries(horizontalLabel ?? "", [(xs.Min(), y), (xs.Max(), y)], Markers: false));
-        return PlotImage.Render(new PlotSpec(title, xLabel, yLabel, AxisScale.Log10, AxisScale.Linear, lines, LinePlotWidth, Height));
+        return new PlotSpec(title, xLabel, yLabel, AxisScale.Log10, AxisScale.Linear, lines, LinePlotWidth, Height);
     }
 
     private static void Finish(Plot plot, string title, string xLabel, string yLabel, string note)

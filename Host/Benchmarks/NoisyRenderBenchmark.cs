@@ -87,7 +87,7 @@ public static class NoisyRenderBenchmark
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
     public static RenderOptions Defaults(int size) => RenderDefaults.Options(size, size);
 
-    /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size.</summary>
-    public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical) =>
-        RenderMeasurement.Run(scene, EngineKind.FullState, Defaults(size), new QSearchOptions(), 1, workers, classical, NoiseModel.Depolarizing(perGate));
+    /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size; on <paramref name="pool"/> when given.</summary>
+    public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical, Bridge.BridgePool? pool = null) =>
+        RenderMeasurement.Run(scene, EngineKind.FullState, Defaults(size), new QSearchOptions(), 1, workers, classical, NoiseModel.Depolarizing(perGate), pool);
 }

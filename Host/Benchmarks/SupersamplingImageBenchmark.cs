@@ -42,7 +42,7 @@ public static class SupersamplingImageBenchmark
     {
         var table = settings.UsesLookupTable ? QssLookupTable.Exact(settings.Subpixels, settings.CounterBitsOrDefault) : null;
         var estimator = settings.CreateEstimator(table);
-        using var engine = SupersampleCommand.CreateEngine(Engines.EngineKind.Analytic, seed, 1);
+        using var engine = SupersampleRun.CreateEngine(Engines.EngineKind.Analytic, seed, 1);
         var result = ImageSupersampler.Run(input, estimator, engine);
         return new Run(image, input.Width, input.Side, Label(settings), estimator.Queries, seed, result, SupersampleError.Of(input, result));
     }

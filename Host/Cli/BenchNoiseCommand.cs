@@ -1,6 +1,5 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
-using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Cli;
 
@@ -10,9 +9,9 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class BenchNoiseCommand : Command
 {
-    private const string CommandText = "qrt bench noise";
+    public const string CommandLine = "qrt bench noise";
 
-    private readonly BenchReportOptions _report = new(CommandText, "docs/noise.md");
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/noise.md");
 
     private readonly Option<int> _shots = new("--shots")
     {
@@ -60,7 +59,7 @@ public sealed class BenchNoiseCommand : Command
         Options.Add(_confirmSize);
         Options.Add(_confirmRates);
         Options.Add(_parts);
-        _report.AddTo(this, seed: false);
+        _report.AddTo(this, seed: false, cluster: true);
         _size.Between(1, 1024);
         _confirmSize.Between(0, 128);
         _confirmRates.Validators.Add(r =>
@@ -79,29 +78,17 @@ public sealed class BenchNoiseCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var output = parse.GetValue(_report.Output);
-        var report = _report.Report(parse);
+        var writer = _report.Writer(parse);
         var parts = parse.GetValue(_parts)!.ToHashSet();
         var scenes = parts.Contains("render")
             ? NoiseBenchSettings.RenderScenes.Select(n => (n, _report.Load(parse, n))).ToArray()
             : [];
         var settings = new NoiseBenchSettings(parts, parse.GetValue(_shots), parse.GetValue(_deviceShots), scenes, parse.GetValue(_size),
             parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers));
-        string PlotPath(string name) => Path.Combine(output?.DirectoryName ?? ".", $"{Path.GetFileNameWithoutExtension(output?.Name ?? "noise")}-{name}.png");
-        if (output is not null) ImageFiles.EnsureWritable(settings.PlotNames().Select(PlotPath).ToArray(), []);
-
-        var result = NoiseBenchmark.Run(settings, message => Console.Error.WriteLine(message));
-
-        var plots = new List<(RgbImage Image, string Path)>();
-        var command = $"dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}";
-        var body = NoiseReport.Markdown(result, settings, command, (name, image, caption) =>
-        {
-            plots.Add((image, PlotPath(name)));
-            return $"![{caption}]({Path.GetFileName(PlotPath(name))})";
-        });
-        Console.WriteLine(body);
-        report.Write(body);
-        if (output is not null) ImageFiles.Write(plots);
+        writer.EnsureWritable(settings.PlotNames());
+        using var cluster = _report.StartBridges(parse);
+        var (report, machine) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);
+        writer.Write(report, BenchReportOptions.Footer(machine, cluster));
         return 0;
     }
 }

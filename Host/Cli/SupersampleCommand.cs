@@ -1,14 +1,7 @@
 using System.CommandLine;
-using System.Diagnostics;
 using System.Globalization;
 using QuantumRayTracing.Engines;
-using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Randomness;
-using QuantumRayTracing.Rendering;
-using QuantumRayTracing.Scenes;
-using QuantumRayTracing.Scenes.Generation;
-using QuantumRayTracing.Search;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Cli;
@@ -20,9 +13,6 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class SupersampleCommand : Command
 {
-    /// <summary>The fullstate engine simulates every (pixel, channel) item: above this many output pixels it is refused.</summary>
-    public const int MaxFullStatePixels = 256;
-
     public const SupersampleMethod DefaultMethod = SupersampleMethod.Qss;
 
     public const int DefaultSubpixels = 4;
@@ -131,7 +121,7 @@ public sealed class SupersampleCommand : Command
             SupersampleSettings settings;
             try
             {
-                settings = Settings(r);
+                settings = MethodSettings(r);
             }
             catch (InvalidOperationException)
             {
@@ -146,71 +136,54 @@ public sealed class SupersampleCommand : Command
     }
 
     // Inside a command validator, an option left out reads as default(T), not its default value: those are filled in here.
-    private SupersampleSettings Settings(System.CommandLine.Parsing.CommandResult r) =>
+    private SupersampleSettings MethodSettings(System.CommandLine.Parsing.CommandResult r) =>
         new(r.GetResult(_method) is null ? DefaultMethod : r.GetValue(_method), r.GetResult(_subpixels) is null ? DefaultSubpixels : r.GetValue(_subpixels),
             r.GetValue(_queries), r.GetValue(_steps), r.GetValue(_levels), r.GetValue(_counterBits), r.GetValue(_planes), r.GetValue(_qssValues));
 
     private int Execute(ParseResult parse)
     {
-        var settings = new SupersampleSettings(parse.GetValue(_method), parse.GetValue(_subpixels), parse.GetValue(_queries), parse.GetValue(_steps),
-            parse.GetValue(_levels), parse.GetValue(_counterBits), parse.GetValue(_planes), parse.GetValue(_qssValues));
-        var imageFile = parse.GetValue(_image);
-        var sceneFile = parse.GetValue(_scene);
-        var inputPath = imageFile?.FullName ?? sceneFile?.FullName;
-        var stem = imageFile is not null ? Path.GetFileNameWithoutExtension(imageFile.Name)
-            : sceneFile is not null ? Path.GetFileNameWithoutExtension(sceneFile.Name)
-            : $"qornell-{RenderCommand.DefaultQornellPrimitives}";
-        var methodName = OptionRules.ChoiceName(settings.Method);
-        var output = parse.GetValue(_output) ?? $"{stem}-{methodName}.png";
-        var outputs = settings.UsesLookupTable ? new[] { output, RenderCommand.Sibling(output, "confidence") } : [output];
-        ImageFiles.EnsureWritable(outputs, inputPath is null ? [] : [inputPath]);
-        _json.EnsureWritable(parse, inputPath is null ? outputs : [.. outputs, inputPath]);
-
-        var kind = parse.GetValue(_engine.Engine);
-        var noise = _engine.GetNoise(parse);
-        EngineOptions.CheckNoise(kind, noise);
+        var settings = Settings(parse);
+        string[] inputs = settings.InputFile is { } input ? [input] : [];
+        ImageFiles.EnsureWritable(settings.Files, inputs);
+        _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
+        EngineOptions.CheckNoise(settings.Engine, settings.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
-        var (input, inputName, inputTime) = imageFile is not null
-            ? (LoadImage(imageFile, settings.Side, kind), imageFile.Name, (TimeSpan?)null)
-            : RenderScene(sceneFile, RenderCommand.ParseSize(parse.GetValue(_size)).Size, settings.Side, kind);
-
-        QssLookupTable? table = null;
-        if (settings.UsesLookupTable)
-        {
-            var cache = new QssTableCache(QssTableCache.DefaultDirectory());
-            var (n, t) = (settings.Subpixels, settings.CounterBitsOrDefault);
-            table = cache.GetOrBuild(n, t, "exact", () => QssLookupTable.Exact(n, t));
-            Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {n + 1} hit counts, exact, {(cache.LastWasHit ? "read from" : "written to")} {cache.PathFor(n, t, "exact")}");
-        }
-        var estimator = settings.CreateEstimator(table);
-        Console.WriteLine($"{estimator.Name}: {estimator.Queries} queries per pixel per channel ({Registers(settings)})");
-
-        var clock = Stopwatch.StartNew();
-        SupersampleResult result;
-        var supersampling = new ConsoleProgress(EngineOptions.Name(kind));
-        Console.WriteLine($"noise model: {EngineOptions.NoiseDescription(kind, noise)}");
-        using (var engine = CreateEngine(kind, parse.GetValue(_engine.Seed), parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), noise, bridges))
-            result = ImageSupersampler.Run(input, estimator, engine, supersampling);
-        supersampling.Finish();
-        var elapsed = clock.Elapsed;
-
-        var error = SupersampleError.Of(input, result);
-        var images = new List<(RgbImage, string)> { (result.Image, output) };
-        if (result.ConfidenceMap is { } map) images.Add((map, outputs[1]));
-        ImageFiles.Write(images);
-
-        var figures = new SupersampleFigures(inputName, input.Image.Width, input.Image.Height, input.Side, input.Width, input.Height,
-            inputTime, table?.Readouts, result.Estimator, result.QueriesPerChannel, result.ChannelsEstimated,
-            result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
-            result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
-        var ranOn = EngineOptions.Place(kind, bridges, parse.GetValue(_engine.Workers));
-        Print(figures, EngineOptions.Name(kind), EngineOptions.NoiseDescription(kind, noise), noise.IsNoiseless, ranOn.Description);
-        _json.Write(parse, figures, _engine, ranOn);
+        var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => PrintPlan(settings, plan));
+        Print(run.Figures, settings, run.RanOn.Description);
+        _json.Write(parse, run.Figures, _engine, run.RanOn);
         return 0;
     }
 
-    private static void Print(SupersampleFigures figures, string engineName, string noise, bool noiseless, string where)
+    /// <summary>The run the options ask for; the bridges are started after the outputs are checked.</summary>
+    private SupersampleRunSettings Settings(ParseResult parse)
     {
+        var method = new SupersampleSettings(parse.GetValue(_method), parse.GetValue(_subpixels), parse.GetValue(_queries), parse.GetValue(_steps),
+            parse.GetValue(_levels), parse.GetValue(_counterBits), parse.GetValue(_planes), parse.GetValue(_qssValues));
+        var (imageFile, sceneFile) = (parse.GetValue(_image), parse.GetValue(_scene));
+        var stem = imageFile is not null ? Path.GetFileNameWithoutExtension(imageFile.Name)
+            : sceneFile is not null ? Path.GetFileNameWithoutExtension(sceneFile.Name)
+            : $"qornell-{RenderCommand.DefaultQornellPrimitives}";
+        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, RenderCommand.ParseSize(parse.GetValue(_size)).Size,
+            parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{stem}-{OptionRules.ChoiceName(method.Method)}.png",
+            Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse));
+    }
+
+    /// <summary>What the run models, printed before the estimates start.</summary>
+    private static void PrintPlan(SupersampleRunSettings settings, SupersamplePlan plan)
+    {
+        var (input, s) = (plan.Input, plan.Input.Side);
+        Console.WriteLine(plan.RenderTime is { } time
+            ? $"{plan.InputName}: rendered classically at {input.Image.Width}x{input.Image.Height} in {time.TotalSeconds:0.00} s, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output"
+            : $"{plan.InputName}: {input.Image.Width}x{input.Image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
+        if (plan.Table is { } table)
+            Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
+        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method)})");
+        Console.WriteLine($"noise model: {EngineOptions.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+    }
+
+    private static void Print(SupersampleFigures figures, SupersampleRunSettings settings, string where)
+    {
+        var (engineName, noise) = (EngineOptions.Name(settings.Engine), settings.NoiseModel);
         var error = figures.Error;
         var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
         Console.WriteLine($"queries: {figures.QueriesPerChannel} per pixel per channel, {channels}; {figures.TotalQueries:N0} in all");
@@ -218,54 +191,9 @@ public sealed class SupersampleCommand : Command
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noiseless ? "" : $" under {noise}")}; ran on {where}");
+        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {EngineOptions.NoiseDescription(settings.Engine, noise)}")}; ran on {where}");
         foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
     }
-
-    private static SubpixelImage LoadImage(FileInfo file, int s, EngineKind kind)
-    {
-        var image = ImageReader.Read(file.FullName);
-        if (image.Width % s != 0 || image.Height % s != 0)
-            throw new UserError($"{file.FullName}: {image.Width}x{image.Height} is not a multiple of --subpixels {s} on both sides ({s}x{s} subpixels per output pixel)"
-                + (image.Width >= s && image.Height >= s ? $"; crop it to {image.Width / s * s}x{image.Height / s * s}" : ""));
-        CheckEngine(kind, (long)(image.Width / s) * (image.Height / s));
-        var input = new SubpixelImage(image, s);
-        Console.WriteLine($"{file.Name}: {image.Width}x{image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
-        return input;
-    }
-
-    // The scene (or the built-in Qornell box) rendered classically at s times the output size.
-    private static (SubpixelImage Input, string Name, TimeSpan? Time) RenderScene(FileInfo? file, (int Width, int Height)? size, int s, EngineKind kind)
-    {
-        var scene = file is null
-            ? SceneLoader.Parse(QornellBox.Build(RenderCommand.DefaultQornellPrimitives).ToJson(), $"built-in qornell-{RenderCommand.DefaultQornellPrimitives}")
-            : SceneLoader.Load(file.FullName);
-        var (width, height) = size ?? (scene.Width, scene.Height);
-        if ((long)width * s > SceneLoader.MaxImageSide || (long)height * s > SceneLoader.MaxImageSide)
-            throw new UserError($"{width}x{height} pixels at --subpixels {s} is a {width * s}x{height * s} render, above the largest side {SceneLoader.MaxImageSide}; use a smaller --size or --subpixels");
-        CheckEngine(kind, (long)width * height);
-        var clock = Stopwatch.StartNew();
-        var progress = new ConsoleProgress("classical render");
-        using var classical = new ClassicalHitSearch();
-        var rendered = SceneRenderer.Render(scene, classical, new RenderOptions(width * s, height * s), progress).Image;
-        progress.Finish();
-        var time = clock.Elapsed;
-        Console.WriteLine($"{scene.Name}: rendered classically at {width * s}x{height * s} in {time.TotalSeconds:0.00} s, {s}x{s} = {s * s} subpixels per output pixel: {width}x{height} output");
-        return (new SubpixelImage(rendered, s), scene.Name, time);
-    }
-
-    private static void CheckEngine(EngineKind kind, long pixels)
-    {
-        if (kind == EngineKind.FullState && pixels > MaxFullStatePixels)
-            throw new UserError($"--engine fullstate simulates every pixel and takes about a second per output pixel: at most {MaxFullStatePixels} output pixels (e.g. 16x16), this input has {pixels}; use --engine analytic (the same distributions, seeded) or a smaller input");
-    }
-
-    /// <remarks>The fullstate engine runs on <paramref name="pool"/> when given, without stopping it, else on bridges of its own.</remarks>
-    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, Noise.NoiseModel? noise = null, Bridge.BridgePool? pool = null) => kind switch
-    {
-        EngineKind.FullState => new FullStateSupersamplingEngine(pool ?? new Bridge.BridgePool(workers), ownsPool: pool is null, maxQubits: maxQubits, noise: noise),
-        _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine), noise),
-    };
 
     // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
     private static string Registers(SupersampleSettings settings)

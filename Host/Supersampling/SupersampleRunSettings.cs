@@ -1,0 +1,49 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
+using QuantumRayTracing.Output;
+
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>
+/// Everything one run of <see cref="SupersampleRun"/> needs: what `supersample` reads from its options.
+/// </summary>
+/// <param name="Method">The estimator and its parameters, s among them.</param>
+/// <param name="ImageFile">The image supersampled, each s x s block of its pixels one output pixel; null renders a scene instead.</param>
+/// <param name="SceneFile">The scene rendered classically at s times the output size (without <paramref name="ImageFile"/>); null: the built-in Qornell box.</param>
+/// <param name="Size">The output size of a scene; null: the scene's own.</param>
+/// <param name="Engine">Where the coins and QSS runs are simulated: analytic or fullstate.</param>
+/// <param name="Seed">The seed of every classical random choice (the analytic engine's outcomes).</param>
+/// <param name="Output">The PNG the estimate is written to; bit-plane QSS writes its confidence map beside it.</param>
+/// <param name="TableDirectory">Where QSS lookup tables are kept between runs; null: the user's cache directory.</param>
+/// <param name="Workers">Local Node bridges the fullstate engine starts when <paramref name="Pool"/> is null; null: one per core.</param>
+/// <param name="MaxQubits">The widest circuit the fullstate engine may simulate; null keeps the engine's own limit.</param>
+/// <param name="Noise">The noise model the engine runs under; null for the ideal machine.</param>
+/// <param name="Pool">Bridges the fullstate engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+public sealed record SupersampleRunSettings(
+    SupersampleSettings Method,
+    string? ImageFile,
+    string? SceneFile,
+    (int Width, int Height)? Size,
+    EngineKind Engine,
+    ulong Seed,
+    string Output,
+    string? TableDirectory = null,
+    int? Workers = null,
+    int? MaxQubits = null,
+    NoiseModel? Noise = null,
+    BridgePool? Pool = null)
+{
+    /// <summary>The fullstate engine simulates every (pixel, channel) item: above this many output pixels it is refused.</summary>
+    public const int MaxFullStatePixels = 256;
+
+    public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
+
+    public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
+
+    /// <summary>The file read, if any: the image or the scene.</summary>
+    public string? InputFile => ImageFile ?? SceneFile;
+
+    /// <summary>Every PNG the run writes: the estimate, then with bit-plane QSS the confidence map.</summary>
+    public IReadOnlyList<string> Files => Method.UsesLookupTable ? [Output, ImageFiles.Beside(Output, "confidence")] : [Output];
+}
