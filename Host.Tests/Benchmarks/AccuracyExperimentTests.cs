@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Tests.Benchmarks;
 public sealed class AccuracyExperimentTests
 {
     private static readonly Lazy<Report> Report = new(() =>
-        AccuracyExperiment.Run(new AccuracySettings([4], 1, 4, QuantumRayTracing.Cli.RenderCommand.LoadScene(null)), _ => { }));
+        AccuracyExperiment.Run(new AccuracySettings([4], 1, 4, DefaultScene.Load(null)), _ => { }));
 
     [Fact]
     public void EachKindsRowHoldsItsMeasuredCells()

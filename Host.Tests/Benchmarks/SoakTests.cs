@@ -79,7 +79,7 @@ public sealed class SoakTests : IDisposable
     {
         var rows = Run(TwoScenes, Seedable, (kind, seed) => kind == EngineKind.Randomized
             ? new Faulty(new ClassicalHitSearch(), _ => throw new InvalidOperationException("injected fault"))
-            : EngineOptions.CreateHitSearch(kind, new SeededRandom(seed), 1, new QSearchOptions()));
+            : HitSearchFactory.Create(kind, new SeededRandom(seed), 1, new QSearchOptions()));
 
         var failed = rows.Where(r => r.Status == SoakStatus.Failed).ToArray();
         Assert.Equal(2, failed.Length);
@@ -129,7 +129,7 @@ public sealed class SoakTests : IDisposable
     public void AClassicalEngineThatDependsOnTheSeedFails()
     {
         var rows = Run([Scene("qornell-8")], Seedable with { Engines = [EngineKind.Classical] },
-            (_, seed) => EngineOptions.CreateHitSearch(EngineKind.Randomized, new SeededRandom(seed), 1, new QSearchOptions()));
+            (_, seed) => HitSearchFactory.Create(EngineKind.Randomized, new SeededRandom(seed), 1, new QSearchOptions()));
 
         var row = Assert.Single(rows);
         Assert.Equal(SoakStatus.Failed, row.Status);

@@ -72,7 +72,7 @@ public static class AccuracyBenchmark
             for (var c = 0; c < configurations.Count; c++)
             {
                 var options = configurations[c].Options(size, seed);
-                using var search = Cli.EngineOptions.CreateHitSearch(Engines.EngineKind.Analytic, new SeededRandom(seed), 1, configurations[c].QSearch);
+                using var search = HitSearchFactory.Create(Engines.EngineKind.Analytic, new SeededRandom(seed), 1, configurations[c].QSearch);
                 var result = SceneRenderer.Render(scene, search, options);
                 var error = ImageError.Between(result.Image, reference.Image);
                 var total = result.Total;

@@ -1,5 +1,4 @@
 using System.Globalization;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Passes;
@@ -71,13 +70,13 @@ public static class LightsExperiment
             RenderMeasurement? ours = null;
             foreach (var row in Rows(c.Options))
             {
-                progress($"{c.Key}: {row.Name} on {EngineOptions.Name(row.Engine)}");
+                progress($"{c.Key}: {row.Name} on {EngineFactory.Name(row.Engine)}");
                 var m = RenderMeasurement.Run(scene, row.Engine, row.Options, row.QSearch, seed, 1, sameSamples);
                 ours ??= m;
                 var toConverged = ImageError.Between(m.Result.Image, converged.Result.Image);
                 var passes = c.SampledPasses.Select(name => m.Result.Passes.Single(p => p.Name == name))
                     .Select(p => F(row.PaperCount ? p.PerRayPaper : p.PerRayConservative));
-                table.Row([row.Name, EngineOptions.Name(row.Engine), F(m.Result.Total.PerRayConservative), F(m.Result.Total.PerRayPaper), .. passes,
+                table.Row([row.Name, EngineFactory.Name(row.Engine), F(m.Result.Total.PerRayConservative), F(m.Result.Total.PerRayPaper), .. passes,
                     P(m.Error.Nrmse), N(m.Error.DifferentPixels), P(toConverged.Nrmse), N(toConverged.DifferentPixels), Seconds(m.WallTime)]);
             }
             table.Row([$"converged reference, {referenceSamples} samples", "classical", F(converged.Result.Total.PerRayConservative), F(converged.Result.Total.PerRayPaper),

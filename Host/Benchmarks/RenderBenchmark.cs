@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Randomness;
@@ -25,7 +24,7 @@ public sealed record RenderMeasurement(RenderResult Result, ImageError Error, Ti
     {
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(kind, new SeededRandom(seed), workers, qsearch, pool: pool, noise: noise))
+        using (var search = HitSearchFactory.Create(kind, new SeededRandom(seed), workers, qsearch, pool: pool, noise: noise))
             result = SceneRenderer.Render(scene, search, options);
         var wall = clock.Elapsed;
         var error = reference is null ? default : ImageError.Between(result.Image, reference.Result.Image);

@@ -150,7 +150,7 @@ public static class Soak
             var clock = Stopwatch.StartNew();
             RenderResult result;
             using (var search = searches(kind, options.Seed))
-                result = SceneRenderer.Render(scene, search, options, progress?.Invoke($"{stem} on {Cli.EngineOptions.Name(kind)}, seed {options.Seed}{repeat}"));
+                result = SceneRenderer.Render(scene, search, options, progress?.Invoke($"{stem} on {EngineFactory.Name(kind)}, seed {options.Seed}{repeat}"));
             var wall = clock.Elapsed;
             _times.Add(wall);
             var png = PngWriter.Encode(result.Image);

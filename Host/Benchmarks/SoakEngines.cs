@@ -1,5 +1,4 @@
 using QuantumRayTracing.Bridge;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
@@ -8,7 +7,7 @@ namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>
 /// The ray searches a soak renders with, one per render, built as `render` builds them
-/// (<see cref="EngineOptions.CreateHitSearch"/>), with the fullstate and gate engines on one bridge pool
+/// (<see cref="HitSearchFactory.Create"/>), with the fullstate and gate engines on one bridge pool
 /// for the whole soak: each render would otherwise start and compile fresh Node bridges, seconds per
 /// render. That pool is <paramref name="shared"/> when given (a cluster's, left running), else started here and
 /// stopped on disposing.
@@ -22,7 +21,7 @@ public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultM
     {
         var simulated = kind is EngineKind.FullState or EngineKind.Gate;
         // The limit is the gate engine's; fullstate keeps the widest state the machine holds.
-        return EngineOptions.CreateHitSearch(kind, new SeededRandom(seed), workers, new QSearchOptions(),
+        return HitSearchFactory.Create(kind, new SeededRandom(seed), workers, new QSearchOptions(),
             kind == EngineKind.Gate ? maxQubits : null, simulated ? Pool : null);
     }
 

@@ -1,6 +1,6 @@
 using System.Globalization;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
+using QuantumRayTracing.Engines;
 
 namespace QuantumRayTracing.Benchmarks;
 
@@ -19,7 +19,7 @@ public static class SoakReport
         [
             row.Scene,
             row.Primitives.ToString(CultureInfo.InvariantCulture),
-            EngineOptions.Name(kind),
+            EngineFactory.Name(kind),
             ran ? $"{row.Size}x{row.Size}" : "",
             ran ? row.Renders.ToString(CultureInfo.InvariantCulture) : "",
             ran ? Time(row.WallTime) : "",
@@ -56,7 +56,7 @@ public static class SoakReport
     {
         var report = new Report(Title);
         report.Text($"""
-            Every scene file rendered on {string.Join(", ", settings.Engines.Select(EngineOptions.Name))} with seeds {string.Join(" and ", settings.Seeds)}
+            Every scene file rendered on {string.Join(", ", settings.Engines.Select(EngineFactory.Name))} with seeds {string.Join(" and ", settings.Seeds)}
             through `render`'s default pipeline at {settings.Size}x{settings.Size} pixels (the gate engine at {settings.GateSize}x{settings.GateSize}), {settings.Iterations} TracePass and {settings.ShadowIterations} DirectPass rounds,
             {settings.AreaSamples} area samples and {settings.Vpl} VPLs per point. Each render is checked: no exception; finite radiance and a PNG that
             decodes to its pixels; the classical engine equal to the classical reference, the quantum engines (analytic, fullstate,

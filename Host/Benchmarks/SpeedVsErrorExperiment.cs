@@ -1,5 +1,4 @@
 using System.Globalization;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
@@ -49,10 +48,10 @@ public static class SpeedVsErrorExperiment
         foreach (var kind in Engines)
             foreach (var (name, options) in configurations)
             {
-                progress($"{EngineOptions.Name(kind)}: {name} ({points.Count + 1}/{Engines.Length * configurations.Count})");
+                progress($"{EngineFactory.Name(kind)}: {name} ({points.Count + 1}/{Engines.Length * configurations.Count})");
                 var reference = RenderMeasurement.Reference(scene, options);
                 var m = RenderMeasurement.Run(scene, kind, options, new QSearchOptions(), seed, settings.Workers, reference, pool: settings.Pool);
-                points.Add(new(EngineOptions.Name(kind), name, m.Result.Total.PerRayConservative, m.WallTime.TotalSeconds, m.Error.Nrmse, m.Error.DifferentPixels));
+                points.Add(new(EngineFactory.Name(kind), name, m.Result.Total.PerRayConservative, m.WallTime.TotalSeconds, m.Error.Nrmse, m.Error.DifferentPixels));
             }
 
         var intFront = ParetoFront.Of([.. points.Select(p => (p.IntPerRay, p.Nrmse))]).ToHashSet();

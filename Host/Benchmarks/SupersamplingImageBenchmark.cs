@@ -1,4 +1,3 @@
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
@@ -25,7 +24,7 @@ public static class SupersamplingImageBenchmark
     /// <summary>The built-in Qornell box (64 primitives) rendered classically at <paramref name="size"/> · <paramref name="side"/> pixels square.</summary>
     public static RgbImage RenderQornell(int size, int side)
     {
-        var scene = SceneLoader.Parse(QornellBox.Build(RenderCommand.DefaultQornellPrimitives).ToJson(), "built-in qornell");
+        var scene = SceneLoader.Parse(QornellBox.Build(DefaultScene.QornellPrimitives).ToJson(), "built-in qornell");
         using var classical = new ClassicalHitSearch();
         return SceneRenderer.Render(scene, classical, new RenderOptions(size * side, size * side)).Image;
     }

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Scenes.Generation;
 
 namespace QuantumRayTracing.Cli;
 
@@ -47,7 +48,7 @@ public sealed class BenchAccuracyCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
-        var settings = new AccuracySettings(parse.GetValue(_sizes)!, parse.GetValue(_seeds), parse.GetValue(_deepSize), RenderCommand.LoadScene(null));
+        var settings = new AccuracySettings(parse.GetValue(_sizes)!, parse.GetValue(_seeds), parse.GetValue(_deepSize), DefaultScene.Load(null));
         var report = AccuracyExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
         return 0;

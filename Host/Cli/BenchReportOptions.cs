@@ -83,31 +83,6 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
         $"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.",
     ];
 
-    /// <summary>The report file, checked writable before any work starts.</summary>
-    public GeneratedReport Report(ParseResult parse)
-    {
-        var report = new GeneratedReport(parse.GetValue(Output)?.FullName, GeneratedReport.MarkdownMarker(commandLine));
-        report.EnsureWritable();
-        return report;
-    }
-
     /// <summary>The scene <paramref name="stem"/>.json from the scene directory.</summary>
     public Scene Load(ParseResult parse, string stem) => SceneLoader.Load(Path.Combine(parse.GetValue(Scenes)!.FullName, stem + ".json"));
-
-    /// <summary>Appends the machine and command lines, prints the report and writes it.</summary>
-    public static void Publish(GeneratedReport report, StringBuilder text)
-    {
-        AppendFooter(text, MachineDescription.Describe(null, null));
-        var body = text.ToString();
-        Console.WriteLine(body);
-        report.Write(body);
-    }
-
-    /// <summary>Appends the lines naming <paramref name="machine"/> and the command that regenerates the report.</summary>
-    public static void AppendFooter(StringBuilder text, string machine)
-    {
-        text.AppendLine();
-        text.AppendLine($"Machine: {machine}.");
-        text.AppendLine($"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.");
-    }
 }

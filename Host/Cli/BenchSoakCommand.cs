@@ -136,7 +136,7 @@ public sealed class BenchSoakCommand : Command
             MaxQubits = parse.GetValue(_maxQubits),
             Pool = cluster,
         };
-        AnsiConsole.WriteLine($"soak: {files.Length} scene files in {directory}, engines {string.Join(", ", settings.Engines.Select(EngineOptions.Name))}, seeds {string.Join(" ", settings.Seeds)}, {settings.Size}x{settings.Size} (gate {settings.GateSize}x{settings.GateSize})");
+        AnsiConsole.WriteLine($"soak: {files.Length} scene files in {directory}, engines {string.Join(", ", settings.Engines.Select(EngineFactory.Name))}, seeds {string.Join(" ", settings.Seeds)}, {settings.Size}x{settings.Size} (gate {settings.GateSize}x{settings.GateSize})");
 
         ConsoleProgress? current = null;
         var result = SoakExperiment.Run(files, settings,
@@ -148,7 +148,7 @@ public sealed class BenchSoakCommand : Command
             row =>
             {
                 current?.Finish();
-                var engine = row.Engine is { } kind ? EngineOptions.Name(kind) : "(no engine)";
+                var engine = row.Engine is { } kind ? EngineFactory.Name(kind) : "(no engine)";
                 Console.Error.WriteLine($"{row.Scene} on {engine}: {row.StatusText}");
             });
 
@@ -165,13 +165,13 @@ public sealed class BenchSoakCommand : Command
         var engineKinds = rows.Where(r => r.Engine is not null).Select(r => r.Engine!.Value).Distinct().ToArray();
         var table = new Table().Title("soak: scenes by engines");
         table.AddColumn("scene");
-        foreach (var kind in engineKinds) table.AddColumn(EngineOptions.Name(kind));
+        foreach (var kind in engineKinds) table.AddColumn(EngineFactory.Name(kind));
         foreach (var scene in rows.GroupBy(r => r.Scene))
             table.AddRow([Markup.Escape($"{scene.Key}\nN = {scene.First().Primitives}"),
                 .. engineKinds.Select(k => scene.FirstOrDefault(r => r.Engine == k) is { } row ? Markup.Escape(SoakReport.MatrixCell(row)) : "")]);
         AnsiConsole.Write(table);
         foreach (var row in rows.Where(r => r.Status != SoakStatus.Ok))
-            AnsiConsole.WriteLine($"{row.Scene}{(row.Engine is { } e ? " on " + EngineOptions.Name(e) : "")}: {row.StatusText}");
+            AnsiConsole.WriteLine($"{row.Scene}{(row.Engine is { } e ? " on " + EngineFactory.Name(e) : "")}: {row.StatusText}");
         AnsiConsole.WriteLine($"{SoakReport.Summary(rows)}; {result.Total.TotalSeconds:0.0} s");
     }
 
@@ -195,7 +195,7 @@ public sealed class BenchSoakCommand : Command
             var match = Enum.GetNames<EngineKind>().FirstOrDefault(n => string.Equals(n, name, StringComparison.OrdinalIgnoreCase));
             if (match is null)
             {
-                result.AddError($"--engines: '{name}' is not one of {string.Join(", ", SoakSettings.AllEngines.Select(EngineOptions.Name))}");
+                result.AddError($"--engines: '{name}' is not one of {string.Join(", ", SoakSettings.AllEngines.Select(EngineFactory.Name))}");
                 return [];
             }
             var kind = Enum.Parse<EngineKind>(match);

@@ -70,7 +70,7 @@ public sealed class EngineOptions
         {
             Description = "Where searches run: " + string.Join("; ", accepted.Select(k => Descriptions[k])) + ".",
             DefaultValueFactory = _ => fallback,
-            HelpName = string.Join('|', accepted.Select(Name)),
+            HelpName = string.Join('|', accepted.Select(EngineFactory.Name)),
         };
         Engine.Choices();
         Engine.Validators.Add(result =>
@@ -85,7 +85,7 @@ public sealed class EngineOptions
                 return; // a name that did not parse has its own error
             }
             if (!_accepted.Contains(kind))
-                result.AddError($"--engine {Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(Name))}");
+                result.AddError($"--engine {EngineFactory.Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(EngineFactory.Name))}");
         });
         Workers.AtLeast(1);
         MaxQubits.Between(1, 100_000);
@@ -119,19 +119,6 @@ public sealed class EngineOptions
             ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers))
             : null;
 
-    /// <summary>Where a Q# engine's work runs, for reports: the cluster's workers or this machine.</summary>
-    public static string Where(EngineKind kind, BridgePool? bridges, int workers) => Place(kind, bridges, workers).Description;
-
-    /// <summary><see cref="Where"/> for scripts (<c>--json</c>): local or cluster, bridges and workers.</summary>
-    /// <remarks>Without <paramref name="bridges"/> a Q# engine starts <paramref name="workers"/> local bridges of its own.</remarks>
-    public static RunPlace Place(EngineKind kind, BridgePool? bridges, int workers) => kind switch
-    {
-        EngineKind.FullState or EngineKind.Gate => bridges?.Place ?? RunPlace.LocalBridges(workers),
-        _ => RunPlace.NoBridges,
-    };
-
-    public static string Name(EngineKind kind) => kind.ToString().ToLowerInvariant();
-
     /// <summary>The noise model the engine runs under, as reports name it: the one place results take it from.</summary>
     public RunNoise NoiseRecord(ParseResult parse)
     {
@@ -139,7 +126,7 @@ public sealed class EngineOptions
         if (noise.IsNoiseless) return RunNoise.None;
         var kind = parse.GetValue(Engine);
         var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
-        return new RunNoise(kind == EngineKind.Analytic ? "pauli, depolarizing approximation" : "pauli", rates, NoiseDescription(kind, noise));
+        return new RunNoise(kind == EngineKind.Analytic ? "pauli, depolarizing approximation" : "pauli", rates, EngineFactory.NoiseDescription(kind, noise));
     }
 
     public void AddTo(Command command)
@@ -159,49 +146,5 @@ public sealed class EngineOptions
     /// <summary>The Grover engine a parse result asks for; its randomness is the seed's engine stream.</summary>
     /// <remarks>A Q# engine runs on <paramref name="pool"/> (<see cref="StartBridges"/>) when given, without stopping it.</remarks>
     public IGroverEngine Create(ParseResult parse, BridgePool? pool = null) =>
-        Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits), pool, GetNoise(parse));
-
-    /// <summary>
-    /// A Grover engine; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines start
-    /// bridges of their own, or use <paramref name="pool"/> without stopping it when they are disposed.
-    /// </summary>
-    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null)
-    {
-        noise ??= NoiseModel.None;
-        CheckNoise(kind, noise);
-        return kind switch
-        {
-            EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise),
-            EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null, noise: noise),
-            EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise),
-            _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
-        };
-    }
-
-    /// <summary>The noise model as results on <paramref name="kind"/> name it: the analytic engine adds its approximation.</summary>
-    public static string NoiseDescription(EngineKind kind, NoiseModel noise) =>
-        kind == EngineKind.Analytic ? DepolarizingApproximation.Default.Description(noise) : noise.Description();
-
-    /// <summary>Refuses, as a usage error naming the option, a noise model the engine cannot run.</summary>
-    public static void CheckNoise(EngineKind kind, NoiseModel noise)
-    {
-        if (noise.QubitLoss > 0 && kind != EngineKind.FullState)
-            throw new UserError(kind == EngineKind.Gate ? $"--qubit-loss: {GateEngine.LossUnsupported}" : $"--qubit-loss: the {Name(kind)} engine does not model qubit loss (its depolarizing approximation covers Pauli noise); use --engine fullstate");
-        if (!noise.IsNoiseless && kind is EngineKind.Classical or EngineKind.Randomized)
-            throw new UserError($"--noise: the {Name(kind)} engine runs no quantum circuit");
-    }
-
-    /// <summary>The ray search of an engine: QSearch over a Grover engine, or a classical search.</summary>
-    public static IHitSearch CreateHitSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null)
-    {
-        CheckNoise(kind, noise ?? NoiseModel.None);
-        return kind switch
-        {
-            EngineKind.FullState or EngineKind.Analytic or EngineKind.Gate =>
-                new QuantumHitSearch(Create(kind, root, workers, maxQubits, pool, noise), root.Fork(RandomStreams.Search), options, gateLevel: kind == EngineKind.Gate),
-            EngineKind.Classical => new ClassicalHitSearch(),
-            EngineKind.Randomized => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
-            _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),
-        };
-    }
+        EngineFactory.Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits), pool, GetNoise(parse));
 }

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.CommandLine.Help;
 using System.Reflection;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Engines;
 
 namespace QuantumRayTracing.Cli;
 
@@ -37,7 +38,7 @@ public sealed class JsonOption
         if (Path(parse) is not { } path) return;
         var record = new RunRecord(parse.CommandResult.Command.Name, Values(parse),
             engine is null ? null : parse.GetValue(engine.Seed),
-            engine is null ? null : EngineOptions.Name(parse.GetValue(engine.Engine)),
+            engine is null ? null : EngineFactory.Name(parse.GetValue(engine.Engine)),
             engine?.NoiseRecord(parse) ?? RunNoise.None, figures, ranOn);
         RunJsonFile.Write(path, record);
     }

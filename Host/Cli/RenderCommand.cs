@@ -17,15 +17,12 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class RenderCommand : Command
 {
-    /// <summary>The scene rendered when none is named: the paper's figure 1.</summary>
-    public const int DefaultQornellPrimitives = 64;
-
     /// <summary>The most area samples or VPLs per point an option accepts.</summary>
     public const int MaxSamples = 4096;
 
     private readonly Argument<FileInfo?> _scene = new("scene")
     {
-        Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {DefaultQornellPrimitives} primitives, built in.",
+        Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {DefaultScene.QornellPrimitives} primitives, built in.",
         Arity = ArgumentArity.ZeroOrOne,
     };
 
@@ -87,15 +84,15 @@ public sealed class RenderCommand : Command
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         using var bridges = _engine.StartBridges(parse);
-        EngineOptions.CheckNoise(settings.Engine, settings.NoiseModel);
+        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
 
         PrintPlan(settings, RenderPlan.Of(settings));
         var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress());
 
-        var engineName = EngineOptions.Name(settings.Engine);
+        var engineName = EngineFactory.Name(settings.Engine);
         var noise = settings.NoiseModel;
         AnsiConsole.WriteLine($"{engineName} ran on {run.RanOn.Description}");
-        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineOptions.NoiseDescription(settings.Engine, noise)}", run.Figures, settings.SamplesLight, !noise.IsNoiseless);
+        Print(noise.IsNoiseless ? engineName : $"{engineName} under {EngineFactory.NoiseDescription(settings.Engine, noise)}", run.Figures, settings.SamplesLight, !noise.IsNoiseless);
         _json.Write(parse, run.Figures, _engine, run.RanOn);
         return 0;
     }
@@ -103,12 +100,12 @@ public sealed class RenderCommand : Command
     /// <summary>The run the options ask for; the bridges are started after the outputs are checked.</summary>
     private RenderRunSettings Settings(ParseResult parse, FileInfo? sceneFile)
     {
-        var scene = LoadScene(sceneFile);
+        var scene = DefaultScene.Load(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
-        var stem = sceneFile is null ? $"qornell-{DefaultQornellPrimitives}" : Path.GetFileNameWithoutExtension(sceneFile.Name);
+        var stem = sceneFile is null ? DefaultScene.Stem : Path.GetFileNameWithoutExtension(sceneFile.Name);
         var (width, height) = ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
         return new RenderRunSettings(scene, _render.Get(parse, width, height, parse.GetValue(_engine.Seed)), kind, _qsearch.Get(parse),
-            parse.GetValue(_output) ?? $"{stem}-{EngineOptions.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
+            parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse));
     }
 
@@ -125,7 +122,7 @@ public sealed class RenderCommand : Command
         }
         AnsiConsole.WriteLine($"modelled per search: {plan.IndexQubits} index qubits + {plan.AuxiliaryQubits} auxiliaries, lookup table of {plan.Primitives} rows x {plan.CoordinateBits} coordinate bits per axis");
         if (settings.Engine is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic)
-            AnsiConsole.WriteLine($"noise model: {EngineOptions.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+            AnsiConsole.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
         if (plan.GateRegisters is { } registers)
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
     }
@@ -182,10 +179,6 @@ public sealed class RenderCommand : Command
 
     private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
 
-    /// <summary>The scene file, or the built-in Qornell box with <see cref="DefaultQornellPrimitives"/> primitives when none is named.</summary>
-    public static Scene LoadScene(FileInfo? file) => file is null
-        ? SceneLoader.Parse(QornellBox.Build(DefaultQornellPrimitives).ToJson(), $"built-in qornell-{DefaultQornellPrimitives}")
-        : SceneLoader.Load(file.FullName);
 
     /// <summary>out.png → out-reference.png.</summary>
     public static string Sibling(string output, string suffix) => ImageFiles.Beside(output, suffix);

@@ -71,13 +71,13 @@ public sealed class SearchCommand : Command
 
         AnsiConsole.WriteLine($"N = {settings.Count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", settings.Schedule.Bounds)}}}");
         AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index qubits + {registers.AuxiliaryQubits} auxiliaries for the multi-controlled phase");
-        var noise = EngineOptions.NoiseDescription(settings.Engine, settings.NoiseModel);
+        var noise = EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
         AnsiConsole.WriteLine($"noise model: {noise}");
 
         var run = AnsiConsole.Profile.Capabilities.Interactive
             ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
             {
-                var task = progress.AddTask($"{EngineOptions.Name(settings.Engine)}: searching", maxValue: settings.Searches);
+                var task = progress.AddTask($"{EngineFactory.Name(settings.Engine)}: searching", maxValue: settings.Searches);
                 return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
             })
             : SearchRun.Run(settings);

@@ -3,6 +3,7 @@ using System.Globalization;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Supersampling;
+using QuantumRayTracing.Scenes.Generation;
 
 namespace QuantumRayTracing.Cli;
 
@@ -24,7 +25,7 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<FileInfo?> _scene = new("--scene")
     {
-        Description = $"Scene file rendered classically at s times --size, each s x s block one output pixel. Default (without --image): the built-in Qornell box with {RenderCommand.DefaultQornellPrimitives} primitives.",
+        Description = $"Scene file rendered classically at s times --size, each s x s block one output pixel. Default (without --image): the built-in Qornell box with {DefaultScene.QornellPrimitives} primitives.",
     };
 
     private readonly Option<string?> _size = new("--size")
@@ -146,7 +147,7 @@ public sealed class SupersampleCommand : Command
         string[] inputs = settings.InputFile is { } input ? [input] : [];
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
-        EngineOptions.CheckNoise(settings.Engine, settings.NoiseModel);
+        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
         var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => PrintPlan(settings, plan));
         Print(run.Figures, settings, run.RanOn.Description);
@@ -162,7 +163,7 @@ public sealed class SupersampleCommand : Command
         var (imageFile, sceneFile) = (parse.GetValue(_image), parse.GetValue(_scene));
         var stem = imageFile is not null ? Path.GetFileNameWithoutExtension(imageFile.Name)
             : sceneFile is not null ? Path.GetFileNameWithoutExtension(sceneFile.Name)
-            : $"qornell-{RenderCommand.DefaultQornellPrimitives}";
+            : DefaultScene.Stem;
         return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, RenderCommand.ParseSize(parse.GetValue(_size)).Size,
             parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{stem}-{OptionRules.ChoiceName(method.Method)}.png",
             Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse));
@@ -178,12 +179,12 @@ public sealed class SupersampleCommand : Command
         if (plan.Table is { } table)
             Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
         Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method)})");
-        Console.WriteLine($"noise model: {EngineOptions.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+        Console.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
     }
 
     private static void Print(SupersampleFigures figures, SupersampleRunSettings settings, string where)
     {
-        var (engineName, noise) = (EngineOptions.Name(settings.Engine), settings.NoiseModel);
+        var (engineName, noise) = (EngineFactory.Name(settings.Engine), settings.NoiseModel);
         var error = figures.Error;
         var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
         Console.WriteLine($"queries: {figures.QueriesPerChannel} per pixel per channel, {channels}; {figures.TotalQueries:N0} in all");
@@ -191,7 +192,7 @@ public sealed class SupersampleCommand : Command
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {EngineOptions.NoiseDescription(settings.Engine, noise)}")}; ran on {where}");
+        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {EngineFactory.NoiseDescription(settings.Engine, noise)}")}; ran on {where}");
         foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
     }
 

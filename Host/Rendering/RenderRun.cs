@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
@@ -22,12 +21,12 @@ public static class RenderRun
         var plan = RenderPlan.Of(settings);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = EngineOptions.CreateHitSearch(settings.Engine, new SeededRandom(options.Seed), settings.LocalWorkers, settings.Search,
+        using (var search = HitSearchFactory.Create(settings.Engine, new SeededRandom(options.Seed), settings.LocalWorkers, settings.Search,
                    settings.MaxQubits, settings.Pool, settings.NoiseModel))
         {
             try
             {
-                result = Stage(progress, EngineOptions.Name(settings.Engine), p => SceneRenderer.Render(scene, search, options, p));
+                result = Stage(progress, EngineFactory.Name(settings.Engine), p => SceneRenderer.Render(scene, search, options, p));
             }
             catch (SimulatorLimitException e)
             {
@@ -64,7 +63,7 @@ public static class RenderRun
             converged is null ? null : ImageError.Between(reference.Image, converged.Image),
             renderTime, referenceTime, converged is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
         // After the render: a cluster's place counts the chunks it had to send again.
-        var ranOn = EngineOptions.Place(settings.Engine, settings.Pool, settings.LocalWorkers);
+        var ranOn = EngineFactory.Place(settings.Engine, settings.Pool, settings.LocalWorkers);
         return new RenderRunResult(figures, ranOn, result, reference, converged);
     }
 

@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using QuantumRayTracing.Bridge;
-using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Noise;
@@ -9,6 +8,7 @@ using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Scenes.Generation;
 
 namespace QuantumRayTracing.Supersampling;
 
@@ -26,7 +26,7 @@ public static class SupersampleRun
     public static SupersampleRunResult Run(SupersampleRunSettings settings, IRunProgress? progress = null, Action<SupersamplePlan>? onPlan = null)
     {
         var (method, kind, noise) = (settings.Method, settings.Engine, settings.NoiseModel);
-        EngineOptions.CheckNoise(kind, noise);
+        EngineFactory.CheckNoise(kind, noise);
         var (input, inputName, renderTime) = settings.ImageFile is { } file
             ? (LoadImage(file, method.Side, kind), Path.GetFileName(file), (TimeSpan?)null)
             : RenderScene(settings.SceneFile, settings.Size, method.Side, kind, progress);
@@ -48,7 +48,7 @@ public static class SupersampleRun
         SupersampleResult result;
         try
         {
-            var supersampling = progress?.Start(EngineOptions.Name(kind));
+            var supersampling = progress?.Start(EngineFactory.Name(kind));
             using var engine = CreateEngine(kind, settings.Seed, settings.LocalWorkers, settings.MaxQubits, noise, settings.Pool);
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         }
@@ -69,7 +69,7 @@ public static class SupersampleRun
             result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
             result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
         // After the estimates: a cluster's place counts the chunks it had to send again.
-        var ranOn = EngineOptions.Place(kind, settings.Pool, settings.LocalWorkers);
+        var ranOn = EngineFactory.Place(kind, settings.Pool, settings.LocalWorkers);
         return new SupersampleRunResult(figures, ranOn, input, result);
     }
 
@@ -93,7 +93,7 @@ public static class SupersampleRun
     // The scene (or the built-in Qornell box) rendered classically at s times the output size.
     private static (SubpixelImage Input, string Name, TimeSpan? Time) RenderScene(string? path, (int Width, int Height)? size, int s, EngineKind kind, IRunProgress? progress)
     {
-        var scene = RenderCommand.LoadScene(path is null ? null : new FileInfo(path));
+        var scene = DefaultScene.Load(path is null ? null : new FileInfo(path));
         var (width, height) = size ?? (scene.Width, scene.Height);
         if ((long)width * s > SceneLoader.MaxImageSide || (long)height * s > SceneLoader.MaxImageSide)
             throw new UserError($"{width}x{height} pixels at --subpixels {s} is a {width * s}x{height * s} render, above the largest side {SceneLoader.MaxImageSide}; use a smaller --size or --subpixels");

@@ -1,0 +1,15 @@
+namespace QuantumRayTracing.Scenes.Generation;
+
+/// <summary>The scene rendered when none is named: the Qornell box of the paper's figure 1.</summary>
+public static class DefaultScene
+{
+    public const int QornellPrimitives = 64;
+
+    /// <summary>The name outputs take after it, as a scene file's stem.</summary>
+    public static string Stem => $"qornell-{QornellPrimitives}";
+
+    /// <summary>The scene file, or the built-in Qornell box when none is named.</summary>
+    public static Scene Load(FileInfo? file) => file is null
+        ? SceneLoader.Parse(QornellBox.Build(QornellPrimitives).ToJson(), $"built-in {Stem}")
+        : SceneLoader.Load(file.FullName);
+}
