@@ -2,8 +2,8 @@ namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// Maximum-likelihood amplitude estimation on a noisy machine (Tanaka et al. 2021, "Amplitude estimation via maximum
-/// likelihood on noisy quantum computer"): the same flips as <see cref="MaximumLikelihoodEstimator"/>, but the
-/// likelihood of a head after m Grover operators is that of a globally depolarized coin,
+/// likelihood on noisy quantum computer"): flips like <see cref="MaximumLikelihoodEstimator"/>'s (by default with an
+/// adaptive schedule, below), but the likelihood of a head after m Grover operators is that of a globally depolarized coin,
 /// P(head | θ, γ) = Φ · sin²((2m+1)θ) + (1 − Φ) / 2 with Φ = e^(−γ(m+½)), and the decay γ ≥ 0 per Grover operator (the
 /// fidelity F = e^(−γ)) is estimated jointly with θ. The estimate is sin²θ.
 /// </summary>
