@@ -42,8 +42,9 @@ public class NoiseAwareMlaeTests
     public void WithoutNoiseReadsAlmostEveryPixelAsPlainMlae()
     {
         // On noiseless flips the likelihood-ratio test keeps the plain fit unless the decay wins by 5.41 (its 1% point,
-        // asymptotically; the decay's prior only lowers the rate). The fixed schedule, so both read the very same flips. Bound: at most 4% of 2000 means read differently: Binomial(2000, 0.01) exceeds 80 with
-        // probability below 1e-15, so a 1% test fails this with probability below 1e-8 even if its small-sample rate were twice that.
+        // asymptotically; the decay's prior only lowers the rate). On the fixed schedule, so that both read the very same
+        // flips. Bound: at most 4% of 2000 means read differently: Binomial(2000, 0.01) exceeds 80 with probability below
+        // 1e-15, so a 1% test fails this with probability below 1e-8 even if its small-sample rate were twice that.
         var values = UniformMeans(2000, 5);
         foreach (var queries in new long[] { 240, 960 })
         {

@@ -249,7 +249,7 @@ public static class NoiseEstimationReport
             budget), fits θ and γ to them, and then spends the rest on plain MLAE's remaining levels if it found no decay, or else on the
             one level whose flips lower the Cramér–Rao error of the mean most at the fitted θ and γ (near 2m+1 = 1/γ, where a level's
             information per query k·e^(−γk) peaks) instead of deep levels the noise has flattened; the estimate is the fit to all flips,
-            and every estimate spends exactly its budget. The column "predicted" is the Fisher information's error for plain MLAE's fixed
+            and every estimate spends exactly its budget. The column "predicted (fixed schedule)" is the Fisher information's error for plain MLAE's fixed
             schedule with γ fitted (`MlaeFisherInformation`: √(2/π) σ with σ the Cramér–Rao bound on sin²θ, averaged over uniform
             means): the saturation level of the fixed schedule, which the adaptive one is meant to get under. Inputs: uniform random
             means on the direct coin, whose Grover operator has 4 noise locations, at the per-gate error that gives each decay γ
@@ -258,7 +258,7 @@ public static class NoiseEstimationReport
             """);
         foreach (var sweep in result.Aware)
         {
-            var table = new TextTable($"aware-{F(sweep.Decay, "0.###")}", ["queries", .. methods, "MLAE-noise predicted", "MLAE / MLAE-noise"]);
+            var table = new TextTable($"aware-{F(sweep.Decay, "0.###")}", ["queries", .. methods, "MLAE-noise predicted (fixed schedule)", "MLAE / MLAE-noise"]);
             foreach (var q in budgets)
             {
                 double Error(string m) => sweep.Points.Single(p => p.Queries == q && p.Method == m).Error;
@@ -272,7 +272,7 @@ public static class NoiseEstimationReport
                     "queries", "mean absolute error", AxisScale.Log10, AxisScale.Log10,
                     [
                         .. methods.Select(m => new PlotSeries(m, [.. sweep.Points.Where(p => p.Method == m).Select(p => ((double)p.Queries, p.Error))])),
-                        new PlotSeries("MLAE-noise, predicted", [.. budgets.Select(q => ((double)q, Predicted(sweep.Decay, q)))], Markers: false),
+                        new PlotSeries("MLAE-noise, predicted (fixed schedule)", [.. budgets.Select(q => ((double)q, Predicted(sweep.Decay, q)))], Markers: false),
                     ], 1000, 540),
                 $"MC, QCoin, plain and noise-aware MLAE against queries at γ = {F(sweep.Decay, "0.###")}, with the error the Fisher information predicts");
 
@@ -291,7 +291,7 @@ public static class NoiseEstimationReport
                 [
                     new PlotSeries("MLAE, measured", Binned(e => e.Plain)),
                     new PlotSeries("MLAE-noise, measured", Binned(e => e.Aware)),
-                    new PlotSeries("MLAE-noise, predicted", [.. Enumerable.Range(1, 399).Select(c => c / 400.0).Select(f => (f, MlaeFisherInformation.MeanAbsoluteError(f, chosen.Decay, levels)))], Markers: false),
+                    new PlotSeries("MLAE-noise, predicted (fixed schedule)", [.. Enumerable.Range(1, 399).Select(c => c / 400.0).Select(f => (f, MlaeFisherInformation.MeanAbsoluteError(f, chosen.Decay, levels)))], Markers: false),
                     new PlotSeries("anomalous means", [.. anomalous.Select(f => (f, MlaeFisherInformation.MeanAbsoluteError(f, chosen.Decay, levels)))], Lines: false),
                 ], 1100, 560),
             "Error against the mean, measured and predicted, with the anomalous means marked");
