@@ -16,8 +16,8 @@ public static class NoiseEstimationExperiment
     /// <summary>Mean absolute error of QCoin with k steps (k = 0: Monte Carlo) on one coin at one rate and budget, over repeated runs at f = ½.</summary>
     public sealed record StepsPoint(string Coin, double Rate, int Steps, long Queries, double Error);
 
-    /// <summary>Mean absolute error of one estimator at one rate and budget over random pixels.</summary>
-    public sealed record MethodPoint(double Rate, long Queries, string Method, double Error);
+    /// <summary>Mean absolute error of one estimator at one rate and budget over random pixels, and its standard error where measured (NaN otherwise).</summary>
+    public sealed record MethodPoint(double Rate, long Queries, string Method, double Error, double StandardError = double.NaN);
 
     /// <summary>One fig. 1 image: its label, result and error against the exact average.</summary>
     public sealed record ImageRun(string Label, SupersampleResult Result, SupersampleError Error);
@@ -181,7 +181,10 @@ public static class NoiseEstimationExperiment
                 {
                     using var engine = streams.Engine(rate, direct: true);
                     var estimates = estimator.Estimate(means, engine);
-                    points.Add(new MethodPoint(rate, queries, method, means.Select((v, j) => Math.Abs(estimates[j] - v[0])).Average()));
+                    var errors = means.Select((v, j) => Math.Abs(estimates[j] - v[0])).ToArray();
+                    var error = errors.Average();
+                    var spread = Math.Sqrt(errors.Sum(e => (e - error) * (e - error)) / (errors.Length - 1));
+                    points.Add(new MethodPoint(rate, queries, method, error, spread / Math.Sqrt(errors.Length)));
                     if (queries == NoiseEstimationSettings.AwareBudgets[^1] && method == "MLAE") plainLast = estimates;
                     if (queries == NoiseEstimationSettings.AwareBudgets[^1] && method == "MLAE-noise") awareLast = estimates;
                 }

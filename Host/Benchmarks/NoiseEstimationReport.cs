@@ -239,17 +239,26 @@ public static class NoiseEstimationReport
         report.Heading("A noise-aware estimator: MLAE with a fitted depolarizing decay");
         report.Text("""
             `supersample -m mlae-noise` (`NoiseAwareMaximumLikelihoodEstimator`, after Tanaka et al. 2021, "Amplitude estimation via maximum
-            likelihood on noisy quantum computer") makes the same flips as plain MLAE but reads them with the depolarized coin's likelihood,
+            likelihood on noisy quantum computer") reads MLAE's flips with the depolarized coin's likelihood,
             P(head) = Φ · sin²((2m+1)θ) + (1 − Φ)/2 with Φ = e^(−γ(m+½)), and fits the decay γ per Grover operator together with θ (a grid over
-            θ and γ, then golden-section refinement); it keeps the decay only when it raises the log-likelihood by more than 5.41/2 (a
-            likelihood-ratio test at 1%) and the fitted mean is not anomalous (below), and otherwise reads the flips exactly as plain MLAE. Its error is predicted by the Fisher
-            information of its flips (`MlaeFisherInformation`): √(2/π) σ with σ the Cramér–Rao bound on sin²θ with γ fitted too, averaged
-            over uniform means. Inputs: uniform random means on the direct coin, whose Grover operator has 4 noise locations, at the
-            per-gate error that gives each decay γ (F = e^(−γ) per operator).
+            θ and γ, then golden-section refinement), under a prior e^(−10γ) on the decay (an exponential of mean 0.1: without it a chance
+            fit of a large decay on a noiseless machine lets θ follow the few unamplified flips alone, just off f = ½). It keeps the decay
+            only when it raises the log-likelihood, prior counted, by more than 5.41/2 (a likelihood-ratio test at 1% on a noiseless
+            machine) and the fitted mean is not anomalous (below), and otherwise reads the flips exactly as plain MLAE.
+            Its schedule is adaptive: it first flips the shallow levels of plain MLAE's schedule (the longest prefix within half the
+            budget), fits θ and γ to them, and then spends the rest on plain MLAE's remaining levels if it found no decay, or else on the
+            one level whose flips lower the Cramér–Rao error of the mean most at the fitted θ and γ (near 2m+1 = 1/γ, where a level's
+            information per query k·e^(−γk) peaks) instead of deep levels the noise has flattened; the estimate is the fit to all flips,
+            and every estimate spends exactly its budget. The column "predicted (fixed schedule)" is the Fisher information's error for plain MLAE's fixed
+            schedule with γ fitted (`MlaeFisherInformation`: √(2/π) σ with σ the Cramér–Rao bound on sin²θ, averaged over uniform
+            means): the saturation level of the fixed schedule, which the adaptive one is meant to get under. Inputs: uniform random
+            means on the direct coin, whose Grover operator has 4 noise locations, at the per-gate error that gives each decay γ
+            (F = e^(−γ) per operator); each estimator draws its flips from its own seeded stream, so two columns differ by sampling
+            error too (the targets below give its size).
             """);
         foreach (var sweep in result.Aware)
         {
-            var table = new TextTable($"aware-{F(sweep.Decay, "0.###")}", ["queries", .. methods, "MLAE-noise predicted", "MLAE / MLAE-noise"]);
+            var table = new TextTable($"aware-{F(sweep.Decay, "0.###")}", ["queries", .. methods, "MLAE-noise predicted (fixed schedule)", "MLAE / MLAE-noise"]);
             foreach (var q in budgets)
             {
                 double Error(string m) => sweep.Points.Single(p => p.Queries == q && p.Method == m).Error;
@@ -263,7 +272,7 @@ public static class NoiseEstimationReport
                     "queries", "mean absolute error", AxisScale.Log10, AxisScale.Log10,
                     [
                         .. methods.Select(m => new PlotSeries(m, [.. sweep.Points.Where(p => p.Method == m).Select(p => ((double)p.Queries, p.Error))])),
-                        new PlotSeries("MLAE-noise, predicted", [.. budgets.Select(q => ((double)q, Predicted(sweep.Decay, q)))], Markers: false),
+                        new PlotSeries("MLAE-noise, predicted (fixed schedule)", [.. budgets.Select(q => ((double)q, Predicted(sweep.Decay, q)))], Markers: false),
                     ], 1000, 540),
                 $"MC, QCoin, plain and noise-aware MLAE against queries at γ = {F(sweep.Decay, "0.###")}, with the error the Fisher information predicts");
 
@@ -282,7 +291,7 @@ public static class NoiseEstimationReport
                 [
                     new PlotSeries("MLAE, measured", Binned(e => e.Plain)),
                     new PlotSeries("MLAE-noise, measured", Binned(e => e.Aware)),
-                    new PlotSeries("MLAE-noise, predicted", [.. Enumerable.Range(1, 399).Select(c => c / 400.0).Select(f => (f, MlaeFisherInformation.MeanAbsoluteError(f, chosen.Decay, levels)))], Markers: false),
+                    new PlotSeries("MLAE-noise, predicted (fixed schedule)", [.. Enumerable.Range(1, 399).Select(c => c / 400.0).Select(f => (f, MlaeFisherInformation.MeanAbsoluteError(f, chosen.Decay, levels)))], Markers: false),
                     new PlotSeries("anomalous means", [.. anomalous.Select(f => (f, MlaeFisherInformation.MeanAbsoluteError(f, chosen.Decay, levels)))], Lines: false),
                 ], 1100, 560),
             "Error against the mean, measured and predicted, with the anomalous means marked");
@@ -312,6 +321,7 @@ public static class NoiseEstimationReport
         var budgets = NoiseEstimationSettings.AwareBudgets;
         var (last, before) = (budgets[^1], budgets[^2]);
         double Error(AwareSweep s, long q, string m) => s.Points.Single(p => p.Queries == q && p.Method == m).Error;
+        double Spread(AwareSweep s, long q, string m) => s.Points.Single(p => p.Queries == q && p.Method == m).StandardError;
         var lines = new List<string>();
         foreach (var sweep in result.Aware)
         {
@@ -319,16 +329,23 @@ public static class NoiseEstimationReport
             if (sweep.Decay == 0)
             {
                 var change = budgets.Select(q => Error(sweep, q, "MLAE-noise") / Error(sweep, q, "MLAE") - 1).ToArray();
+                // The standard error of each ratio from the two independent means' standard errors (first order).
+                var spread = budgets.Select(q => Error(sweep, q, "MLAE-noise") / Error(sweep, q, "MLAE") *
+                    Math.Sqrt(Math.Pow(Spread(sweep, q, "MLAE-noise") / Error(sweep, q, "MLAE-noise"), 2) + Math.Pow(Spread(sweep, q, "MLAE") / Error(sweep, q, "MLAE"), 2))).ToArray();
                 lines.Add($"- {label}: the noise-aware error against plain MLAE's, budget by budget: {string.Join(", ", change.Select(c => F(100 * c, "+0;-0;0") + "%"))} " +
-                    $"(target: within 10%): **{(change.All(c => Math.Abs(c) <= 0.10) ? "met" : change.All(c => c <= 0.10) ? "met where it is worse, and it is better by more than 10% somewhere" : "not met")}**.");
+                    $"(target: within 10%): **{(change.All(c => Math.Abs(c) <= 0.10) ? "met" : change.All(c => c <= 0.10) ? "met where it is worse, and it is better by more than 10% somewhere" : "not met")}**; " +
+                    $"one standard error of each ratio (sampling): {string.Join(", ", spread.Select(e => F(100 * e, "0") + "%"))}.");
                 continue;
             }
             var saturated = Error(sweep, last, "MLAE") >= 0.9 * Error(sweep, before, "MLAE");
             var ratio = Error(sweep, last, "MLAE") / Error(sweep, last, "MLAE-noise");
             var worse = budgets.Where(q => Error(sweep, q, "MLAE-noise") > Error(sweep, q, "MC")).ToArray();
+            // How far over MC, in standard errors of the difference, where it is worse.
+            string Over(long q) => $"{q} ({F(Error(sweep, q, "MLAE-noise"))} against {F(Error(sweep, q, "MC"))}, " +
+                $"{F((Error(sweep, q, "MLAE-noise") - Error(sweep, q, "MC")) / Math.Sqrt(Math.Pow(Spread(sweep, q, "MLAE-noise"), 2) + Math.Pow(Spread(sweep, q, "MC"), 2)), "0.0")} standard errors)";
             lines.Add($"- {label}: plain MLAE {(saturated ? "has saturated" : "has not saturated")} (its error from {before} to {last} queries: {F(Error(sweep, before, "MLAE"))} → {F(Error(sweep, last, "MLAE"))}); " +
                 $"at {last} queries it errs {F(ratio, "0.00")}x as much as the noise-aware MLAE (target ≥ 2x{(saturated ? "" : ", which applies where plain MLAE has saturated")}: **{(ratio >= 2 ? "met" : "not met")}**); " +
-                $"the noise-aware MLAE is no worse than MC at {(worse.Length == 0 ? "every budget (**met**)" : $"every budget but {string.Join(", ", worse)} (**not met** there)")}.");
+                $"the noise-aware MLAE is no worse than MC at {(worse.Length == 0 ? "every budget (**met**)" : $"every budget but {string.Join(", ", worse.Select(Over))} (**not met** there)")}.");
         }
         report.Text("**Targets.**\n" + string.Join("\n", lines));
     }

@@ -43,8 +43,8 @@ public sealed class SupersampleCommand : Command
     private readonly Option<SupersampleMethod> _method = new("--method", "-m")
     {
         Description = "mc (Monte Carlo), qss (quantum supersampling), qcoin (QCoin, Algorithm 1), mlae (maximum-likelihood amplitude estimation), "
-            + "mlae-noise (MLAE for noisy machines: the same flips, but each level's head probability is that of a depolarized coin, "
-            + "F^m sin²((2m+1)θ) + (1 − F^m)/2, and the fidelity F per Grover operator is fitted together with the mean, so levels the noise has flattened count for little instead of biasing the estimate).",
+            + "mlae-noise (MLAE for noisy machines: each level's head probability is that of a depolarized coin, "
+            + "F^m sin²((2m+1)θ) + (1 − F^m)/2, and the fidelity F per Grover operator is fitted together with the mean, so levels the noise has flattened count for little instead of biasing the estimate; the second half of the budget goes to the level the fitted noise leaves the most information per query).",
         DefaultValueFactory = _ => DefaultMethod,
         HelpName = "mc|qss|qcoin|mlae|mlae-noise",
     };

@@ -2,8 +2,8 @@ namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// Maximum-likelihood amplitude estimation on a noisy machine (Tanaka et al. 2021, "Amplitude estimation via maximum
-/// likelihood on noisy quantum computer"): the same flips as <see cref="MaximumLikelihoodEstimator"/>, but the
-/// likelihood of a head after m Grover operators is that of a globally depolarized coin,
+/// likelihood on noisy quantum computer"): flips like <see cref="MaximumLikelihoodEstimator"/>'s (by default with an
+/// adaptive schedule, below), but the likelihood of a head after m Grover operators is that of a globally depolarized coin,
 /// P(head | θ, γ) = Φ · sin²((2m+1)θ) + (1 − Φ) / 2 with Φ = e^(−γ(m+½)), and the decay γ ≥ 0 per Grover operator (the
 /// fidelity F = e^(−γ)) is estimated jointly with θ. The estimate is sin²θ.
 /// </summary>
@@ -16,8 +16,19 @@ namespace QuantumRayTracing.Supersampling;
 /// of its fringe) times a grid of γ (0 and 0.001 to 4 in steps of 4), then alternate golden-section refinement of θ
 /// within one grid step and of γ between its grid neighbours. The decay is kept only when the likelihood-ratio test finds it
 /// (<see cref="NoiseEvidence"/>) and the fit is not at an anomalous mean (<see cref="MlaeFisherInformation.AnomalyFactor"/>);
-/// otherwise the flips are read as plain MLAE reads them. Deterministic: the same heads give the same estimate. No
+/// otherwise the flips are read as plain MLAE reads them. The decay carries a prior (<see cref="DecayPenalty"/>), so a
+/// large decay needs strong evidence: on a noiseless machine a chance fit of a large decay frees θ to follow the few
+/// shallow levels alone, and costs far more than a small one. Deterministic: the same heads give the same estimate. No
 /// heads anywhere gives 0 and heads everywhere 1, exactly, as plain MLAE.
+/// <para>
+/// Adaptive schedule (the default): a fixed schedule spends most of its queries on its deepest levels, which noise
+/// flattens first. So the estimator first flips the schedule's shallow levels (the longest prefix within
+/// <see cref="SurveyShare"/> of the budget), fits θ and γ to them, and spends the rest of the budget by what it found:
+/// with no decay found, on the schedule's remaining levels exactly as plain MLAE (the same levels and flips); with a decay
+/// γ̂, on the one level m whose flips lower the Cramér–Rao error of the mean most at (θ̂, γ̂)
+/// (<see cref="MlaeFisherInformation.StandardError"/>), any queries left over as unamplified flips. The estimate is the fit
+/// to all the flips. Two engine batches; the budget is spent exactly (each flip after m Grover operators costs 1 + 2m).
+/// </para>
 /// </remarks>
 public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
 {
@@ -35,31 +46,112 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
     /// </summary>
     public const double NoiseEvidence = 5.41;
 
+    /// <summary>
+    /// The weight λ of the decay's prior e^(−λγ) (an exponential prior of mean γ = 0.1 per Grover operator): the fit
+    /// maximises ln L − λγ, and the likelihood-ratio test counts the penalty against the decay.
+    /// </summary>
+    public const double DecayPenalty = 10;
+
+    /// <summary>The share of the budget the adaptive schedule spends on the schedule's shallow levels before it estimates the decay.</summary>
+    public const double SurveyShare = 0.5;
+
     private readonly MaximumLikelihoodEstimator _flips;
 
-    public NoiseAwareMaximumLikelihoodEstimator(long queries, int levels, MlaeSchedule? schedule = null)
+    /// <param name="queries">The budget per estimate.</param>
+    /// <param name="levels">K, amplified levels of the schedule.</param>
+    /// <param name="schedule">The schedule; plain MLAE's default when null.</param>
+    /// <param name="adaptive">True (default): spend the second share of the budget by the decay the first share shows; false: plain MLAE's flips.</param>
+    public NoiseAwareMaximumLikelihoodEstimator(long queries, int levels, MlaeSchedule? schedule = null, bool adaptive = true)
     {
         _flips = new MaximumLikelihoodEstimator(queries, levels, schedule);
+        Adaptive = adaptive;
+        SurveyLevels = SurveyLength(_flips.Iterations, _flips.Flips, queries);
     }
+
+    /// <summary>Whether the second share of the budget follows the decay the first share shows.</summary>
+    public bool Adaptive { get; }
+
+    /// <summary>How many of the schedule's levels (m = 0 first) the adaptive schedule flips before it estimates the decay.</summary>
+    public int SurveyLevels { get; }
 
     public MlaeSchedule Schedule => _flips.Schedule;
 
     public int Levels => _flips.Levels;
 
-    /// <summary>Grover operators m of each level, as plain MLAE's.</summary>
+    /// <summary>Grover operators m of each level of the fixed schedule, as plain MLAE's (the adaptive one starts with them).</summary>
     public int[] Iterations => _flips.Iterations;
 
-    /// <summary>Flips of each level, as plain MLAE's.</summary>
+    /// <summary>Flips of each level of the fixed schedule, as plain MLAE's.</summary>
     public int[] Flips => _flips.Flips;
 
-    public string Name => $"mlae-noise (K = {Levels})";
+    public string Name => Adaptive ? $"mlae-noise (K = {Levels}, adaptive)" : $"mlae-noise (K = {Levels})";
 
     public long Queries => _flips.Queries;
 
     public IReadOnlyList<double> Estimate(IReadOnlyList<double[]> values, ISupersamplingEngine engine) =>
-        _flips.Flip(values, engine).Select(levels => Math.Clamp(Math.Pow(Math.Sin(MostLikely(levels).Angle), 2), 0, 1)).ToArray();
+        Observe(values, engine).Select(levels => Math.Clamp(Math.Pow(Math.Sin(MostLikely(levels).Angle), 2), 0, 1)).ToArray();
 
-    /// <summary>(θ ∈ [0, π/2], γ ≥ 0) maximising the likelihood of the observed levels.</summary>
+    /// <summary>Every item's flips: plain MLAE's schedule, or with <see cref="Adaptive"/> its survey levels and then the rest as <see cref="PlanRest"/> chooses.</summary>
+    public IReadOnlyList<MlaeLevel[]> Observe(IReadOnlyList<double[]> values, ISupersamplingEngine engine)
+    {
+        if (!Adaptive || SurveyLevels == Iterations.Length) return _flips.Flip(values, engine);
+        var survey = Enumerable.Range(0, SurveyLevels).Select(l => (Iterations[l], Flips[l])).ToArray();
+        var surveyed = Flip(values, values.Select(_ => survey).ToArray(), engine);
+        var rest = Queries - survey.Sum(l => (1 + 2L * l.Item1) * l.Item2);
+        var plans = surveyed.Select(levels => PlanRest(levels, rest)).ToArray();
+        var more = Flip(values, plans, engine);
+        return surveyed.Select((levels, j) => levels.Concat(more[j]).ToArray()).ToArray();
+    }
+
+    /// <summary>
+    /// Where the adaptive schedule spends its <paramref name="rest"/> queries after the survey <paramref name="surveyed"/>:
+    /// the fixed schedule's remaining levels when the survey shows no decay, else the level of the schedule's series whose
+    /// flips lower the predicted error of the mean most at the surveyed (θ̂, γ̂), and the queries its flips leave as m = 0 flips.
+    /// </summary>
+    public (int Iterations, int Flips)[] PlanRest(IReadOnlyList<MlaeLevel> surveyed, long rest)
+    {
+        var (angle, decay) = MostLikely(surveyed);
+        if (decay == 0) return [.. Enumerable.Range(SurveyLevels, Iterations.Length - SurveyLevels).Select(l => (Iterations[l], Flips[l]))];
+        var mean = Math.Pow(Math.Sin(angle), 2);
+        var known = surveyed.Select(o => (o.Iterations, o.Flips)).ToList();
+        var (best, bestError) = (0, double.PositiveInfinity);
+        foreach (var m in Schedule.Iterations(MlaeSchedule.MaxLevels))
+        {
+            var flips = rest / (1 + 2L * m);
+            if (flips == 0) break;
+            var error = MlaeFisherInformation.StandardError(mean, decay, [.. known, (m, (int)flips)]);
+            if (error < bestError) (best, bestError) = (m, error);
+        }
+        var chosen = (int)(rest / (1 + 2L * best));
+        var left = (int)(rest - chosen * (1 + 2L * best));
+        return left > 0 && best > 0 ? [(best, chosen), (0, left)] : [(best, chosen)];
+    }
+
+    // The longest prefix of the schedule (at least m = 0 and the first amplified level) whose flips cost at most SurveyShare of the budget.
+    private static int SurveyLength(int[] iterations, int[] flips, long queries)
+    {
+        var count = Math.Min(2, iterations.Length);
+        var spent = Enumerable.Range(0, count).Sum(l => (1 + 2L * iterations[l]) * flips[l]);
+        while (count < iterations.Length && spent + (1 + 2L * iterations[count]) * flips[count] <= SurveyShare * queries)
+            spent += (1 + 2L * iterations[count]) * flips[count++];
+        return count;
+    }
+
+    // Flips each item's coin at each (m, flips) of its plan, all in one engine batch.
+    private static MlaeLevel[][] Flip(IReadOnlyList<double[]> values, IReadOnlyList<(int Iterations, int Flips)[]> plans, ISupersamplingEngine engine)
+    {
+        var requests = new List<CoinRequest>();
+        for (var j = 0; j < values.Count; j++)
+        {
+            var amplitudes = SubpixelValues.MeanCoin(values[j]);
+            foreach (var (m, n) in plans[j]) requests.Add(new CoinRequest(CoinKind.Mean, amplitudes, m, n));
+        }
+        var heads = engine.FlipCoins(requests);
+        var next = 0;
+        return plans.Select(plan => plan.Select(l => new MlaeLevel(l.Iterations, heads[next++], l.Flips)).ToArray()).ToArray();
+    }
+
+    /// <summary>(θ ∈ [0, π/2], γ ≥ 0) maximising the likelihood of the observed levels times the decay's prior.</summary>
     public static (double Angle, double Decay) MostLikely(IReadOnlyList<MlaeLevel> observed)
     {
         if (observed.All(o => o.Heads == 0)) return (0, 0);
@@ -77,7 +169,7 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
             for (var l = 0; l < observed.Count; l++) fringe[l] = Math.Cos(2 * (2 * observed[l].Iterations + 1) * point * step);
             for (var d = 0; d < DecayGrid.Length; d++)
             {
-                var value = LogLikelihood(observed, fringe, contrast[d]);
+                var value = LogLikelihood(observed, fringe, contrast[d]) - DecayPenalty * DecayGrid[d];
                 if (value > bestValue) (bestPoint, bestDecay, bestValue) = (point, d, value);
             }
         }
@@ -88,17 +180,17 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
         for (var round = 0; round < RefinementRounds; round++)
         {
             var fixedDecay = decay;
-            theta = GoldenMaximum(t => LogLikelihood(observed, t, fixedDecay), Math.Max(0, theta - window), Math.Min(Math.PI / 2, theta + window), theta);
+            theta = GoldenMaximum(t => Penalized(observed, t, fixedDecay), Math.Max(0, theta - window), Math.Min(Math.PI / 2, theta + window), theta);
             var fixedTheta = theta;
-            decay = GoldenMaximum(g => LogLikelihood(observed, fixedTheta, g), decayLow, decayHigh, decay);
+            decay = GoldenMaximum(g => Penalized(observed, fixedTheta, g), decayLow, decayHigh, decay);
             window /= 2;
         }
         // The refinement starts at the grid's best point, so it can only tie or improve on it; the check guards rounding.
-        if (LogLikelihood(observed, theta, decay) < bestValue) (theta, decay) = (bestPoint * step, DecayGrid[bestDecay]);
+        if (Penalized(observed, theta, decay) < bestValue) (theta, decay) = (bestPoint * step, DecayGrid[bestDecay]);
 
-        // Keep the noiseless fit (plain MLAE's angle) unless the decay explains the flips significantly better.
+        // Keep the noiseless fit (plain MLAE's angle) unless the decay, its prior counted, explains the flips significantly better.
         var noiseless = MaximumLikelihoodEstimator.MostLikelyAngle(observed.Select(o => (2 * o.Iterations + 1, o.Heads, o.Flips)).ToArray());
-        var gain = 2 * (LogLikelihood(observed, theta, decay) - LogLikelihood(observed, noiseless, 0));
+        var gain = 2 * (Penalized(observed, theta, decay) - LogLikelihood(observed, noiseless, 0));
         if (gain <= NoiseEvidence) return (noiseless, 0);
         // At an anomalous mean the flips hardly tell θ from γ (at f = ½ every level reads ½ whatever the noise), so a fitted
         // decay there is as likely a trade for a wrong θ as noise; plain MLAE's reading of such flips is sound (½ reads as ½).
@@ -126,6 +218,9 @@ public sealed class NoiseAwareMaximumLikelihoodEstimator : IMeanEstimator
         foreach (var o in observed) sum += LevelLogLikelihood(o, HeadProbability(theta, decay, o.Iterations));
         return sum;
     }
+
+    // The log-likelihood with the decay's prior: what the fit maximises.
+    private static double Penalized(IReadOnlyList<MlaeLevel> observed, double theta, double decay) => LogLikelihood(observed, theta, decay) - DecayPenalty * decay;
 
     // p = (1 − Φ·cos(2(2m+1)θ)) / 2: the same probability as HeadProbability, from precomputed parts.
     private static double LogLikelihood(IReadOnlyList<MlaeLevel> observed, double[] fringe, double[] contrast)

@@ -19,7 +19,8 @@ public enum SupersampleMethod
 
     /// <summary>
     /// MLAE whose likelihood includes a depolarizing decay per Grover operator, estimated jointly with the mean
-    /// (<see cref="NoiseAwareMaximumLikelihoodEstimator"/>): the same flips as <see cref="Mlae"/>.
+    /// (<see cref="NoiseAwareMaximumLikelihoodEstimator"/>): <see cref="Mlae"/>'s shallow levels first, then the rest of the
+    /// budget where the decay they show leaves the most information per query.
     /// </summary>
     [EnumMember(Value = "mlae-noise")]
     MlaeNoise,
