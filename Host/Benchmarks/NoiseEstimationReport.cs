@@ -268,7 +268,7 @@ public static class NoiseEstimationReport
             report.Table(table);
         }
         foreach (var sweep in result.Aware.Where(s => s.Decay > 0))
-            report.Plot($"aware-{F(sweep.Decay, "0.###")}", new PlotSpec($"Error against queries, direct coin, γ = {F(sweep.Decay, "0.###")} per Grover operator (depolarizing p = {Rate(sweep.Rate)} per gate)",
+            report.Plot($"aware-{F(sweep.Decay, "0.###")}", new PlotSpec($"Direct coin, γ = {F(sweep.Decay, "0.###")} per Grover operator (p = {Rate(sweep.Rate)} per gate)",
                     "queries", "mean absolute error", AxisScale.Log10, AxisScale.Log10,
                     [
                         .. methods.Select(m => new PlotSeries(m, [.. sweep.Points.Where(p => p.Method == m).Select(p => ((double)p.Queries, p.Error))])),
@@ -286,7 +286,7 @@ public static class NoiseEstimationReport
         IReadOnlyList<(double, double)> Binned(Func<(double Mean, double Plain, double Aware), double> error) =>
             [.. bins.Select(b => (b, chosen.ByMean.Where(e => e.Mean >= b.Low && e.Mean < b.High).ToArray()))
                 .Where(x => x.Item2.Length > 0).Select(x => ((x.b.Low + x.b.High) / 2, x.Item2.Average(error)))];
-        report.Plot("aware-by-mean", new PlotSpec($"Error against the mean at {last} queries, γ = {F(chosen.Decay, "0.###")}: measured (bins of 0.025) and predicted",
+        report.Plot("aware-by-mean", new PlotSpec($"Error against the mean, {last} queries, γ = {F(chosen.Decay, "0.###")} (bins of 0.025)",
                 "mean f", "mean absolute error", AxisScale.Linear, AxisScale.Log10,
                 [
                     new PlotSeries("MLAE, measured", Binned(e => e.Plain)),
