@@ -34,7 +34,7 @@ public static class NoiseEstimationReport
             **Counting convention** ([conventions.md](conventions.md)): queries count the oracle and its inverse, so a coin flip costs 1, a flip
             after m Grover operators 1 + 2m and a QSS run with t counter bits 2^(t+1) − 1; Monte Carlo with Q queries takes Q samples. Error:
             the mean absolute error of the estimated mean over {settings.Trials} runs or pixels per point (fig. 1: over the image's pixels and
-            channels, in 8-bit levels). Measured in {result.Elapsed.TotalMinutes:0.0} min on a machine shared with other work.
+            channels, in 8-bit levels). Measured in {result.Elapsed.TotalMinutes:0.0} min on the machine named at the end.
             """);
         Steps(report, result, settings);
         Nisq(report, result);
