@@ -32,7 +32,7 @@ public static class NoiseBenchmark
         {
             var pool = settings.Pool ?? local!;
             var versions = pool.Bridges[0].Version();
-            machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>()) + " (shared with other work while measured)";
+            machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
             if (settings.Parts.Contains("model"))
             {
                 Say($"model check: {CheckRequests().Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");

@@ -179,10 +179,6 @@ public sealed class RenderCommand : Command
 
     private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
 
-
-    /// <summary>out.png → out-reference.png.</summary>
-    public static string Sibling(string output, string suffix) => ImageFiles.Beside(output, suffix);
-
     /// <summary>"128" or "160x120" → the size; null text → no size.</summary>
     public static ((int Width, int Height)? Size, string? Error) ParseSize(string? text)
     {
