@@ -1,3 +1,4 @@
+using Microsoft.Extensions.Time.Testing;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Cluster;
@@ -14,18 +15,38 @@ public sealed class ClusterFaultTests
 {
     private const int Requests = 40;
 
-    // Every request through the cluster's bridges; the answers, in request order.
-    private static string[] RunAll(BridgePool pool)
+    private const double ChunkSeconds = 5;
+
+    // Every request through the cluster's bridges; the answers, in request order. The chunk time limit runs on a
+    // clock that moves only while every request in flight waits on the faulty worker, and then past the limit:
+    // so only the faulty worker's chunks can time out, however slow or loaded the machine. Silo 0 is the faulty one.
+    private static string[] RunAll(TestCluster cluster)
     {
+        var clock = new FakeTimeProvider();
+        using var transport = ClusterTransport.Connect(ClusterConfig.Load(cluster.ConfigPath), clock);
+        using var pool = new BridgePool(transport, transport.Capacity);
+        Assert.Equal(4, pool.Workers); // both workers joined, two bridges each
+        var (bad, good) = (cluster.SiloAddress(0), cluster.SiloAddress(1));
         var answers = new string?[Requests];
         var counts = new int[Requests];
-        pool.ForEach(Enumerable.Range(0, Requests).ToArray(), (k, bridge) =>
+        var run = Task.Run(() => pool.ForEach(Enumerable.Range(0, Requests).ToArray(), (k, bridge) =>
         {
             var shots = bridge.Run($"Request({k})");
             Interlocked.Increment(ref counts[k]);
             answers[k] = Assert.Single(shots);
-        });
+        }));
+        // Polled in real time; the deadline only ends a test that is failing anyway.
+        var deadline = DateTime.UtcNow + TimeSpan.FromMinutes(2);
+        while (!run.Wait(20))
+        {
+            if (transport.InFlightOn(good) == 0 && transport.InFlightOn(bad) > 0)
+                clock.Advance(TimeSpan.FromSeconds(ChunkSeconds + 1));
+            Assert.True(DateTime.UtcNow < deadline, $"{counts.Sum()} of {Requests} requests answered after two minutes");
+        }
+        run.GetAwaiter().GetResult();
         Assert.All(counts, c => Assert.Equal(1, c));
+        Assert.True(transport.Retries >= 1, "no chunk was sent again, so the test proved nothing");
+        Assert.Contains("sent again after a worker failed to answer", pool.Where);
         return answers!;
     }
 
@@ -33,27 +54,23 @@ public sealed class ClusterFaultTests
     public void HangingWorkerLosesNothing()
     {
         var (hanging, good) = (new HangingExecutor(), new EchoExecutor());
-        using var cluster = new TestCluster(5, hanging, good);
-        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
-        Assert.Equal(hanging.Capacity + good.Capacity, pool.Workers);
+        using var cluster = new TestCluster(ChunkSeconds, hanging, good);
 
-        var answers = RunAll(pool);
+        var answers = RunAll(cluster);
 
         Assert.Equal(Enumerable.Range(0, Requests).Select(k => $"Request({k})"), answers);
         Assert.True(hanging.Calls >= 1, "the hanging worker was never given a chunk, so the test proved nothing");
         Assert.Equal(Requests, good.Calls); // each request answered once, by the good worker
-        Assert.Contains("sent again after a worker failed to answer", pool.Where);
     }
 
     [Fact]
     public void DyingWorkerLosesNothing()
     {
         var (dying, good) = (new DyingExecutor(), new EchoExecutor());
-        using var cluster = new TestCluster(5, dying, good);
+        using var cluster = new TestCluster(ChunkSeconds, dying, good);
         dying.Silo = cluster.Silos[0];
-        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
 
-        var answers = RunAll(pool);
+        var answers = RunAll(cluster);
 
         Assert.Equal(Enumerable.Range(0, Requests).Select(k => $"Request({k})"), answers);
         Assert.True(dying.Calls >= 1, "the dying worker was never given a chunk, so the test proved nothing");

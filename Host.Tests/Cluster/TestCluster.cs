@@ -4,6 +4,7 @@ using System.Text.Json.Nodes;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
+using Orleans.Runtime;
 using QuantumRayTracing.Cluster;
 
 namespace QuantumRayTracing.Tests.Cluster;
@@ -45,6 +46,9 @@ public sealed class TestCluster : IDisposable
     public string ConfigPath { get; }
 
     public IReadOnlyList<IHost> Silos => _silos;
+
+    /// <summary>Silo <paramref name="k"/>'s address as the cluster's clients name its worker.</summary>
+    public string SiloAddress(int k) => _silos[k].Services.GetRequiredService<ILocalSiloDetails>().SiloAddress.ToParsableString();
 
     /// <summary>Chunks a silo's grain has finished (answered or failed).</summary>
     public long Served(int silo) => _silos[silo].Services.GetRequiredService<WorkerStatistics>().Served;

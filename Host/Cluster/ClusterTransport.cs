@@ -27,16 +27,24 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     private readonly IHost _host;
     private readonly ClusterConfig _config;
     private readonly Worker[] _workers;
+    private readonly TimeProvider _clock;
     private readonly Lock _gate = new();
     private int _retries;
 
-    private ClusterTransport(IHost host, ClusterConfig config, Worker[] workers) => (_host, _config, _workers) = (host, config, workers);
+    private ClusterTransport(IHost host, ClusterConfig config, Worker[] workers, TimeProvider clock) =>
+        (_host, _config, _workers, _clock) = (host, config, workers, clock);
 
     /// <summary>Bridges over all workers.</summary>
     public int Capacity => _workers.Sum(w => w.Capacity);
 
     /// <summary>Requests sent again to another worker after one failed to answer.</summary>
     public int Retries => Volatile.Read(ref _retries);
+
+    /// <summary>Requests waiting for an answer from the worker whose silo address is <paramref name="silo"/> (Orleans' parsable form).</summary>
+    public int InFlightOn(string silo)
+    {
+        lock (_gate) return _workers.Where(w => w.Silo == silo).Sum(w => w.Busy);
+    }
 
     /// <summary>Where requests run, for reports: the cluster, its workers and bridges, and the chunks sent again so far.</summary>
     public RunPlace Place
@@ -49,8 +57,11 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         }
     }
 
-    /// <summary>Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.</summary>
-    public static ClusterTransport Connect(ClusterConfig config)
+    /// <summary>
+    /// Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.
+    /// <paramref name="chunkClock"/> measures the chunk time limit (default: the system's).
+    /// </summary>
+    public static ClusterTransport Connect(ClusterConfig config, TimeProvider? chunkClock = null)
     {
         Exception? refused = null;
         var clock = System.Diagnostics.Stopwatch.StartNew();
@@ -84,15 +95,16 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
             var client = host.Services.GetRequiredService<IClusterClient>();
             var silos = client.GetGrain<IManagementGrain>(0).GetHosts(onlyActive: true).WaitAsync(ConnectTimeout).GetAwaiter().GetResult();
             var workers = silos.Keys
-                .Select(silo => client.GetGrain<IChunkWorker>(silo.ToParsableString()))
-                .Select(grain => (grain, load: grain.Load().WaitAsync(ConnectTimeout)))
+                .Select(silo => silo.ToParsableString())
+                .Select(silo => (silo, grain: client.GetGrain<IChunkWorker>(silo)))
+                .Select(w => (w.silo, w.grain, load: w.grain.Load().WaitAsync(ConnectTimeout)))
                 .ToArray();
             var reachable = new List<Worker>();
-            foreach (var (grain, load) in workers)
+            foreach (var (silo, grain, load) in workers)
             {
                 try
                 {
-                    reachable.Add(new Worker(grain, load.GetAwaiter().GetResult().Bridges));
+                    reachable.Add(new Worker(silo, grain, load.GetAwaiter().GetResult().Bridges));
                 }
                 catch (Exception e) when (e is not OutOfMemoryException)
                 {
@@ -100,7 +112,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
                 }
             }
             if (reachable.Count == 0) throw new ClusterException($"{config.Path}: the cluster '{config.ClusterId}' at {where} has no worker that answers");
-            return new ClusterTransport(host, config, [.. reachable]);
+            return new ClusterTransport(host, config, [.. reachable], chunkClock ?? TimeProvider.System);
         }
         catch (Exception e) when (e is not ClusterException and not OutOfMemoryException)
         {
@@ -125,7 +137,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
             ChunkReply reply;
             try
             {
-                reply = worker.Grain.Run(text).WaitAsync(_config.ChunkTimeout).GetAwaiter().GetResult();
+                reply = worker.Grain.Run(text).WaitAsync(_config.ChunkTimeout, _clock).GetAwaiter().GetResult();
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
@@ -181,8 +193,9 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         _host.Dispose();
     }
 
-    private sealed class Worker(IChunkWorker grain, int capacity)
+    private sealed class Worker(string silo, IChunkWorker grain, int capacity)
     {
+        public string Silo { get; } = silo;
         public IChunkWorker Grain { get; } = grain;
         public int Capacity { get; } = Math.Max(1, capacity);
         public int Busy { get; set; }
