@@ -1,3 +1,5 @@
+using System.Text.Json.Nodes;
+
 namespace QuantumRayTracing.Tests;
 
 /// <summary>Paths inside the repository, found by walking up from the test binaries to the solution file.</summary>
@@ -6,6 +8,10 @@ public static class RepositoryPaths
     public static string Root { get; } = FindRoot();
 
     public static string Scenes => Path.Combine(Root, "Scenes");
+
+    /// <summary>The qsharp-lang version Quantum/package-lock.json installs: the QDK every bridge must report.</summary>
+    public static string LockedQdkVersion { get; } =
+        JsonNode.Parse(File.ReadAllText(Path.Combine(Root, "Quantum", "package-lock.json")))!["packages"]!["node_modules/qsharp-lang"]!["version"]!.GetValue<string>();
 
     private static string FindRoot()
     {

@@ -71,6 +71,34 @@ internal sealed record Outcome(int Code, string Output, string Error, Exception?
         return line;
     }
 
+    /// <summary>
+    /// A usage error of a command line (an option's value or a rule across options): exit code 1, one line that
+    /// names <paramref name="option"/> and says <paramref name="problem"/>, no stack trace.
+    /// </summary>
+    public string AssertUsageError(string option, string problem)
+    {
+        Assert.True(Escaped is null, $"escaped as {Escaped?.GetType().Name}: {Escaped?.Message}");
+        Assert.Equal(1, Code);
+        var line = AssertOneLine(Error.TrimEnd() + Environment.NewLine);
+        Assert.Contains(option, line);
+        Assert.Contains(problem, line);
+        AssertNoStackTrace();
+        return line;
+    }
+
+    /// <summary>Bad input that is no file's (a pixel outside the image): exit code 2, one line "error: ..." naming <paramref name="subject"/> and <paramref name="problem"/>.</summary>
+    public string AssertBadInput(string subject, string problem)
+    {
+        Assert.True(Escaped is null, $"escaped as {Escaped?.GetType().Name}: {Escaped?.Message}");
+        Assert.Equal(CommandLine.BadInput, Code);
+        var line = AssertOneLine(Error);
+        Assert.StartsWith("error: ", line);
+        Assert.Contains(subject, line);
+        Assert.Contains(problem, line);
+        AssertNoStackTrace();
+        return line;
+    }
+
     private static string AssertOneLine(string text)
     {
         Assert.EndsWith("\n", text);

@@ -30,10 +30,9 @@ public sealed class BadOutputTests : IDisposable
     /// A directory nobody may create files in. The tests run as root, which ignores a directory's mode bits, so
     /// this uses /proc/self: it exists, and the kernel refuses every new file there, to root too.
     /// </summary>
-    [Fact]
+    [LinuxFact("/proc/self, where root cannot create files")]
     public void ReadOnlyDirectory()
     {
-        if (!OperatingSystem.IsLinux()) return;
         const string output = "/proc/self/qrt-out.png";
         Render(output).AssertBadInput(output, "", "cannot write in directory /proc/self", null);
         Assert.False(File.Exists(output));
@@ -43,10 +42,9 @@ public sealed class BadOutputTests : IDisposable
     /// A directory whose permissions refuse new files, to root too (which ignores mode bits, so chmod 555 would
     /// test nothing here): sysfs answers EACCES to every file created in its root.
     /// </summary>
-    [Fact]
+    [LinuxFact("sysfs, whose root refuses new files to root too")]
     public void DirectoryWithoutWritePermission()
     {
-        if (!OperatingSystem.IsLinux()) return;
         const string output = "/sys/qrt-out.png";
         Render(output).AssertBadInput(output, "", "cannot write in directory /sys: permission denied", null);
         Assert.False(File.Exists(output));
@@ -112,10 +110,9 @@ public sealed class BadOutputTests : IDisposable
     /// A write that fails after the checks passed (a full disk, a directory made read-only meanwhile) is still
     /// one line naming the output, not an exception; written here straight into /proc/self, which refuses it.
     /// </summary>
-    [Fact]
+    [LinuxFact("/proc/self, where root cannot create files")]
     public void WriteFailureAfterTheChecksIsAUserError()
     {
-        if (!OperatingSystem.IsLinux()) return;
         const string output = "/proc/self/qrt-late.png";
         var error = Assert.Throws<UserError>(() => ImageFiles.Write([(new RgbImage(1, 1), output)]));
         Assert.StartsWith($"{output}: cannot be written", error.Message);

@@ -75,10 +75,9 @@ public sealed class BadSceneInputTests : IDisposable
     /// nobody), so this uses a file whose read fails for root too: /proc/self/mem opens, but reading it from
     /// offset 0 reads the process's unmapped address 0 and the kernel answers EIO.
     /// </summary>
-    [Fact]
+    [LinuxFact("/proc/self/mem, whose read fails for root too")]
     public void FileWhoseReadFails()
     {
-        if (!OperatingSystem.IsLinux()) return;
         AssertRefusedEverywhere("/proc/self/mem", "file", "cannot be read");
     }
 
@@ -86,10 +85,9 @@ public sealed class BadSceneInputTests : IDisposable
     /// A file without read permission, for root too (chmod 000 stops nobody as root): a bus's uevent file in
     /// sysfs is write-only, and the kernel answers EACCES to any read.
     /// </summary>
-    [Fact]
+    [LinuxFact("sysfs, whose uevent files refuse reads to root too")]
     public void FileWithoutReadPermission()
     {
-        if (!OperatingSystem.IsLinux()) return;
         AssertRefusedEverywhere("/sys/bus/platform/uevent", "file", "cannot be read (Access to the path");
     }
 }

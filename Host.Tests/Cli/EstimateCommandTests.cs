@@ -2,6 +2,7 @@ using System.Text.Json.Nodes;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Tests.BadInput;
 using QuantumRayTracing.Tests.Cluster;
 using QuantumRayTracing.Tests.Engines;
 
@@ -18,54 +19,58 @@ public sealed class EstimateCommandTests : IDisposable
     public void Dispose() => _scratch.Dispose();
 
     [Fact]
-    public void EstimatesOnePixelsRay() =>
-        Assert.Equal(0, ConsoleCapture.Run(["estimate", Scene, "--pixel", "3,4", "--size", "8", "--no-circuit", "--format", "csv", "--workers", "1"]).Code);
+    public void EstimatesOnePixelsRay()
+    {
+        var outcome = Outcome.Of("estimate", Scene, "--pixel", "3,4", "--size", "8", "--no-circuit", "--format", "csv", "--workers", "1");
+        Assert.True(outcome.Code == 0, outcome.Error);
+        Assert.Empty(outcome.Error);
+    }
 
     [Theory]
-    [InlineData("--pixel", "8,0")]  // outside the 8x8 image: bad input
-    [InlineData("--pixel", "0,8")]
-    public void PixelOutsideTheImageIsBadInput(string option, string value) =>
-        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", Scene, option, value, "--size", "8", "--workers", "1"]).Code);
+    [InlineData("8,0")]  // outside the 8x8 image: bad input
+    [InlineData("0,8")]
+    public void PixelOutsideTheImageIsBadInput(string pixel) =>
+        Outcome.Of("estimate", Scene, "--pixel", pixel, "--size", "8", "--workers", "1").AssertBadInput($"--pixel {pixel}", "is outside the 8x8 image");
 
     [Theory]
-    [InlineData("--pixel", "1,2", "--worst-case")]
-    [InlineData("--pixel", "1")]
-    [InlineData("--pixel", "-1,2")]
-    [InlineData("--oracle", "smallest")]
-    [InlineData("--models", "qubit_gate_ns_e3:floquet_code")]
-    [InlineData("--models", "qubit_gate_xx")]
-    [InlineData("--iterations", "-1")]
-    [InlineData("--iterations", "many")]
-    public void UsageErrors(params string[] options) =>
-        Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
+    [InlineData("--pixel", "choose the ray two ways", "--pixel", "1,2", "--worst-case")]
+    [InlineData("--pixel", "expected X,Y (two non-negative integers), got '1'", "--pixel", "1")]
+    [InlineData("--pixel", "expected X,Y (two non-negative integers), got '-1,2'", "--pixel", "-1,2")]
+    [InlineData("--oracle", "unknown construction 'smallest'", "--oracle", "smallest")]
+    [InlineData("--models", "the floquet_code needs a Majorana model", "--models", "qubit_gate_ns_e3:floquet_code")]
+    [InlineData("--models", "unknown qubit model 'qubit_gate_xx'", "--models", "qubit_gate_xx")]
+    [InlineData("--iterations", "must be between 0 and 100000", "--iterations", "-1")]
+    [InlineData("--iterations", "Cannot parse argument 'many'", "--iterations", "many")]
+    public void UsageErrors(string option, string problem, params string[] options) =>
+        Outcome.Of(["estimate", Scene, .. options]).AssertUsageError(option, problem);
 
     [Theory]
-    [InlineData("--error-budget", "0")]
-    [InlineData("--error-budget", "1")]
-    [InlineData("--error-budget", "-0.01")]
-    [InlineData("--error-budget", "2")]
-    [InlineData("--error-budget", "NaN")]
-    [InlineData("--error-budget", "lots")]
-    [InlineData("--qpus", "0")]
-    [InlineData("--qpus", "-3")]
-    [InlineData("--models", "qubit_gate_ns_e9")]
-    [InlineData("--models", "qubit_gate_us_e4:floquet_code")]
-    [InlineData("--pixel", "1,1")]         // one ray and a frame
-    [InlineData("--iterations", "3")]
-    [InlineData("--subpixels", "4")]
-    [InlineData("--seed", "-1")]
-    [InlineData("--passes", "0")]
-    public void FrameUsageErrors(params string[] options) =>
-        Assert.Equal(1, ConsoleCapture.Run(["estimate", "--frame", Scene, "--size", "4", .. options]).Code);
+    [InlineData("--error-budget", "must lie strictly between 0 and 1, got 0", "--error-budget", "0")]
+    [InlineData("--error-budget", "must lie strictly between 0 and 1, got 1", "--error-budget", "1")]
+    [InlineData("--error-budget", "must lie strictly between 0 and 1, got -0.01", "--error-budget", "-0.01")]
+    [InlineData("--error-budget", "must lie strictly between 0 and 1, got 2", "--error-budget", "2")]
+    [InlineData("--error-budget", "must lie strictly between 0 and 1, got NaN", "--error-budget", "NaN")]
+    [InlineData("--error-budget", "Cannot parse argument 'lots'", "--error-budget", "lots")]
+    [InlineData("--qpus", "must be at least 1, got 0", "--qpus", "0")]
+    [InlineData("--qpus", "must be at least 1, got -3", "--qpus", "-3")]
+    [InlineData("--models", "unknown qubit model 'qubit_gate_ns_e9'", "--models", "qubit_gate_ns_e9")]
+    [InlineData("--models", "the floquet_code needs a Majorana model", "--models", "qubit_gate_us_e4:floquet_code")]
+    [InlineData("--pixel", "applies to one ray's estimates", "--pixel", "1,1")] // one ray and a frame
+    [InlineData("--iterations", "applies to one ray's estimates", "--iterations", "3")]
+    [InlineData("--subpixels", "applies to one ray's estimates", "--subpixels", "4")]
+    [InlineData("--seed", "Cannot parse argument '-1'", "--seed", "-1")]
+    [InlineData("--passes", "must be at least 1, got 0", "--passes", "0")]
+    public void FrameUsageErrors(string option, string problem, params string[] options) =>
+        Outcome.Of(["estimate", "--frame", Scene, "--size", "4", .. options]).AssertUsageError(option, problem);
 
     [Theory]
-    [InlineData("--error-budget", "0.01")]
-    [InlineData("--qpus", "4")]
-    [InlineData("-o", "frame.csv")]
-    [InlineData("--passes", "2")]
-    [InlineData("--seed", "3")]
-    public void FrameOptionsNeedTheFrame(params string[] options) =>
-        Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, .. options]).Code);
+    [InlineData("--error-budget", "--error-budget", "0.01")]
+    [InlineData("--qpus", "--qpus", "4")]
+    [InlineData("--output", "-o", "frame.csv")]
+    [InlineData("--passes", "--passes", "2")]
+    [InlineData("--seed", "--seed", "3")]
+    public void FrameOptionsNeedTheFrame(string option, params string[] options) =>
+        Outcome.Of(["estimate", Scene, .. options]).AssertUsageError(option, "needs --frame");
 
     [Fact]
     public void FramePricingOnAClusterCostsTheSame()

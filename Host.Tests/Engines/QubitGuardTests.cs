@@ -1,5 +1,6 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Cli;
+using QuantumRayTracing.Tests.BadInput;
 using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
@@ -84,8 +85,8 @@ public sealed class QubitGuardTests
     }
 
     [Theory]
-    [InlineData("0")]
-    [InlineData("many")]
-    public void MaxQubitsMustBeAPositiveNumber(string value) =>
-        Assert.Equal(1, ConsoleCapture.Run(["render", "--engine", "gate", "--max-qubits", value]).Code);
+    [InlineData("0", "must be at least 1, got 0")]
+    [InlineData("many", "Cannot parse argument 'many'")]
+    public void MaxQubitsMustBeAPositiveNumber(string value, string problem) =>
+        Outcome.Of("render", "--engine", "gate", "--max-qubits", value).AssertUsageError("--max-qubits", problem);
 }

@@ -10,10 +10,11 @@ public sealed class FrameBudgetTests
     [InlineData(0.01, 113_108)]
     [InlineData(1e-6, 7)]
     [InlineData(0.5, 1_000_000_000)]
-    public void RunSharesAddUpToAtMostTheFrameBudget(double frame, long runs)
+    public void EachRunGetsTheFrameBudgetOverTheRuns(double frame, long runs)
     {
         var budget = new FrameBudget(frame, runs);
-        Assert.True(budget.PerRun > 0);
+        // Each run gets exactly ε / R: less would price every run dearer than the union bound needs.
+        Assert.Equal(frame / runs, budget.PerRun, frame / runs * 1e-12);
         // Union bound: R runs each failing with probability at most ε / R fail together with at most ε,
         // and even independent failures, 1 − (1 − ε/R)^R, stay below it.
         Assert.True(budget.PerRun * runs <= frame * (1 + 1e-12));
