@@ -14,7 +14,6 @@ namespace QuantumRayTracing.Tests.Benchmarks;
 /// stops the command with one line and its exit code before any report is written, and on a running cluster each
 /// experiment's simulator work goes to the cluster's workers.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed class BenchClusterOptionTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-bench-cluster-");

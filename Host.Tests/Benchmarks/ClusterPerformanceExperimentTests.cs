@@ -8,7 +8,6 @@ using static QuantumRayTracing.Tests.Intersection.TestScenes;
 namespace QuantumRayTracing.Tests.Benchmarks;
 
 /// <summary>`bench cluster`'s experiment against a one-worker cluster in this process: local bridges, then the cluster's, each row naming where it ran.</summary>
-[Collection(QSharpCollection.Name)]
 public sealed class ClusterPerformanceExperimentTests
 {
     [Fact]

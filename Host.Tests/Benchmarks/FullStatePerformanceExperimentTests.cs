@@ -8,7 +8,6 @@ using static QuantumRayTracing.Tests.Intersection.TestScenes;
 namespace QuantumRayTracing.Tests.Benchmarks;
 
 /// <summary>`bench fullstate`'s experiment on a pool it is given (as a cluster's): every call it counts went through that pool.</summary>
-[Collection(QSharpCollection.Name)]
 public sealed class FullStatePerformanceExperimentTests
 {
     [Fact]

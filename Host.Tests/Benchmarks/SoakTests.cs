@@ -14,7 +14,6 @@ namespace QuantumRayTracing.Tests.Benchmarks;
 /// that renders a seed differently twice, one that ignores the seed, one that finds nothing, and the
 /// gate engine's qubit limit and time budget, which skip rather than fail.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed class SoakTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-soak-");

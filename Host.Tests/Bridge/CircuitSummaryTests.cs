@@ -9,7 +9,6 @@ namespace QuantumRayTracing.Tests.Bridge;
 /// The bridge's circuit summary (Quantum/circuit-summary.mjs) on a circuit written by hand in the
 /// QDK's circuit format, against counts and depths worked out by hand.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed class CircuitSummaryTests
 {
     // H(0); CX(0 → 1); CCX(0, 1 → 2); M(2); reset(2), as getCircuit lays it out in columns.

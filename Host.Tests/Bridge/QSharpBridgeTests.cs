@@ -6,7 +6,6 @@ using QuantumRayTracing.Tests.Engines;
 namespace QuantumRayTracing.Tests.Bridge;
 
 /// <summary>Every way the bridge can fail ends in a clear exception, and a dead bridge is started again once.</summary>
-[Collection(QSharpCollection.Name)]
 public sealed class QSharpBridgeTests : IDisposable
 {
     private readonly QSharpBridge _bridge = new();

@@ -5,7 +5,6 @@ using QuantumRayTracing.Tests.Engines;
 
 namespace QuantumRayTracing.Tests.Bridge;
 
-[Collection(QSharpCollection.Name)]
 public sealed class ResourceEstimateTests : IDisposable
 {
     private readonly QSharpBridge _bridge = new();

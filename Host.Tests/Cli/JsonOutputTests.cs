@@ -14,7 +14,6 @@ namespace QuantumRayTracing.Tests.Cli;
 /// text is parsed and every figure compared with the JSON value, to the precision the text prints it with; where
 /// the work ran is compared with the printed "ran on", on this machine and on a two-worker cluster in this process.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed partial class JsonOutputTests : IDisposable
 {
     private static readonly Dictionary<string, string> NoEnvironment = [];

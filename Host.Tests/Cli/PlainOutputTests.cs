@@ -7,7 +7,6 @@ namespace QuantumRayTracing.Tests.Cli;
 /// Standard output redirected to a file or pipe (as here: the test reads it) gets no escape codes and no wrapping,
 /// even when TERM claims a colour terminal: every printed line reads as one line.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed class PlainOutputTests : IDisposable
 {
     private static readonly Dictionary<string, string> ColourTerminal = new() { ["TERM"] = "xterm-256color", ["COLUMNS"] = "80" };

@@ -5,7 +5,6 @@ using QuantumRayTracing.Tests.Output;
 namespace QuantumRayTracing.Tests.Cli;
 
 /// <summary>`supersample --engine fullstate` end to end on inputs whose outcomes are certain, so one run decides.</summary>
-[Collection(QSharpCollection.Name)]
 public sealed class SupersampleFullStateTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-supersample-fullstate-");

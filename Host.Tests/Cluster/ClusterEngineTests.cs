@@ -11,7 +11,6 @@ namespace QuantumRayTracing.Tests.Cluster;
 /// closed form and the analytic engine (false-failure probability <see cref="StatisticalBounds.FalseFailure"/>
 /// per check), with chunks served by both workers.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed class ClusterEngineTests
 {
     [Fact]

@@ -21,7 +21,6 @@ namespace QuantumRayTracing.Tests.Cluster;
 /// N, marked sets and iteration counts, cut into chunks) follow from the seed alone. They are recorded where
 /// bridges receive them: on this machine's bridges, and on the bridges of a two-worker cluster.
 /// </summary>
-[Collection(QSharpCollection.Name)]
 public sealed class ClusterSeedTests : IDisposable
 {
     // Six rectangles well to the side of a camera looking along +z: every camera ray misses them all.

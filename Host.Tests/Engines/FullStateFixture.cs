@@ -11,7 +11,7 @@ public sealed class FullStateFixture : IDisposable
     public void Dispose() => Engine.Dispose();
 }
 
-/// <summary>Tests that start Node bridges run one class at a time: the machine has two cores.</summary>
+/// <summary>Tests that share the fixture's two bridges run one class at a time: a bridge serves one request at a time.</summary>
 [CollectionDefinition(Name)]
 public sealed class QSharpCollection : ICollectionFixture<FullStateFixture>
 {

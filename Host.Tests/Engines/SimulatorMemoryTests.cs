@@ -4,7 +4,6 @@ using QuantumRayTracing.Engines;
 namespace QuantumRayTracing.Tests.Engines;
 
 /// <summary>The memory budget behind --max-qubits, checked against the real simulator.</summary>
-[Collection(QSharpCollection.Name)]
 public sealed class SimulatorMemoryTests
 {
     [Fact]
