@@ -1,4 +1,5 @@
 using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Engines;
@@ -14,7 +15,7 @@ namespace QuantumRayTracing.Tests.Benchmarks;
 /// stops the command with one line and its exit code before any report is written, and on a running cluster each
 /// experiment's simulator work goes to the cluster's workers.
 /// </summary>
-public sealed class BenchClusterOptionTests : IDisposable
+public sealed class BenchClusterOptionTests(OneWorkerCluster worker) : IClassFixture<OneWorkerCluster>, IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-bench-cluster-");
 
@@ -62,13 +63,11 @@ public sealed class BenchClusterOptionTests : IDisposable
     [Fact]
     public void ParetoRendersItsFullStateRowsOnTheCluster()
     {
-        using var worker = new WorkerBridges(1);
-        using var cluster = new TestCluster(120, worker);
-        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
+        var served = worker.Served;
         var scene = SceneLoader.Load(Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"));
-        var report = SpeedVsErrorExperiment.Run(new SpeedVsErrorSettings(scene, 1, 1, 1, pool), _ => { });
+        var report = SpeedVsErrorExperiment.Run(new SpeedVsErrorSettings(scene, 1, 1, 1, worker.Pool), _ => { });
 
-        Assert.True(cluster.Served(0) > 0, "the full-state renders should have sent their chunks to the worker");
+        Assert.True(worker.Served > served, "the full-state renders should have sent their chunks to the worker");
         var rows = report.Table("points").Rows;
         Assert.Equal(SpeedVsErrorExperiment.Engines.Length * SpeedVsErrorExperiment.Configurations(1, 1).Count, rows.Count);
         Assert.Contains(rows, r => r[0] == "fullstate");
@@ -77,13 +76,11 @@ public sealed class BenchClusterOptionTests : IDisposable
     [Fact]
     public void GroverTimesItsAllBridgesColumnOnTheCluster()
     {
-        using var worker = new WorkerBridges(1);
-        using var cluster = new TestCluster(120, worker);
-        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
-        var report = GroverPerformanceExperiment.Run(new GroverPerformanceSettings([8], [1, 3], 1, 1, pool), _ => { });
+        var served = worker.Served;
+        var report = GroverPerformanceExperiment.Run(new GroverPerformanceSettings([8], [1, 3], 1, 1, worker.Pool), _ => { });
 
         // A warm-up call and 9 timed calls (batch 1), then a warm-up and 3 timed calls (batch 3).
-        Assert.Equal(14, cluster.Served(0));
+        Assert.Equal(14, worker.Served - served);
         var table = report.Table("runs");
         Assert.Equal("fullstate, 1 cluster bridge: ms/run", table.Header[4]);
         Assert.Equal([["8", "2", "1"], ["8", "2", "3"]], table.Rows.Select(r => r[..3]));
@@ -92,31 +89,52 @@ public sealed class BenchClusterOptionTests : IDisposable
     [Fact]
     public void SoakRendersItsSimulatorRowsOnTheCluster()
     {
-        using var worker = new WorkerBridges(1);
-        using var cluster = new TestCluster(120, worker);
-        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
-        var settings = SoakSettings.Short(1) with { Engines = [EngineKind.FullState, EngineKind.Gate], Pool = pool };
+        var served = worker.Served;
+        var settings = SoakSettings.Short(1) with { Engines = [EngineKind.FullState, EngineKind.Gate], Pool = worker.Pool };
         var result = SoakExperiment.Run([Path.Combine(RepositoryPaths.Scenes, "qornell-8.json")], settings);
 
         Assert.All(result.Rows, r => Assert.Equal(SoakStatus.Ok, r.Status));
-        Assert.True(cluster.Served(0) > 0, "the fullstate and gate renders should have sent their chunks to the worker");
+        Assert.True(worker.Served > served, "the fullstate and gate renders should have sent their chunks to the worker");
         Assert.Equal(2, result.Report.Table("soak").Rows.Count);
     }
 
     [Fact]
     public void NoiseRunsItsDeviceExperimentOnTheCluster()
     {
-        using var worker = new WorkerBridges(1);
-        using var cluster = new TestCluster(120, worker);
-        using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
-        var settings = new NoiseBenchSettings(new HashSet<string> { "device" }, 100, 16, [], 8, 0, [], 1, pool);
+        var served = worker.Served;
+        var settings = new NoiseBenchSettings(new HashSet<string> { "device" }, 100, 16, [], 8, 0, [], 1, worker.Pool);
         var (report, machine) = NoiseExperiment.Run(settings, _ => { });
 
-        Assert.True(cluster.Served(0) > 0, "the device experiment's gate-level runs should have gone to the worker");
+        Assert.True(worker.Served > served, "the device experiment's gate-level runs should have gone to the worker");
         var rows = report.Table("device-histograms").Rows;
         Assert.Equal(NoiseBenchSettings.DeviceRates.Length, rows.Count);
         // Each row: the rate, the share of each of the 4 indices (16 shots), the distance from uniform.
         Assert.All(rows, r => Assert.Equal(1.0, r[1..5].Sum(share => double.Parse(share, System.Globalization.CultureInfo.InvariantCulture)), 2));
         Assert.Contains("qsharp-lang", machine, StringComparison.Ordinal);
+    }
+}
+
+/// <summary>One worker with one bridge in a localhost cluster, and a client's pool over it, shared by a test class.</summary>
+public sealed class OneWorkerCluster : IDisposable
+{
+    private readonly WorkerBridges _bridges = new(1);
+    private readonly TestCluster _cluster;
+
+    public OneWorkerCluster()
+    {
+        _cluster = new TestCluster(120, _bridges);
+        Pool = ClusterBridges.Start(_cluster.ConfigPath, 1);
+    }
+
+    public BridgePool Pool { get; }
+
+    /// <summary>Chunks the worker has finished so far.</summary>
+    public long Served => _cluster.Served(0);
+
+    public void Dispose()
+    {
+        Pool.Dispose();
+        _cluster.Dispose();
+        _bridges.Dispose();
     }
 }
