@@ -1,4 +1,5 @@
 using QuantumRayTracing.Metrics;
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
@@ -67,13 +68,11 @@ public static class AccuracyBenchmark
         foreach (var seed in seeds)
         {
             var scene = RandomScene.Build(kind, seed);
-            using var classical = new ClassicalHitSearch();
-            var reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(new RenderOptions(size, size, Seed: seed)));
+            var reference = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Reference(new RenderOptions(size, size, Seed: seed)));
             for (var c = 0; c < configurations.Count; c++)
             {
                 var options = configurations[c].Options(size, seed);
-                using var search = HitSearchFactory.Create(Engines.EngineKind.Analytic, new SeededRandom(seed), 1, configurations[c].QSearch);
-                var result = SceneRenderer.Render(scene, search, options);
+                var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic, configurations[c].QSearch), options);
                 var error = ImageError.Between(result.Image, reference.Image);
                 var total = result.Total;
                 cells[c] = cells[c] with

@@ -28,9 +28,9 @@ public static class ClusterPerformanceExperiment
         var clusterTrip = ClusterBenchmark.RoundTripMilliseconds(cluster, settings.Requests);
         // Local first, then the cluster, each after the round trips started its bridges.
         progress("fullstate render on local bridges");
-        var onLocal = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, settings.Workers, reference, pool: local);
+        var onLocal = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.FullState, new QSearchOptions(), settings.Workers, Pool: local), options, reference);
         progress("fullstate render on the cluster");
-        var onCluster = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, settings.Workers, reference, pool: cluster);
+        var onCluster = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.FullState, new QSearchOptions(), settings.Workers, Pool: cluster), options, reference);
 
         var report = new Report(Title);
         report.Text($"Fullstate render of {scene.Name} at {size}x{size}, seed {seed}, `render`'s default pipeline; one run each, local first. "

@@ -29,7 +29,7 @@ public static class OptimisedTracingExperiment
         var paperOptimised = plain with { Iterations = 8, Neighbours = true, Stop = StopMode.Paper };
         var best = RenderDefaults.Options(size, size, seed);
         RenderMeasurement Measure(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch) =>
-            RenderMeasurement.Run(scene, kind, options, qsearch, seed, settings.Workers, RenderMeasurement.Reference(scene, options));
+            RenderMeasurement.Run(scene, new EngineSetup(kind, qsearch, settings.Workers), options, RenderMeasurement.Reference(scene, options));
 
         var report = new Report(Title);
         report.Text($"""

@@ -50,7 +50,7 @@ public static class SpeedVsErrorExperiment
             {
                 progress($"{EngineFactory.Name(kind)}: {name} ({points.Count + 1}/{Engines.Length * configurations.Count})");
                 var reference = RenderMeasurement.Reference(scene, options);
-                var m = RenderMeasurement.Run(scene, kind, options, new QSearchOptions(), seed, settings.Workers, reference, pool: settings.Pool);
+                var m = RenderMeasurement.Run(scene, new EngineSetup(kind, new QSearchOptions(), settings.Workers, Pool: settings.Pool), options, reference);
                 points.Add(new(EngineFactory.Name(kind), name, m.Result.Total.PerRayConservative, m.WallTime.TotalSeconds, m.Error.Nrmse, m.Error.DifferentPixels));
             }
 
