@@ -56,7 +56,7 @@ public static class AccuracyExperiment
         foreach (var size in new[] { 8, 128 })
         {
             progress($"qornell-64, {size}x{size}");
-            var reference = RenderMeasurement.Reference(settings.Qornell, new RenderOptions(size, size));
+            var reference = RenderMeasurement.Reference(settings.Qornell, RenderOptions.PaperPipeline(size, size));
             foreach (var c in configurations)
             {
                 var m = RenderMeasurement.Run(settings.Qornell, new EngineSetup(EngineKind.Analytic, c.QSearch), c.Options(size, 1), reference);

@@ -38,12 +38,12 @@ public static class LightsExperiment
     ];
 
     /// <summary>The names of the images a run with images writes beside its report.</summary>
-    public static IEnumerable<string> ImageNames => Cases(new RenderOptions(1, 1)).SelectMany(c => Renders.Select(r => $"{c.Key}-{r.Render}"));
+    public static IEnumerable<string> ImageNames => Cases(RenderOptions.PaperPipeline(1, 1)).SelectMany(c => Renders.Select(r => $"{c.Key}-{r.Render}"));
 
     public static Report Run(LightsSettings settings, Action<string> progress)
     {
         var (size, seed, referenceSamples) = (settings.Size, settings.Seed, settings.ReferenceSamples);
-        var cases = Cases(new RenderOptions(size, size, Seed: seed));
+        var cases = Cases(RenderOptions.PaperPipeline(size, size, seed));
         var scenes = cases.ToDictionary(c => c.Key, c => settings.Scene(c.Stem));
 
         var report = new Report(Title);
@@ -112,7 +112,7 @@ public static class LightsExperiment
     }
 
     // Our default pipeline: what `render` uses with no options.
-    private static RenderOptions Default(RenderOptions options) => RenderDefaults.Options(options.Width, options.Height, options.Seed) with
+    private static RenderOptions Default(RenderOptions options) => RenderDefaults.CommandLine(options.Width, options.Height, options.Seed) with
     {
         AreaSamples = options.AreaSamples, Vpl = options.Vpl,
     };

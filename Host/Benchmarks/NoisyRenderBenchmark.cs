@@ -85,7 +85,7 @@ public static class NoisyRenderBenchmark
     public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes };
 
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
-    public static RenderOptions Defaults(int size) => RenderDefaults.Options(size, size);
+    public static RenderOptions Defaults(int size) => RenderDefaults.CommandLine(size, size);
 
     /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size; on <paramref name="pool"/> when given.</summary>
     public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical, Bridge.BridgePool? pool = null) =>

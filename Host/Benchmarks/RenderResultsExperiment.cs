@@ -37,7 +37,7 @@ public static class RenderResultsExperiment
         {
             progress($"table 2: {stem} ({k + 1}/{stems.Length})");
             var scene = settings.Scene(stem);
-            var options = new RenderOptions(size, size, PaperNumbers.ScalabilityIterations(stem), Seed: seed);
+            var options = RenderOptions.PaperPipeline(size, size, seed) with { Iterations = PaperNumbers.ScalabilityIterations(stem) };
             var reference = RenderMeasurement.Reference(scene, options);
             var paper = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, paperRule, workers), options, reference);
             var ours = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, ourRule, workers), options, reference);
@@ -56,7 +56,7 @@ public static class RenderResultsExperiment
             foreach (var row in rows)
             {
                 progress($"table 3: {stem}, {row.Iterations} iterations");
-                var options = new RenderOptions(size, size, row.Iterations, Seed: seed);
+                var options = RenderOptions.PaperPipeline(size, size, seed) with { Iterations = row.Iterations };
                 var reference = RenderMeasurement.Reference(scene, options);
                 var paper = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, paperRule, workers), options, reference);
                 var ours = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, ourRule, workers), options, reference);
@@ -68,11 +68,11 @@ public static class RenderResultsExperiment
 
         var engineSize = settings.EngineSize;
         CompareEngines(report, settings, "engines", $"Engines side by side (qornell-64, {engineSize}x{engineSize}, 4 passes, conservative count, default M rule)", null,
-            settings.Scene("qornell-64"), new RenderOptions(engineSize, engineSize, Seed: settings.Seed),
+            settings.Scene("qornell-64"), RenderOptions.PaperPipeline(engineSize, engineSize, settings.Seed),
             [EngineKind.Classical, EngineKind.Randomized, EngineKind.Analytic, EngineKind.FullState], ourRule, progress);
         CompareEngines(report, settings, "gate-oracle", "The gate-level oracle against the lookup form (qornell-8, 8x8, 4 passes)",
             "The same searches with the oracle built from comparators (`gate`) and from the marked set (`fullstate`), both on the QDK simulator.",
-            settings.Scene("qornell-8"), new RenderOptions(8, 8, Seed: settings.Seed), [EngineKind.Gate, EngineKind.FullState], ourRule, progress);
+            settings.Scene("qornell-8"), RenderOptions.PaperPipeline(8, 8, settings.Seed), [EngineKind.Gate, EngineKind.FullState], ourRule, progress);
         return report;
     }
 

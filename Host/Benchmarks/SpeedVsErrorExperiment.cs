@@ -27,7 +27,7 @@ public static class SpeedVsErrorExperiment
     /// <summary>The pipeline configurations measured: plain rounds, neighbours, termination and the lattice with several cheap-confirmation misses.</summary>
     public static IReadOnlyList<(string Name, RenderOptions Options)> Configurations(int size, ulong seed)
     {
-        var plain = new RenderOptions(size, size, Seed: seed);
+        var plain = RenderOptions.PaperPipeline(size, size, seed);
         var configurations = new List<(string Name, RenderOptions Options)>();
         for (var it = 1; it <= 5; it++) configurations.Add(($"base, #IT {it}", plain with { Iterations = it }));
         for (var it = 1; it <= 3; it++) configurations.Add(($"neighbours, #IT {it}", plain with { Iterations = it, Neighbours = true }));

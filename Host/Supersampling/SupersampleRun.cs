@@ -102,7 +102,7 @@ public static class SupersampleRun
         RgbImage rendered;
         try
         {
-            rendered = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), new RenderOptions(width * s, height * s), progress?.Start("classical render")).Image;
+            rendered = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderOptions.PaperPipeline(width * s, height * s), progress?.Start("classical render")).Image;
         }
         finally
         {
