@@ -34,8 +34,5 @@ public static class EngineCapabilities
 
         /// <summary>Its searches draw from the seed, so another seed gives another render.</summary>
         public bool DrawsFromSeed => kind.IsSeedable && !kind.IsExact;
-
-        /// <summary>The widest circuit it simulates unless told otherwise; null keeps the engine's own measure.</summary>
-        public int? DefaultMaxQubits => kind.SimulatesOracleGates ? GateEngine.DefaultMaxQubits : null;
     }
 }
