@@ -25,7 +25,7 @@ public sealed class FullStateBenchmarkTests : IDisposable
         var output = _scratch.File("default.png");
         var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
         Assert.Equal(0, ConsoleCapture.Run("render", scene, "--engine", "analytic", "--size", "12", "--seed", "3", "-o", output).Code);
-        using var search = HitSearchFactory.Create(EngineKind.Analytic, new SeededRandom(3), 1, new QSearchOptions());
+        using var search = EngineFactory.CreateSearch(EngineKind.Analytic, new SeededRandom(3), 1, new QSearchOptions());
         var image = SceneRenderer.Render(Load("qornell-8.json"), search, FullStateBenchmark.DefaultPipeline(12, 3)).Image;
         Assert.True(ImageReader.Read(output).Pixels.SequenceEqual(image.Pixels));
     }

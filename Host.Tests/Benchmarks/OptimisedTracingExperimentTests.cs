@@ -25,7 +25,7 @@ public sealed class OptimisedTracingExperimentTests
         // The same render, seeded alike: the analytic engine gives the same image and counts for the same seed.
         var scene = Load("depth-complexity-64");
         var options = new RenderOptions(2, 2, Seed: 7) with { Iterations = 3, Neighbours = true };
-        var m = RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(Rule: MSetRule.Round), 7, 1, RenderMeasurement.Reference(scene, options));
+        var m = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(Rule: MSetRule.Round)), options, RenderMeasurement.Reference(scene, options));
         Assert.Equal(m.Result.Total.PerRayPaper.ToString("0.0", CultureInfo.InvariantCulture), table.Cell(row, "Int/Ray"));
         Assert.Equal(m.Error.DifferentPixels.ToString(CultureInfo.InvariantCulture), table.Cell(row, "#Dpix"));
         Assert.Equal(m.Result.Total.UpdatedPixels.ToString(CultureInfo.InvariantCulture), table.Cell(row, "#Cpix"));

@@ -3,6 +3,7 @@ using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Tests.Engines;
 
@@ -30,7 +31,11 @@ public sealed class SoakTests : IDisposable
     private static IReadOnlyList<SoakRow> Run(IReadOnlyList<string> files, SoakSettings settings, Func<EngineKind, ulong, IHitSearch>? searches = null)
     {
         using var engines = new SoakEngines(settings.Workers, settings.MaxQubits);
-        return Soak.Run(files, settings, searches ?? engines.Create);
+        return Soak.Run(files, settings, searches is null ? engines.Render : (scene, kind, options, progress) =>
+        {
+            using var search = searches(kind, options.Seed);
+            return SceneRenderer.Render(scene, search, options, progress);
+        });
     }
 
     private static SoakRow Row(IReadOnlyList<SoakRow> rows, string scene, EngineKind kind) =>
@@ -44,7 +49,7 @@ public sealed class SoakTests : IDisposable
 
         Assert.Equal(files.Length * SoakSettings.AllEngines.Length, rows.Count);
         Assert.All(rows, r => Assert.NotEqual(SoakStatus.Failed, r.Status));
-        foreach (var row in rows.Where(r => SoakSettings.IsSeedable(r.Engine!.Value)))
+        foreach (var row in rows.Where(r => r.Engine!.Value.IsSeedable))
         {
             // Both seeds rendered twice and compared byte for byte; the seed's effect checked.
             Assert.Equal(SoakStatus.Ok, row.Status);
@@ -78,7 +83,7 @@ public sealed class SoakTests : IDisposable
     {
         var rows = Run(TwoScenes, Seedable, (kind, seed) => kind == EngineKind.Randomized
             ? new Faulty(new ClassicalHitSearch(), _ => throw new InvalidOperationException("injected fault"))
-            : HitSearchFactory.Create(kind, new SeededRandom(seed), 1, new QSearchOptions()));
+            : EngineFactory.CreateSearch(kind, new SeededRandom(seed), 1, new QSearchOptions()));
 
         var failed = rows.Where(r => r.Status == SoakStatus.Failed).ToArray();
         Assert.Equal(2, failed.Length);
@@ -96,7 +101,7 @@ public sealed class SoakTests : IDisposable
         // Each render gets a fresh seed whatever it asked for, as an engine with a clock-seeded generator would.
         ulong renders = 100;
         var rows = Run([Scene("qornell-8")], Seedable with { Engines = [EngineKind.Analytic] },
-            (kind, _) => new SoakEngines(1).Create(kind, ++renders));
+            (kind, _) => EngineFactory.CreateSearch(kind, new SeededRandom(++renders), 1, new QSearchOptions()));
 
         var row = Assert.Single(rows);
         Assert.Equal(SoakStatus.Failed, row.Status);
@@ -128,7 +133,7 @@ public sealed class SoakTests : IDisposable
     public void AClassicalEngineThatDependsOnTheSeedFails()
     {
         var rows = Run([Scene("qornell-8")], Seedable with { Engines = [EngineKind.Classical] },
-            (_, seed) => HitSearchFactory.Create(EngineKind.Randomized, new SeededRandom(seed), 1, new QSearchOptions()));
+            (_, seed) => EngineFactory.CreateSearch(EngineKind.Randomized, new SeededRandom(seed), 1, new QSearchOptions()));
 
         var row = Assert.Single(rows);
         Assert.Equal(SoakStatus.Failed, row.Status);

@@ -27,7 +27,7 @@ public sealed class FrameRecordingTests
         var recording = FrameRecording.Record(scene, options, new QSearchOptions());
 
         // The render `render` makes: its own hit search, built the way the command builds it.
-        using var search = HitSearchFactory.Create(EngineKind.Analytic, new SeededRandom(seed), 1, new QSearchOptions());
+        using var search = EngineFactory.CreateSearch(EngineKind.Analytic, new SeededRandom(seed), 1, new QSearchOptions());
         var render = SceneRenderer.Render(scene, search, options);
         Assert.Equal(render.Image.Pixels.ToArray(), recording.Render.Image.Pixels.ToArray());
 

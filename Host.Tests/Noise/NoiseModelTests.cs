@@ -106,7 +106,7 @@ public sealed class NoiseModelTests : IDisposable
         double Nrmse(NoiseModel noise)
         {
             var scene = TestScenes.Load("qornell-64.json");
-            using var search = HitSearchFactory.Create(EngineKind.Analytic, new SeededRandom(3), 1, new QSearchOptions(), noise: noise);
+            using var search = EngineFactory.CreateSearch(EngineKind.Analytic, new SeededRandom(3), 1, new QSearchOptions(), noise: noise);
             using var classical = new ClassicalHitSearch();
             var options = new RenderOptions(16, 16);
             return ImageError.Between(SceneRenderer.Render(scene, search, options).Image, SceneRenderer.Render(scene, classical, options).Image).Nrmse;

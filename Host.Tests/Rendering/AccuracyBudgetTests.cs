@@ -50,7 +50,7 @@ public sealed class AccuracyBudgetTests
     [Fact]
     public void ThePipelineBeforeTheBudgetFailsTheCheck()
     {
-        var before = new AccuracyConfiguration("before", (size, seed) => RenderDefaults.Options(size, size, seed) with
+        var before = new AccuracyConfiguration("before", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with
         {
             LatticeLevels = RenderDefaults.LatticeLevels, RequiredMisses = 1, Iterations = RenderOptions.DefaultIterations,
         }, new QSearchOptions());

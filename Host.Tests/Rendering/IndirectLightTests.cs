@@ -1,3 +1,4 @@
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
 using QuantumRayTracing.Rendering;

@@ -24,7 +24,7 @@ public class SampledLightRenderTests
 
     private static RenderResult Render(Scene scene, EngineKind kind, ulong seed, RenderOptions options)
     {
-        using var search = HitSearchFactory.Create(kind, new SeededRandom(seed), 1, new QSearchOptions());
+        using var search = EngineFactory.CreateSearch(kind, new SeededRandom(seed), 1, new QSearchOptions());
         return SceneRenderer.Render(scene, search, options with { Seed = seed });
     }
 

@@ -24,7 +24,7 @@ public class SceneRendererTests
 
     private static RenderResult Render(Scene scene, EngineKind kind, ulong seed, RenderOptions options)
     {
-        using var search = HitSearchFactory.Create(kind, new SeededRandom(seed), 1, new QSearchOptions());
+        using var search = EngineFactory.CreateSearch(kind, new SeededRandom(seed), 1, new QSearchOptions());
         return SceneRenderer.Render(scene, search, options);
     }
 
@@ -50,7 +50,7 @@ public class SceneRendererTests
 
     // `render`'s default pipeline takes more from the seed than the searches: the termination rule's draws
     // (seeded by the options, as `render --seed` sets them) and the lattice's planned confirmations.
-    private static RenderOptions Pipeline(ulong seed) => RenderDefaults.Options(16, 16, seed);
+    private static RenderOptions Pipeline(ulong seed) => RenderDefaults.CommandLine(16, 16, seed);
 
     // A render's cost pass by pass, without wall times.
     private static object[] Costs(RenderResult result) => result.Passes.Select(p => (object)(p.Name, p.Rays, p.Iterations, p.Cost, p.UpdatedPixels)).ToArray();

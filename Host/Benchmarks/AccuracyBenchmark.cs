@@ -1,4 +1,5 @@
 using QuantumRayTracing.Metrics;
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
@@ -34,9 +35,9 @@ public static class AccuracyBenchmark
     /// <summary>Our default, the default without the lattice, and the paper's plain pipeline (4 rounds, 2 shadow rounds, no optimisation, its M sets).</summary>
     public static IReadOnlyList<AccuracyConfiguration> Standard { get; } =
     [
-        new("default", (size, seed) => RenderDefaults.Options(size, size, seed), new QSearchOptions()),
-        new("--lattice 0", (size, seed) => RenderDefaults.Options(size, size, seed) with { LatticeLevels = 0 }, new QSearchOptions()),
-        new("paper, plain", (size, seed) => new RenderOptions(size, size, Seed: seed), new QSearchOptions(Rule: MSetRule.Round)),
+        new("default", (size, seed) => RenderDefaults.CommandLine(size, size, seed), new QSearchOptions()),
+        new("--lattice 0", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { LatticeLevels = 0 }, new QSearchOptions()),
+        new("paper, plain", (size, seed) => RenderOptions.PaperPipeline(size, size, seed), new QSearchOptions(Rule: MSetRule.Round)),
     ];
 
     /// <summary>
@@ -48,16 +49,16 @@ public static class AccuracyBenchmark
     public static IReadOnlyList<AccuracyConfiguration> Alternatives { get; } =
     [
         Standard[0],
-        new("4 levels at every size, 1 miss, 4 rounds", (size, seed) => RenderDefaults.Options(size, size, seed) with
+        new("4 levels at every size, 1 miss, 4 rounds", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with
         {
             LatticeLevels = RenderDefaults.LatticeLevels, RequiredMisses = 1, Iterations = RenderOptions.DefaultIterations,
         }, new QSearchOptions()),
-        new("default, 1 required miss", (size, seed) => RenderDefaults.Options(size, size, seed) with { RequiredMisses = 1 }, new QSearchOptions()),
-        new("default, one level fewer", (size, seed) => RenderDefaults.Options(size, size, seed) with
+        new("default, 1 required miss", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { RequiredMisses = 1 }, new QSearchOptions()),
+        new("default, one level fewer", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with
         {
             LatticeLevels = Math.Max(0, RenderDefaults.LatticeLevelsFor(size, size) - 1),
         }, new QSearchOptions()),
-        new("default, --agreed-miss 0.2", (size, seed) => RenderDefaults.Options(size, size, seed) with { AgreedMiss = 0.2 }, new QSearchOptions()),
+        new("default, --agreed-miss 0.2", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { AgreedMiss = 0.2 }, new QSearchOptions()),
     ];
 
     public static IReadOnlyList<AccuracyCell> Measure(
@@ -67,13 +68,11 @@ public static class AccuracyBenchmark
         foreach (var seed in seeds)
         {
             var scene = RandomScene.Build(kind, seed);
-            using var classical = new ClassicalHitSearch();
-            var reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(new RenderOptions(size, size, Seed: seed)));
+            var reference = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Reference(RenderOptions.PaperPipeline(size, size, seed)));
             for (var c = 0; c < configurations.Count; c++)
             {
                 var options = configurations[c].Options(size, seed);
-                using var search = HitSearchFactory.Create(Engines.EngineKind.Analytic, new SeededRandom(seed), 1, configurations[c].QSearch);
-                var result = SceneRenderer.Render(scene, search, options);
+                var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic, configurations[c].QSearch), options);
                 var error = ImageError.Between(result.Image, reference.Image);
                 var total = result.Total;
                 cells[c] = cells[c] with

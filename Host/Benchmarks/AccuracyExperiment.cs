@@ -56,10 +56,10 @@ public static class AccuracyExperiment
         foreach (var size in new[] { 8, 128 })
         {
             progress($"qornell-64, {size}x{size}");
-            var reference = RenderMeasurement.Reference(settings.Qornell, new RenderOptions(size, size));
+            var reference = RenderMeasurement.Reference(settings.Qornell, RenderOptions.PaperPipeline(size, size));
             foreach (var c in configurations)
             {
-                var m = RenderMeasurement.Run(settings.Qornell, EngineKind.Analytic, c.Options(size, 1), c.QSearch, 1, 1, reference);
+                var m = RenderMeasurement.Run(settings.Qornell, new EngineSetup(EngineKind.Analytic, c.QSearch), c.Options(size, 1), reference);
                 var expected = c == configurations[0] ? Invariant($"{m.Result.Budget.ExpectedWrongPixels:0.0}") : "";
                 qornell.Row($"{size}x{size}", c.Name, Invariant($"{m.Error.DifferentPixels} of {size * size:N0}"), Invariant($"{m.Result.Total.PerRayConservative:0.00}"), expected);
             }

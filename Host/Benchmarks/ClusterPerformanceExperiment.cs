@@ -18,7 +18,7 @@ public static class ClusterPerformanceExperiment
     public static Report Run(ClusterPerformanceSettings settings, Action<string> progress)
     {
         var (scene, size, seed, cluster) = (settings.Scene, settings.Size, settings.Seed, settings.Cluster);
-        var options = RenderDefaults.Options(size, size, seed);
+        var options = RenderDefaults.CommandLine(size, size, seed);
         progress($"classical reference of {scene.Name} at {size}x{size}");
         var reference = RenderMeasurement.Reference(scene, options);
         using var local = new BridgePool(settings.Workers);
@@ -28,9 +28,9 @@ public static class ClusterPerformanceExperiment
         var clusterTrip = ClusterBenchmark.RoundTripMilliseconds(cluster, settings.Requests);
         // Local first, then the cluster, each after the round trips started its bridges.
         progress("fullstate render on local bridges");
-        var onLocal = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, settings.Workers, reference, pool: local);
+        var onLocal = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.FullState, new QSearchOptions(), settings.Workers, Pool: local), options, reference);
         progress("fullstate render on the cluster");
-        var onCluster = RenderMeasurement.Run(scene, EngineKind.FullState, options, new QSearchOptions(), seed, settings.Workers, reference, pool: cluster);
+        var onCluster = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.FullState, new QSearchOptions(), settings.Workers, Pool: cluster), options, reference);
 
         var report = new Report(Title);
         report.Text($"Fullstate render of {scene.Name} at {size}x{size}, seed {seed}, `render`'s default pipeline; one run each, local first. "

@@ -40,7 +40,7 @@ public static class FullStateBenchmark
     }
 
     /// <summary>The `render` command's default pipeline at <paramref name="size"/>², seed <paramref name="seed"/>.</summary>
-    public static RenderOptions DefaultPipeline(int size, ulong seed) => RenderDefaults.Options(size, size, seed);
+    public static RenderOptions DefaultPipeline(int size, ulong seed) => RenderDefaults.CommandLine(size, size, seed);
 
     /// <summary>
     /// The fixed cost of one call on this bridge: the median of <paramref name="repeats"/> calls that simulate one

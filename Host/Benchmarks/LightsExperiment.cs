@@ -38,12 +38,12 @@ public static class LightsExperiment
     ];
 
     /// <summary>The names of the images a run with images writes beside its report.</summary>
-    public static IEnumerable<string> ImageNames => Cases(new RenderOptions(1, 1)).SelectMany(c => Renders.Select(r => $"{c.Key}-{r.Render}"));
+    public static IEnumerable<string> ImageNames => Cases(RenderOptions.PaperPipeline(1, 1)).SelectMany(c => Renders.Select(r => $"{c.Key}-{r.Render}"));
 
     public static Report Run(LightsSettings settings, Action<string> progress)
     {
         var (size, seed, referenceSamples) = (settings.Size, settings.Seed, settings.ReferenceSamples);
-        var cases = Cases(new RenderOptions(size, size, Seed: seed));
+        var cases = Cases(RenderOptions.PaperPipeline(size, size, seed));
         var scenes = cases.ToDictionary(c => c.Key, c => settings.Scene(c.Stem));
 
         var report = new Report(Title);
@@ -57,13 +57,13 @@ public static class LightsExperiment
 
         // A small render first on each engine, so the first measured row does not pay for JIT compilation.
         foreach (var row in Rows(cases[0].Options with { Width = 8, Height = 8 }))
-            RenderMeasurement.Run(scenes[cases[0].Key], row.Engine, row.Options, row.QSearch, seed, 1, null);
+            RenderMeasurement.Run(scenes[cases[0].Key], new EngineSetup(row.Engine, row.QSearch), row.Options, null);
         foreach (var c in cases)
         {
             var scene = scenes[c.Key];
             progress($"{c.Key}: references");
             var sameSamples = RenderMeasurement.Reference(scene, c.Options);
-            var converged = RenderMeasurement.Run(scene, EngineKind.Classical, RenderDefaults.Converged(c.Options, referenceSamples), new QSearchOptions(), seed, 1, null);
+            var converged = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Converged(c.Options, referenceSamples), null);
             report.Heading($"{c.Title} ({c.Samples}; paper: {F(c.Paper.Quantum)} Int/Ray against {F(c.Paper.Classical)} classically)");
             var table = new TextTable(c.Key, ["pipeline", "engine", "Int/Ray, conservative", "Int/Ray, paper count", .. c.SampledPasses.Select(p => $"`{p}` pass Int/Ray"),
                 "NRMSE, same samples", "#Dpix, same samples", "NRMSE, converged", "#Dpix, converged", "wall time"]);
@@ -71,7 +71,7 @@ public static class LightsExperiment
             foreach (var row in Rows(c.Options))
             {
                 progress($"{c.Key}: {row.Name} on {EngineFactory.Name(row.Engine)}");
-                var m = RenderMeasurement.Run(scene, row.Engine, row.Options, row.QSearch, seed, 1, sameSamples);
+                var m = RenderMeasurement.Run(scene, new EngineSetup(row.Engine, row.QSearch), row.Options, sameSamples);
                 ours ??= m;
                 var toConverged = ImageError.Between(m.Result.Image, converged.Result.Image);
                 var passes = c.SampledPasses.Select(name => m.Result.Passes.Single(p => p.Name == name))
@@ -89,9 +89,9 @@ public static class LightsExperiment
             if (settings.ImageSize is not { } imageSize) continue;
             progress($"{c.Key}: images");
             var small = c.Options with { Width = imageSize, Height = imageSize };
-            var quantum = RenderMeasurement.Run(scene, EngineKind.Analytic, Default(small), new QSearchOptions(), seed, 1, null);
+            var quantum = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), Default(small), null);
             var classical = RenderMeasurement.Reference(scene, small);
-            var reference = RenderMeasurement.Run(scene, EngineKind.Classical, RenderDefaults.Converged(small, referenceSamples), new QSearchOptions(), seed, 1, null);
+            var reference = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Converged(small, referenceSamples), null);
             report.Text($"""
                 {imageSize}x{imageSize}: our default quantum pipeline, the classical render with the same samples, the converged classical reference ({referenceSamples} samples);
                 NRMSE against the converged reference {P(ImageError.Between(quantum.Result.Image, reference.Result.Image).Nrmse)} (quantum) and {P(ImageError.Between(classical.Result.Image, reference.Result.Image).Nrmse)} (classical, same samples).
@@ -112,7 +112,7 @@ public static class LightsExperiment
     }
 
     // Our default pipeline: what `render` uses with no options.
-    private static RenderOptions Default(RenderOptions options) => RenderDefaults.Options(options.Width, options.Height, options.Seed) with
+    private static RenderOptions Default(RenderOptions options) => RenderDefaults.CommandLine(options.Width, options.Height, options.Seed) with
     {
         AreaSamples = options.AreaSamples, Vpl = options.Vpl,
     };

@@ -66,7 +66,7 @@ public static class NoiseBenchmark
                 foreach (var p in settings.ConfirmRates)
                 {
                     Say($"{name} at {settings.ConfirmSize}x{settings.ConfirmSize}: analytic and fullstate, p = {p}");
-                    var analytic = RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, classical, NoiseModel.Depolarizing(p));
+                    var analytic = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p)), options, classical);
                     confirmations.Add((name, p, analytic, NoisyRenderBenchmark.FullState(scene, settings.ConfirmSize, p, settings.Workers, classical, settings.Pool)));
                 }
             }

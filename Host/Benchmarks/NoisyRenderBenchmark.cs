@@ -57,13 +57,13 @@ public static class NoisyRenderBenchmark
         var options = Defaults(size);
         var classical = RenderMeasurement.Reference(scene, options);
         // One untimed render first, so the first timed one does not pay for loading and compiling the code.
-        RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, null);
+        RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), options, null);
         var quantum = new List<Point>();
         foreach (var p in rates)
         {
             progress?.Invoke($"{name}: analytic, p = {p}");
             // Same seed, same render: of three, the fastest is the cost least disturbed by other work on the machine.
-            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, EngineKind.Analytic, options, new QSearchOptions(), 1, 1, classical, NoiseModel.Depolarizing(p))).ToArray();
+            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p)), options, classical)).ToArray();
             quantum.Add(new Point(p, runs.MinBy(r => r.WallTime)!));
         }
         // The termination rule stops the randomized renderer's rays after a miss or two, so its Int/Ray would
@@ -74,7 +74,7 @@ public static class NoisyRenderBenchmark
         for (var passes = 1; passes <= maxRandomizedPasses; passes++)
         {
             progress?.Invoke($"{name}: randomized, {passes} passes");
-            var m = RenderMeasurement.Run(scene, EngineKind.Randomized, RandomizedOptions(size, passes), new QSearchOptions(), 1, 1, classical);
+            var m = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Randomized), RandomizedOptions(size, passes), classical);
             randomized.Add((passes, m));
             if (m.Result.Total.PerRayConservative > highest) break;
         }
@@ -85,9 +85,9 @@ public static class NoisyRenderBenchmark
     public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes };
 
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
-    public static RenderOptions Defaults(int size) => RenderDefaults.Options(size, size);
+    public static RenderOptions Defaults(int size) => RenderDefaults.CommandLine(size, size);
 
     /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size; on <paramref name="pool"/> when given.</summary>
     public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical, Bridge.BridgePool? pool = null) =>
-        RenderMeasurement.Run(scene, EngineKind.FullState, Defaults(size), new QSearchOptions(), 1, workers, classical, NoiseModel.Depolarizing(perGate), pool);
+        RenderMeasurement.Run(scene, new EngineSetup(EngineKind.FullState, new QSearchOptions(), workers, Noise: NoiseModel.Depolarizing(perGate), Pool: pool), Defaults(size), classical);
 }

@@ -24,12 +24,12 @@ public static class OptimisedTracingExperiment
         var (size, seed) = (settings.Size, settings.Seed);
         var paper = new QSearchOptions(Rule: MSetRule.Round);
         var ours = new QSearchOptions();
-        var plain = new RenderOptions(size, size, Seed: seed);
+        var plain = RenderOptions.PaperPipeline(size, size, seed);
         // The paper's optimised renderer: NeighOpt on primary and specular rays, termination with its p̄, up to 8 rounds.
         var paperOptimised = plain with { Iterations = 8, Neighbours = true, Stop = StopMode.Paper };
-        var best = RenderDefaults.Options(size, size, seed);
+        var best = RenderDefaults.CommandLine(size, size, seed);
         RenderMeasurement Measure(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch) =>
-            RenderMeasurement.Run(scene, kind, options, qsearch, seed, settings.Workers, RenderMeasurement.Reference(scene, options));
+            RenderMeasurement.Run(scene, new EngineSetup(kind, qsearch, settings.Workers), options, RenderMeasurement.Reference(scene, options));
 
         var report = new Report(Title);
         report.Text($"""

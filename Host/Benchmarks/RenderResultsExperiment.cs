@@ -37,10 +37,10 @@ public static class RenderResultsExperiment
         {
             progress($"table 2: {stem} ({k + 1}/{stems.Length})");
             var scene = settings.Scene(stem);
-            var options = new RenderOptions(size, size, PaperNumbers.ScalabilityIterations(stem));
+            var options = RenderOptions.PaperPipeline(size, size, seed) with { Iterations = PaperNumbers.ScalabilityIterations(stem) };
             var reference = RenderMeasurement.Reference(scene, options);
-            var paper = RenderMeasurement.Run(scene, EngineKind.Analytic, options, paperRule, seed, workers, reference);
-            var ours = RenderMeasurement.Run(scene, EngineKind.Analytic, options, ourRule, seed, workers, reference);
+            var paper = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, paperRule, workers), options, reference);
+            var ours = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, ourRule, workers), options, reference);
             var published = PaperNumbers.Scalability[stem];
             table2.Row(stem, N(scene.Rectangles.Count), N(options.Iterations), F(reference.Result.Total.PerRayConservative), F(paper.Result.Total.PerRayPaper), F(published),
                 (paper.Result.Total.PerRayPaper / published).ToString("0.00", CultureInfo.InvariantCulture), N(paper.Error.DifferentPixels),
@@ -56,10 +56,10 @@ public static class RenderResultsExperiment
             foreach (var row in rows)
             {
                 progress($"table 3: {stem}, {row.Iterations} iterations");
-                var options = new RenderOptions(size, size, row.Iterations);
+                var options = RenderOptions.PaperPipeline(size, size, seed) with { Iterations = row.Iterations };
                 var reference = RenderMeasurement.Reference(scene, options);
-                var paper = RenderMeasurement.Run(scene, EngineKind.Analytic, options, paperRule, seed, workers, reference);
-                var ours = RenderMeasurement.Run(scene, EngineKind.Analytic, options, ourRule, seed, workers, reference);
+                var paper = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, paperRule, workers), options, reference);
+                var ours = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, ourRule, workers), options, reference);
                 table3.Row(stem, N(row.Iterations), F(paper.Result.Total.PerRayPaper), P(paper.Error.Nrmse, "P1"), N(paper.Error.DifferentPixels), P(paper.Error.DifferentShare, "P1"),
                     F(row.IntPerRay), P(row.Nrmse, "P0"), N(row.DifferentPixels), F(ours.Result.Total.PerRayConservative), N(ours.Error.DifferentPixels));
             }
@@ -68,11 +68,11 @@ public static class RenderResultsExperiment
 
         var engineSize = settings.EngineSize;
         CompareEngines(report, settings, "engines", $"Engines side by side (qornell-64, {engineSize}x{engineSize}, 4 passes, conservative count, default M rule)", null,
-            settings.Scene("qornell-64"), new RenderOptions(engineSize, engineSize),
+            settings.Scene("qornell-64"), RenderOptions.PaperPipeline(engineSize, engineSize, settings.Seed),
             [EngineKind.Classical, EngineKind.Randomized, EngineKind.Analytic, EngineKind.FullState], ourRule, progress);
         CompareEngines(report, settings, "gate-oracle", "The gate-level oracle against the lookup form (qornell-8, 8x8, 4 passes)",
             "The same searches with the oracle built from comparators (`gate`) and from the marked set (`fullstate`), both on the QDK simulator.",
-            settings.Scene("qornell-8"), new RenderOptions(8, 8), [EngineKind.Gate, EngineKind.FullState], ourRule, progress);
+            settings.Scene("qornell-8"), RenderOptions.PaperPipeline(8, 8, settings.Seed), [EngineKind.Gate, EngineKind.FullState], ourRule, progress);
         return report;
     }
 
@@ -86,7 +86,7 @@ public static class RenderResultsExperiment
         foreach (var kind in kinds)
         {
             progress($"{name}: {kind.ToString().ToLowerInvariant()}");
-            var m = RenderMeasurement.Run(scene, kind, options, rule, settings.Seed, settings.Workers, classical, pool: settings.Pool);
+            var m = RenderMeasurement.Run(scene, new EngineSetup(kind, rule, settings.Workers, Pool: settings.Pool), options, classical);
             table.Row(kind.ToString().ToLowerInvariant(), N(m.Result.Total.Rays), F(m.Result.Total.PerRayConservative), P(m.Error.Nrmse, "P2"), N(m.Error.DifferentPixels),
                 m.WallTime.TotalSeconds.ToString("0.00 s", CultureInfo.InvariantCulture), m.MillisecondsPerRay.ToString("0.000", CultureInfo.InvariantCulture),
                 (m.WallTime / classical.WallTime).ToString("0.0", CultureInfo.InvariantCulture) + "x");

@@ -25,10 +25,9 @@ public static class Soak
 {
     /// <summary>
     /// One row per scene and engine (one row for a scene file that does not load), scenes by primitive
-    /// count then name. <paramref name="searches"/> builds the search of one render from the engine and
-    /// seed; <paramref name="progress"/> gets a label per render; <paramref name="onRow"/> each finished row.
+    /// count then name. <paramref name="render"/> renders a scene on an engine with options (the seed theirs); <paramref name="progress"/> gets a label per render; <paramref name="onRow"/> each finished row.
     /// </summary>
-    public static IReadOnlyList<SoakRow> Run(IReadOnlyList<string> sceneFiles, SoakSettings settings, Func<EngineKind, ulong, IHitSearch> searches,
+    public static IReadOnlyList<SoakRow> Run(IReadOnlyList<string> sceneFiles, SoakSettings settings, Func<Scene, EngineKind, RenderOptions, IRenderProgress?, RenderResult> render,
         Func<string, IRenderProgress?>? progress = null, Action<SoakRow>? onRow = null)
     {
         var scenes = sceneFiles.Select(Load).OrderBy(s => s.Scene is null).ThenBy(s => s.Scene?.Rectangles.Count ?? 0)
@@ -49,7 +48,7 @@ public static class Soak
             }
             var references = new Dictionary<(int Size, ulong Seed), RenderResult>();
             foreach (var kind in settings.Engines)
-                Add(new SceneRun(stem, scene, kind, settings, searches, progress, references).Row(smallest));
+                Add(new SceneRun(stem, scene, kind, settings, render, progress, references).Row(smallest));
         }
         return rows;
     }
@@ -73,7 +72,7 @@ public static class Soak
     private sealed record Rendered(RenderResult Result, byte[] Png, TimeSpan WallTime);
 
     /// <summary>One scene on one engine, over every seed.</summary>
-    private sealed class SceneRun(string stem, Scene scene, EngineKind kind, SoakSettings settings, Func<EngineKind, ulong, IHitSearch> searches,
+    private sealed class SceneRun(string stem, Scene scene, EngineKind kind, SoakSettings settings, Func<Scene, EngineKind, RenderOptions, IRenderProgress?, RenderResult> render,
         Func<string, IRenderProgress?>? progress, Dictionary<(int Size, ulong Seed), RenderResult> references)
     {
         private readonly List<string> _failures = [];
@@ -82,16 +81,16 @@ public static class Soak
 
         public SoakRow Row(int smallest)
         {
-            if (SoakSettings.IsSimulator(kind) && settings.SimulatorsOnSmallestSceneOnly && Primitives > smallest)
+            if (kind.RunsQSharp && settings.SimulatorsOnSmallestSceneOnly && Primitives > smallest)
                 return SoakRow.Skipped(stem, Primitives, kind, $"short form: simulators on the smallest scene only (N = {smallest})");
             var size = settings.SizeFor(kind);
-            if (kind == EngineKind.Gate && GateCostEstimate.Of(scene, settings.Options(size, settings.Seeds[0])) is var forecast && forecast > settings.GateBudget)
+            if (kind.SimulatesOracleGates && GateCostEstimate.Of(scene, settings.Options(size, settings.Seeds[0])) is var forecast && forecast > settings.GateBudget)
                 return SoakRow.Skipped(stem, Primitives, kind, $"forecast {Seconds(forecast)} per render, over the gate budget of {Seconds(settings.GateBudget)}");
 
             var firsts = new List<Rendered>();
             var errors = new List<ImageError>();
-            var bound = SoakSettings.IsQuantum(kind) ? DifferentPixelBound.Max(size * size) : (int?)null;
-            bool? deterministic = SoakSettings.IsSeedable(kind) ? true : null;
+            var bound = kind.SearchesWithGrover ? DifferentPixelBound.Max(size * size) : (int?)null;
+            bool? deterministic = kind.IsSeedable ? true : null;
             var seedEffect = "";
             var seed = settings.Seeds[0];
             try
@@ -104,7 +103,7 @@ public static class Soak
                     firsts.Add(first);
                     var error = ImageError.Between(first.Result.Image, Reference(options));
                     errors.Add(error);
-                    if (kind == EngineKind.Classical && error.DifferentPixels != 0)
+                    if (kind.IsExact && error.DifferentPixels != 0)
                         Fail($"{error.DifferentPixels} pixels differ from the classical reference");
                     if (bound is { } most && error.DifferentPixels > most)
                         Fail($"#Dpix {error.DifferentPixels} against the classical render, over the bound of {most}");
@@ -148,9 +147,7 @@ public static class Soak
         private Rendered Render(RenderOptions options, string repeat)
         {
             var clock = Stopwatch.StartNew();
-            RenderResult result;
-            using (var search = searches(kind, options.Seed))
-                result = SceneRenderer.Render(scene, search, options, progress?.Invoke($"{stem} on {EngineFactory.Name(kind)}, seed {options.Seed}{repeat}"));
+            var result = render(scene, kind, options, progress?.Invoke($"{stem} on {kind.Name}, seed {options.Seed}{repeat}"));
             var wall = clock.Elapsed;
             _times.Add(wall);
             var png = PngWriter.Encode(result.Image);
@@ -166,8 +163,7 @@ public static class Soak
         {
             if (!references.TryGetValue((options.Width, options.Seed), out var reference))
             {
-                using var classical = new ClassicalHitSearch();
-                reference = SceneRenderer.Render(scene, classical, RenderDefaults.Reference(options));
+                reference = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Reference(options));
                 references[(options.Width, options.Seed)] = reference;
             }
             return reference.Image;
@@ -181,18 +177,12 @@ public static class Soak
             var cost = firsts.Skip(1).Any(r => !Costs(r.Result).SequenceEqual(Costs(firsts[0].Result)));
             var effect = image ? "image" : cost ? "cost only" : "none";
             var samples = RenderDefaults.SamplesLight(scene, settings.Options(1, 1));
-            switch (kind)
-            {
-                case EngineKind.Analytic or EngineKind.Randomized when effect == "none":
-                    _failures.Add("every seed gives the same image and the same search cost: the seed is not used");
-                    break;
-                case EngineKind.Classical when samples && !image:
-                    _failures.Add("every seed gives the same image although the scene samples light");
-                    break;
-                case EngineKind.Classical when !samples && effect != "none":
-                    _failures.Add($"the seed changes the {(image ? "image" : "search cost")} although the scene samples no light");
-                    break;
-            }
+            if (kind.DrawsFromSeed && effect == "none")
+                _failures.Add("every seed gives the same image and the same search cost: the seed is not used");
+            else if (kind.IsExact && samples && !image)
+                _failures.Add("every seed gives the same image although the scene samples light");
+            else if (kind.IsExact && !samples && effect != "none")
+                _failures.Add($"the seed changes the {(image ? "image" : "search cost")} although the scene samples no light");
             return effect;
         }
 

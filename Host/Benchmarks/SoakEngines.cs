@@ -1,13 +1,14 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
-using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Benchmarks;
 
 /// <summary>
-/// The ray searches a soak renders with, one per render, built as `render` builds them
-/// (<see cref="HitSearchFactory.Create"/>), with the fullstate and gate engines on one bridge pool
+/// The engines a soak renders on, each render through <see cref="Renderer"/> as `render`'s, with the fullstate and gate engines on one bridge pool
 /// for the whole soak: each render would otherwise start and compile fresh Node bridges, seconds per
 /// render. That pool is <paramref name="shared"/> when given (a cluster's, left running), else started here and
 /// stopped on disposing.
@@ -16,14 +17,13 @@ public sealed class SoakEngines(int workers, int maxQubits = GateEngine.DefaultM
 {
     private BridgePool? _pool;
 
-    /// <summary>A fresh search for one render on <paramref name="kind"/>, its randomness forked from <paramref name="seed"/>.</summary>
-    public IHitSearch Create(EngineKind kind, ulong seed)
-    {
-        var simulated = kind is EngineKind.FullState or EngineKind.Gate;
-        // The limit is the gate engine's; fullstate keeps the widest state the machine holds.
-        return HitSearchFactory.Create(kind, new SeededRandom(seed), workers, new QSearchOptions(),
-            kind == EngineKind.Gate ? maxQubits : null, simulated ? Pool : null);
-    }
+    /// <summary>One render of <paramref name="scene"/> on <paramref name="kind"/>, its randomness from the options' seed.</summary>
+    public RenderResult Render(Scene scene, EngineKind kind, RenderOptions options, IRenderProgress? progress) =>
+        Renderer.Render(scene, Setup(kind), options, progress);
+
+    // The limit is the gate engine's; fullstate keeps the widest state the machine holds.
+    private EngineSetup Setup(EngineKind kind) => new(kind, new QSearchOptions(), workers,
+        kind.SimulatesOracleGates ? maxQubits : null, Pool: kind.RunsQSharp ? Pool : null);
 
     private BridgePool Pool => shared ?? (_pool ??= new BridgePool(workers));
 

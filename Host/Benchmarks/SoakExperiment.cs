@@ -25,7 +25,7 @@ public static class SoakExperiment
     {
         var clock = Stopwatch.StartNew();
         using var engines = new SoakEngines(settings.Workers, settings.MaxQubits, settings.Pool);
-        var rows = Soak.Run(sceneFiles, settings, engines.Create, progress, onRow);
+        var rows = Soak.Run(sceneFiles, settings, engines.Render, progress, onRow);
         var total = clock.Elapsed;
         return new SoakResult(rows, total, engines.Versions(), SoakReport.Of(rows, settings, total));
     }

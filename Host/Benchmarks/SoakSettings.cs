@@ -69,19 +69,10 @@ public sealed record SoakSettings(
     };
 
     /// <summary>The square image size <paramref name="kind"/> renders at.</summary>
-    public int SizeFor(EngineKind kind) => kind == EngineKind.Gate ? GateSize : Size;
+    public int SizeFor(EngineKind kind) => kind.SimulatesOracleGates ? GateSize : Size;
 
     /// <summary>`render`'s default pipeline at <paramref name="size"/> with <paramref name="seed"/>, as `render --seed` sets it.</summary>
     public RenderOptions Options(int size, ulong seed) => new(size, size, Iterations, ShadowIterations, TieBreak.Strict,
         RenderDefaults.Neighbours, RenderDefaults.ShadowNeighbours, RenderDefaults.Stop, seed,
         RenderDefaults.LatticeLevelsFor(size, size), RenderDefaults.AgreedMiss, RenderDefaults.PlannedMiss, AreaSamples, Vpl, RequiredMisses: null);
-
-    /// <summary>Whether <paramref name="kind"/> runs on the Q# simulator (its outcomes cannot be seeded).</summary>
-    public static bool IsSimulator(EngineKind kind) => kind is EngineKind.FullState or EngineKind.Gate;
-
-    /// <summary>Whether the same seed must give the same bytes: every engine whose randomness is ours.</summary>
-    public static bool IsSeedable(EngineKind kind) => !IsSimulator(kind);
-
-    /// <summary>Whether a render samples quantum searches, so its image is held to <see cref="DifferentPixelBound"/> against the classical one.</summary>
-    public static bool IsQuantum(EngineKind kind) => kind is EngineKind.Analytic or EngineKind.FullState or EngineKind.Gate;
 }

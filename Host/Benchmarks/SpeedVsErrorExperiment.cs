@@ -27,7 +27,7 @@ public static class SpeedVsErrorExperiment
     /// <summary>The pipeline configurations measured: plain rounds, neighbours, termination and the lattice with several cheap-confirmation misses.</summary>
     public static IReadOnlyList<(string Name, RenderOptions Options)> Configurations(int size, ulong seed)
     {
-        var plain = new RenderOptions(size, size, Seed: seed);
+        var plain = RenderOptions.PaperPipeline(size, size, seed);
         var configurations = new List<(string Name, RenderOptions Options)>();
         for (var it = 1; it <= 5; it++) configurations.Add(($"base, #IT {it}", plain with { Iterations = it }));
         for (var it = 1; it <= 3; it++) configurations.Add(($"neighbours, #IT {it}", plain with { Iterations = it, Neighbours = true }));
@@ -50,7 +50,7 @@ public static class SpeedVsErrorExperiment
             {
                 progress($"{EngineFactory.Name(kind)}: {name} ({points.Count + 1}/{Engines.Length * configurations.Count})");
                 var reference = RenderMeasurement.Reference(scene, options);
-                var m = RenderMeasurement.Run(scene, kind, options, new QSearchOptions(), seed, settings.Workers, reference, pool: settings.Pool);
+                var m = RenderMeasurement.Run(scene, new EngineSetup(kind, new QSearchOptions(), settings.Workers, Pool: settings.Pool), options, reference);
                 points.Add(new(EngineFactory.Name(kind), name, m.Result.Total.PerRayConservative, m.WallTime.TotalSeconds, m.Error.Nrmse, m.Error.DifferentPixels));
             }
 

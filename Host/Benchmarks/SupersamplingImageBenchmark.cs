@@ -1,3 +1,4 @@
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
@@ -25,8 +26,7 @@ public static class SupersamplingImageBenchmark
     public static RgbImage RenderQornell(int size, int side)
     {
         var scene = SceneLoader.Parse(QornellBox.Build(DefaultScene.QornellPrimitives).ToJson(), "built-in qornell");
-        using var classical = new ClassicalHitSearch();
-        return SceneRenderer.Render(scene, classical, new RenderOptions(size * side, size * side)).Image;
+        return Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderOptions.PaperPipeline(size * side, size * side)).Image;
     }
 
     /// <summary>The thesis's black-and-white input: white where the luminance (Rec. 709 weights) is at least half.</summary>

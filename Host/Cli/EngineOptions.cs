@@ -115,7 +115,7 @@ public sealed class EngineOptions
     /// engine then starts local bridges of its own). Connecting fails with one line and exit code 3.
     /// </summary>
     public BridgePool? StartBridges(ParseResult parse) =>
-        parse.GetValue(Cluster) is { } file && parse.GetValue(Engine) is EngineKind.FullState or EngineKind.Gate
+        parse.GetValue(Cluster) is { } file && parse.GetValue(Engine).RunsQSharp
             ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers))
             : null;
 
@@ -126,7 +126,7 @@ public sealed class EngineOptions
         if (noise.IsNoiseless) return RunNoise.None;
         var kind = parse.GetValue(Engine);
         var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
-        return new RunNoise(kind == EngineKind.Analytic ? "pauli, depolarizing approximation" : "pauli", rates, EngineFactory.NoiseDescription(kind, noise));
+        return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, EngineFactory.NoiseDescription(kind, noise));
     }
 
     public void AddTo(Command command)
@@ -134,9 +134,9 @@ public sealed class EngineOptions
         command.Options.Add(Engine);
         command.Options.Add(Seed);
         command.Options.Add(Workers);
-        if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate)) command.Options.Add(MaxQubits);
-        if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate)) command.Options.Add(Cluster);
-        if (_accepted.Any(k => k is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic))
+        if (_accepted.Any(k => k.RunsQSharp)) command.Options.Add(MaxQubits);
+        if (_accepted.Any(k => k.RunsQSharp)) command.Options.Add(Cluster);
+        if (_accepted.Any(k => k.SearchesWithGrover))
         {
             command.Options.Add(Noise);
             command.Options.Add(QubitLoss);

@@ -25,7 +25,7 @@ public sealed record FrameRecording(RenderResult Render, IReadOnlyList<RecordedR
     {
         var recorder = new Recorder(progress);
         var root = new SeededRandom(options.Seed);
-        // The analytic hit search `render` builds (HitSearchFactory.Create), with the recorder at its seam and the
+        // The analytic hit search `render` builds (EngineFactory.CreateSearch), with the recorder at its seam and the
         // oracle inputs attached (gate level), which the analytic engine ignores: the same draws, the same image.
         var engine = new RecordingEngine(new AnalyticEngine(root.Fork(RandomStreams.Engine)), recorder.Listen);
         RenderResult render;

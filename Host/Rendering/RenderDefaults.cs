@@ -37,7 +37,7 @@ public static class RenderDefaults
     public const int LatticePointsPerSide = 8;
 
     /// <summary>The options `render` uses with no options given, at a size.</summary>
-    public static RenderOptions Options(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
+    public static RenderOptions CommandLine(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
         Neighbours: Neighbours, ShadowNeighbours: ShadowNeighbours, Stop: Stop,
         LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss, RequiredMisses: null);
 

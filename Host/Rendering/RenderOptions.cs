@@ -39,6 +39,12 @@ public sealed record RenderOptions(
     /// <summary>The t a confirmation is planned for: at most ~6 primitives lie on a Qornell ray, 9 in Depth Complexity's deepest quadrant.</summary>
     public const int ConfirmationMaxT = 8;
 
+    /// <summary>
+    /// The paper's plain pipeline at a size: #IT TracePass and 2 DirectPass rounds, strict ties, no gathering, no
+    /// termination, no lattice. <see cref="RenderDefaults.CommandLine"/> is what `render` runs.
+    /// </summary>
+    public static RenderOptions PaperPipeline(int width, int height, ulong seed = 1) => new(width, height, Seed: seed);
+
     /// <summary>The paper's table 3 reaches its floor of wrong pixels on the Qornell box at 4 to 5 passes.</summary>
     public const int DefaultIterations = 4;
 }

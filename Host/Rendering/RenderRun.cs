@@ -3,8 +3,6 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
-using QuantumRayTracing.Randomness;
-using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Rendering;
 
@@ -21,28 +19,24 @@ public static class RenderRun
         var plan = RenderPlan.Of(settings);
         var clock = Stopwatch.StartNew();
         RenderResult result;
-        using (var search = HitSearchFactory.Create(settings.Engine, new SeededRandom(options.Seed), settings.LocalWorkers, settings.Search,
-                   settings.MaxQubits, settings.Pool, settings.NoiseModel))
+        try
         {
-            try
-            {
-                result = Stage(progress, EngineFactory.Name(settings.Engine), p => SceneRenderer.Render(scene, search, options, p));
-            }
-            catch (SimulatorLimitException e)
-            {
-                throw new UserError($"{scene.Name}: {e.Message}");
-            }
+            result = Stage(progress, settings.Engine.Name, p => Renderer.Render(scene, settings.EngineSetup, options, p));
+        }
+        catch (SimulatorLimitException e)
+        {
+            throw new UserError($"{scene.Name}: {e.Message}");
         }
         var renderTime = clock.Elapsed;
 
         clock.Restart();
-        using var classical = new ClassicalHitSearch();
-        var reference = Stage(progress, "classical reference", p => SceneRenderer.Render(scene, classical, RenderDefaults.Reference(options), p));
+        var classical = new EngineSetup(EngineKind.Classical);
+        var reference = Stage(progress, "classical reference", p => Renderer.Render(scene, classical, RenderDefaults.Reference(options), p));
         var referenceTime = clock.Elapsed;
 
         clock.Restart();
         var converged = settings.WithConverged
-            ? Stage(progress, "converged reference", p => SceneRenderer.Render(scene, classical, settings.Converged, p))
+            ? Stage(progress, "converged reference", p => Renderer.Render(scene, classical, settings.Converged, p))
             : null;
         var convergedTime = clock.Elapsed;
 

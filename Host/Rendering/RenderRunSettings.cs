@@ -47,6 +47,9 @@ public sealed record RenderRunSettings(
 
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
+    /// <summary>The engine as <see cref="Renderer"/> builds it.</summary>
+    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool);
+
     /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>
     public IReadOnlyList<string> Files => WithReference
         ? [Output, ImageFiles.Beside(Output, "reference"), ImageFiles.Beside(Output, "difference"), .. WithConverged ? [ImageFiles.Beside(Output, "converged")] : Array.Empty<string>()]

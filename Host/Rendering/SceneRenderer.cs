@@ -10,11 +10,9 @@ using QuantumRayTracing.Shading;
 namespace QuantumRayTracing.Rendering;
 
 /// <summary>
-/// RenderScene (appendix B, Algorithm 7): the primary pass, the specular pass for pixels that see a
-/// mirror, the direct-light pass for every surface point and point or directional light, then Whitted
-/// shading; with area lights an area-light pass, and with VPLs the indirect passes (sec. 7). Rays are
-/// traced breadth first, a whole pass at a time, so each pass batches all its searches. Every engine
-/// runs exactly this; they differ only in the <see cref="IHitSearch"/> they bring.
+/// RenderScene (appendix B, Algorithm 7) as stages over queues of typed work: rays are traced breadth first, a
+/// whole pass at a time, so each pass batches all its searches. Every engine runs exactly this; they differ only
+/// in the <see cref="IHitSearch"/> they bring. <see cref="Renderer"/> is the way in.
 /// </summary>
 public static class SceneRenderer
 {
@@ -22,112 +20,151 @@ public static class SceneRenderer
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(options.AreaSamples, 1);
         ArgumentOutOfRangeException.ThrowIfNegative(options.Vpl);
-        var geometry = new SceneGeometry(scene);
-        var primaryRays = CameraRays.For(scene.Camera, options.Width, options.Height);
+        // Stages in order: camera rays, the pass plan (its stop rule may calibrate on camera rays), primary rays,
+        // specular rays, shadow rays, area light, indirect light, shading. Each pass's metrics are kept in that order.
         var passes = new List<PassMetrics>();
+        var cameraRays = CameraRays.For(scene.Camera, options.Width, options.Height);
+        var plan = PlanPasses(scene, search, options, cameraRays, passes, progress);
+        var radiance = new Vec3[cameraRays.Length];
+        var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes);
+        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes);
+        var visible = TraceShadowRays(plan, points, passes);
+        var extra = DirectionalLight(scene, points, visible);
+        AddAreaLight(plan, points, extra, passes);
+        AddIndirectLight(plan, points, extra, passes);
+        Shade(scene, points, visible, extra, radiance);
+        return Result(plan, radiance, passes, cameraRays.Length);
+    }
+
+    // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
+    private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, Ray[] cameraRays, List<PassMetrics> passes, IRenderProgress? progress)
+    {
+        var geometry = new SceneGeometry(scene);
         var planned = options.PlannedMiss is { } miss
             ? ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, miss)
             : null;
-        var stop = StopRuleFor(search, geometry, primaryRays, options, planned, passes);
+        var stop = StopRuleFor(search, geometry, cameraRays, options, planned, passes);
         var lattice = options.LatticeLevels > 0
             ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss))
             : null;
-        var plan = new PassPlan(scene, geometry, search, options, stop, lattice, planned, progress);
-        var (primaryHits, primaryMetrics) = TracePass.Run("primary", search, geometry, primaryRays, plan.Trace(Enumerable.Range(0, primaryRays.Length).ToArray()), progress);
+        return new PassPlan(scene, geometry, search, options, stop, lattice, planned, progress);
+    }
 
-        // Surface points: each primary hit carries 1 − mirror of its pixel, its reflection the mirror share.
-        // A camera or mirror ray that meets an area light before its hit shows the light instead.
-        var radiance = new Vec3[primaryRays.Length];
+    // Camera rays to their closest hits. Each hit is a surface point carrying 1 − mirror of its pixel; a mirror's
+    // reflection, queued for the specular pass, carries the mirror share. A ray that meets an area light first shows the light.
+    private static (List<SurfacePoint> Points, List<SpecularRayWorkItem> Specular) TracePrimaryRays(PassPlan plan, Ray[] cameraRays, Vec3[] radiance, List<PassMetrics> passes)
+    {
+        var (hits, metrics) = TracePass.Run("primary", plan.Search, plan.Geometry, cameraRays, plan.Trace(Enumerable.Range(0, cameraRays.Length).ToArray()), plan.Progress);
+        passes.Add(metrics);
         var points = new List<SurfacePoint>();
-        var specularPixels = new List<int>();
-        var specularRays = new List<Ray>();
-        for (var pixel = 0; pixel < primaryRays.Length; pixel++)
+        var specular = new List<SpecularRayWorkItem>();
+        for (var pixel = 0; pixel < cameraRays.Length; pixel++)
         {
-            var hit = primaryHits[pixel];
-            if (scene.AreaLights.Count > 0 && Emitters.Seen(primaryRays[pixel], hit?.Distance ?? double.PositiveInfinity, scene.AreaLights) is { } light)
+            if (SeenLight(plan.Scene, cameraRays[pixel], hits[pixel]) is { } light)
             {
                 radiance[pixel] = light;
                 continue;
             }
-            if (hit is not { } h) continue;
-            var rectangle = scene.Rectangles[h.Primitive];
-            var point = SurfacePoint.Of(pixel, primaryRays[pixel], h, rectangle, 1 - rectangle.Material.Mirror);
+            if (hits[pixel] is not { } hit) continue;
+            var material = plan.Scene.Rectangles[hit.Primitive].Material;
+            var point = SurfacePoint.Of(pixel, cameraRays[pixel], hit, plan.Scene.Rectangles[hit.Primitive], 1 - material.Mirror);
             if (point.Weight > 0) points.Add(point);
-            if (!rectangle.Material.IsMirror) continue;
-            specularPixels.Add(pixel);
-            specularRays.Add(SecondaryRays.Specular(primaryRays[pixel], point));
+            if (material.IsMirror) specular.Add(new(pixel, material.Mirror, SecondaryRays.Specular(cameraRays[pixel], point)));
         }
-        var primaryPointCount = points.Count;
-        var (specularHits, specularMetrics) = TracePass.Run("specular", search, geometry, specularRays,
-            plan.Trace(specularPixels), progress);
-        for (var k = 0; k < specularRays.Count; k++)
+        return (points, specular);
+    }
+
+    // Mirror reflections to their closest hits: one bounce, so a mirror seen in a mirror shows only its diffuse share.
+    private static SurfacePoints TraceSpecularRays(PassPlan plan, List<SurfacePoint> points, List<SpecularRayWorkItem> queue, Vec3[] radiance, List<PassMetrics> passes)
+    {
+        var primaryCount = points.Count;
+        var rays = queue.Select(w => w.Ray).ToArray();
+        var (hits, metrics) = TracePass.Run("specular", plan.Search, plan.Geometry, rays, plan.Trace(queue.Select(w => w.Pixel).ToArray()), plan.Progress);
+        passes.Add(metrics);
+        for (var k = 0; k < queue.Count; k++)
         {
-            var pixel = specularPixels[k];
-            var mirror = scene.Rectangles[primaryHits[pixel]!.Value.Primitive].Material.Mirror;
-            var hit = specularHits[k];
-            if (scene.AreaLights.Count > 0 && Emitters.Seen(specularRays[k], hit?.Distance ?? double.PositiveInfinity, scene.AreaLights) is { } light)
+            var (pixel, mirror, ray) = queue[k];
+            if (SeenLight(plan.Scene, ray, hits[k]) is { } light)
             {
                 radiance[pixel] += mirror * light;
                 continue;
             }
-            if (hit is not { } h) continue;
-            // One bounce: a mirror seen in a mirror shows only its diffuse share.
-            var rectangle = scene.Rectangles[h.Primitive];
-            points.Add(SurfacePoint.Of(pixel, specularRays[k], h, rectangle, mirror * (1 - rectangle.Material.Mirror)));
+            if (hits[k] is not { } hit) continue;
+            var rectangle = plan.Scene.Rectangles[hit.Primitive];
+            points.Add(SurfacePoint.Of(pixel, ray, hit, rectangle, mirror * (1 - rectangle.Material.Mirror)));
         }
+        return new SurfacePoints(points, primaryCount);
+    }
 
-        // Shadow rays: one per surface point and point or directional light in front of it (lights
-        // 0..P−1 are the point lights, P.. the directional ones); rayOf[point, light] = −1 for none.
-        // Their layout channel is the light and whether the point is primary or reflected, so gathering
-        // compares rays towards the same light from the same kind of point.
+    // The area light a camera or mirror ray meets before its hit, if any.
+    private static Vec3? SeenLight(Scene scene, Ray ray, Hit? hit) =>
+        scene.AreaLights.Count > 0 ? Emitters.Seen(ray, hit?.Distance ?? double.PositiveInfinity, scene.AreaLights) : null;
+
+    // One shadow ray per surface point and point or directional light in front of it; visible[point, light] after the pass.
+    private static bool[,] TraceShadowRays(PassPlan plan, SurfacePoints points, List<PassMetrics> passes)
+    {
+        var scene = plan.Scene;
         var pointLights = scene.Lights.Count;
         var lightCount = pointLights + scene.DirectionalLights.Count;
-        var shadowRays = new List<Ray>();
-        var shadowPixels = new List<int>();
-        var shadowChannels = new List<int>();
-        var rayOf = new int[points.Count, lightCount];
+        var queue = new List<ShadowRayWorkItem>();
         for (var k = 0; k < points.Count; k++)
             for (var l = 0; l < lightCount; l++)
             {
                 var ray = l < pointLights
                     ? SecondaryRays.Shadow(points[k], scene.Lights[l])
                     : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-                rayOf[k, l] = ray is null ? -1 : shadowRays.Count;
-                if (ray is null) continue;
-                shadowRays.Add(ray);
-                shadowPixels.Add(points[k].Pixel);
-                shadowChannels.Add(2 * l + (k < primaryPointCount ? 0 : 1));
+                if (ray is not null) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1), ray));
             }
-        var (occluded, shadowMetrics) = DirectPass.Run("shadow", search, geometry, shadowRays,
-            plan.Shadow(shadowPixels, shadowChannels), progress);
-        passes.AddRange([primaryMetrics, specularMetrics, shadowMetrics]);
-        bool Visible(int k, int l) => rayOf[k, l] >= 0 && !occluded[rayOf[k, l]];
+        var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, queue.Select(w => w.Ray).ToList(),
+            plan.Shadow(queue.Select(w => w.Pixel).ToList(), queue.Select(w => w.Channel).ToList()), plan.Progress);
+        passes.Add(metrics);
+        var visible = new bool[points.Count, lightCount];
+        for (var i = 0; i < queue.Count; i++) visible[queue[i].Point, queue[i].Light] = !occluded[i];
+        return visible;
+    }
 
-        // Irradiance beyond Whitted's point lights: directional, area and indirect light, per point.
+    // Irradiance beyond Whitted's point lights, per point: first the directional lights the shadow pass found unoccluded.
+    private static Vec3[] DirectionalLight(Scene scene, SurfacePoints points, bool[,] visible)
+    {
         var extra = new Vec3[points.Count];
+        var pointLights = scene.Lights.Count;
         for (var k = 0; k < points.Count; k++)
             for (var d = 0; d < scene.DirectionalLights.Count; d++)
-                if (Visible(k, pointLights + d)) extra[k] += LightIrradiance.Directional(points[k].Normal, scene.DirectionalLights[d]);
-        if (scene.AreaLights.Count > 0)
-        {
-            var (area, areaMetrics) = AreaLightPass.Run(plan, points, primaryPointCount);
-            for (var k = 0; k < points.Count; k++) extra[k] += area[k];
-            passes.Add(areaMetrics);
-        }
-        if (options.Vpl > 0)
-        {
-            var (indirect, traceMetrics, vplShadowMetrics) = IndirectPass.Run(plan, points, primaryPointCount);
-            for (var k = 0; k < points.Count; k++) extra[k] += indirect[k];
-            passes.AddRange([traceMetrics, vplShadowMetrics]);
-        }
+                if (visible[k, pointLights + d]) extra[k] += LightIrradiance.Directional(points[k].Normal, scene.DirectionalLights[d]);
+        return extra;
+    }
 
+    private static void AddAreaLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)
+    {
+        if (plan.Scene.AreaLights.Count == 0) return;
+        var (area, metrics) = AreaLightPass.Run(plan, points.Points, points.PrimaryCount);
+        for (var k = 0; k < points.Count; k++) extra[k] += area[k];
+        passes.Add(metrics);
+    }
+
+    private static void AddIndirectLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)
+    {
+        if (plan.Options.Vpl == 0) return;
+        var (indirect, traceMetrics, shadowMetrics) = IndirectPass.Run(plan, points.Points, points.PrimaryCount);
+        for (var k = 0; k < points.Count; k++) extra[k] += indirect[k];
+        passes.AddRange([traceMetrics, shadowMetrics]);
+    }
+
+    // Whitted shading of every point with the lights it sees, plus the extra irradiance on its diffuse colour.
+    private static void Shade(Scene scene, SurfacePoints points, bool[,] visible, Vec3[] extra, Vec3[] radiance)
+    {
         for (var k = 0; k < points.Count; k++)
         {
             var point = points[k];
-            var local = WhittedShading.Radiance(scene, point, l => Visible(k, l));
+            var local = WhittedShading.Radiance(scene, point, l => visible[k, l]);
             if (extra[k] != Vec3.Zero) local += scene.Rectangles[point.Hit.Primitive].Material.Diffuse * extra[k];
             radiance[point.Pixel] += point.Weight * local;
         }
+    }
+
+    private static RenderResult Result(PassPlan plan, Vec3[] radiance, List<PassMetrics> passes, int cameraRays)
+    {
+        var options = plan.Options;
         var image = RgbImage.FromLinear(options.Width, options.Height, (x, y) =>
         {
             var c = radiance[y * options.Width + x];
@@ -136,7 +173,7 @@ public static class SceneRenderer
         return new RenderResult(image, passes)
         {
             Radiance = radiance,
-            Budget = AccuracyBudget.From(passes, search, geometry.Count, lattice?.Agreed, stop?.RequiredMisses ?? 1, primaryRays.Length),
+            Budget = AccuracyBudget.From(passes, plan.Search, plan.Geometry.Count, plan.Lattice?.Agreed, plan.Stop?.RequiredMisses ?? 1, cameraRays),
         };
     }
 

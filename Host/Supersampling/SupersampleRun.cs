@@ -102,8 +102,7 @@ public static class SupersampleRun
         RgbImage rendered;
         try
         {
-            using var classical = new ClassicalHitSearch();
-            rendered = SceneRenderer.Render(scene, classical, new RenderOptions(width * s, height * s), progress?.Start("classical render")).Image;
+            rendered = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderOptions.PaperPipeline(width * s, height * s), progress?.Start("classical render")).Image;
         }
         finally
         {
@@ -114,7 +113,7 @@ public static class SupersampleRun
 
     private static void CheckEngine(EngineKind kind, long pixels)
     {
-        if (kind == EngineKind.FullState && pixels > SupersampleRunSettings.MaxFullStatePixels)
+        if (kind.RunsQSharp && pixels > SupersampleRunSettings.MaxFullStatePixels)
             throw new UserError($"--engine fullstate simulates every pixel and takes about a second per output pixel: at most {SupersampleRunSettings.MaxFullStatePixels} output pixels (e.g. 16x16), this input has {pixels}; use --engine analytic (the same distributions, seeded) or a smaller input");
     }
 }

@@ -1,10 +1,10 @@
-using QuantumRayTracing.Passes;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
+using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Shading;
 
-namespace QuantumRayTracing.Rendering;
+namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// Single-bounce indirect light from virtual point lights (the paper's sec. 7, fig. 14). From every

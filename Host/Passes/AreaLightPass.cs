@@ -1,10 +1,10 @@
-using QuantumRayTracing.Passes;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
+using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Shading;
 
-namespace QuantumRayTracing.Rendering;
+namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// Area lights (the paper's sec. 7): S stratified samples per surface point and light, each a shadow

@@ -1,0 +1,38 @@
+namespace QuantumRayTracing.Engines;
+
+/// <summary>
+/// What each engine can do: the one place that knows which kind runs Q#, searches with Grover runs or models
+/// which noise, so callers ask the engine instead of listing kinds.
+/// </summary>
+public static class EngineCapabilities
+{
+    extension(EngineKind kind)
+    {
+        /// <summary>The name --engine and every report use.</summary>
+        public string Name => kind.ToString().ToLowerInvariant();
+
+        /// <summary>Runs Q# on the QDK simulator through Node bridges (local or a cluster's); its outcomes cannot be seeded.</summary>
+        public bool RunsQSharp => kind is EngineKind.FullState or EngineKind.Gate;
+
+        /// <summary>Searches with Grover runs (QSearch), so it runs under a noise model and may miss hits.</summary>
+        public bool SearchesWithGrover => kind is EngineKind.FullState or EngineKind.Gate or EngineKind.Analytic;
+
+        /// <summary>Simulates the gate-level intersection oracle: exact, slow, tiny images only.</summary>
+        public bool SimulatesOracleGates => kind == EngineKind.Gate;
+
+        /// <summary>Runs the QDK's qubit-loss model.</summary>
+        public bool ModelsQubitLoss => kind == EngineKind.FullState;
+
+        /// <summary>Runs Pauli noise through its depolarizing approximation rather than the noisy simulator.</summary>
+        public bool ApproximatesNoise => kind == EngineKind.Analytic;
+
+        /// <summary>Tests every primitive: certain answers, the reference every render is compared with.</summary>
+        public bool IsExact => kind == EngineKind.Classical;
+
+        /// <summary>The same seed gives the same bytes: every engine whose randomness is ours.</summary>
+        public bool IsSeedable => !kind.RunsQSharp;
+
+        /// <summary>Its searches draw from the seed, so another seed gives another render.</summary>
+        public bool DrawsFromSeed => kind.IsSeedable && !kind.IsExact;
+    }
+}

@@ -1,0 +1,28 @@
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Noise;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Engines;
+
+/// <summary>
+/// An engine as a render uses it: the kind, QSearch's options, the bridges a Q# engine runs on and the noise
+/// it runs under. The seed is the render's (<see cref="Rendering.RenderOptions.Seed"/>).
+/// </summary>
+/// <param name="Kind">The engine.</param>
+/// <param name="Search">QSearch's growth constant and M-set rule (the quantum engines).</param>
+/// <param name="Workers">Local Node bridges a Q# engine starts when <paramref name="Pool"/> is null.</param>
+/// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
+/// <param name="Noise">The noise model of the quantum engines; null for the ideal machine.</param>
+/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+public sealed record EngineSetup(
+    EngineKind Kind,
+    QSearchOptions Search,
+    int Workers = 1,
+    int? MaxQubits = null,
+    NoiseModel? Noise = null,
+    BridgePool? Pool = null)
+{
+    public EngineSetup(EngineKind kind) : this(kind, new QSearchOptions()) { }
+
+    public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
+}
