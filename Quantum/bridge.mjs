@@ -1,9 +1,13 @@
 // The Node bridge between the C# host and the modern QDK (npm package qsharp-lang).
 //
-//   node bridge.mjs --check   compile the Q# sources under src/ and print each diagnostic as
+//   node bridge.mjs --check   compile the Q# library under src/, alone and with the test operations
+//                             under tests/, and print each diagnostic as
 //                             "file(line,col): error QS: message [code]" (exit 1 on any error)
 //   node bridge.mjs           compile once, print one "ready" line, then answer requests:
 //                             one JSON object per line on stdin, one JSON reply per line on stdout
+//
+// The bridge loads src/ only; with QRT_QSHARP_TESTS=1 in its environment (the test project sets it)
+// it loads tests/ too, the operations only the C# tests call.
 //
 // Requests carry an "id" that the reply echoes, and a "method":
 //   {"id":1,"method":"version"}                               -> {"id":1,"ok":true,"result":{"qsharp":"1.32.5-dev","node":"v20..."}}
@@ -25,10 +29,11 @@ import { summariseCircuit } from "./circuit-summary.mjs";
 
 const projectDir = path.dirname(fileURLToPath(import.meta.url));
 const sourceDir = path.join(projectDir, "src");
+const testDir = path.join(projectDir, "tests");
 const packageDir = path.join(projectDir, "node_modules", "qsharp-lang");
 
-/** Every .qs file under src/, as [path relative to the project, text], in a stable order. */
-function readSources() {
+/** Every .qs file under dir, as [path relative to the project, text], in a stable order. */
+function readSources(dir) {
   const found = [];
   const walk = (dir) => {
     for (const entry of fs.readdirSync(dir, { withFileTypes: true }).sort((a, b) => a.name.localeCompare(b.name))) {
@@ -37,7 +42,7 @@ function readSources() {
       else if (entry.name.endsWith(".qs")) found.push([path.relative(projectDir, full).split(path.sep).join("/"), fs.readFileSync(full, "utf8")]);
     }
   };
-  walk(sourceDir);
+  walk(dir);
   return found;
 }
 
@@ -221,13 +226,17 @@ async function serve(compiler, sources) {
 }
 
 const compiler = await loadCompiler();
-const sources = readSources();
+const library = readSources(sourceDir);
+const tests = readSources(testDir);
 if (process.argv.includes("--check")) {
-  const diagnostics = await checkSources(compiler, sources);
+  const isError = (d) => d.severity === "error";
+  const diagnostics = await checkSources(compiler, [...library, ...tests]);
+  // The host's bridges load src/ alone, so it must compile without the tests.
+  if (!diagnostics.some(isError)) diagnostics.push(...(await checkSources(compiler, library)).filter(isError));
   for (const d of diagnostics) console.log(formatDiagnostic(d));
-  const errors = diagnostics.filter((d) => d.severity === "error").length;
-  console.log(`Q#: ${sources.length} files, ${errors} errors, ${diagnostics.length - errors} warnings`);
+  const errors = diagnostics.filter(isError).length;
+  console.log(`Q#: ${library.length} library files, ${tests.length} test files, ${errors} errors, ${diagnostics.length - errors} warnings`);
   process.exit(errors > 0 ? 1 : 0);
 } else {
-  await serve(compiler, sources);
+  await serve(compiler, process.env.QRT_QSHARP_TESTS === "1" ? [...library, ...tests] : library);
 }
