@@ -1,9 +1,14 @@
 // The Node bridge between the C# host and the modern QDK (npm package qsharp-lang).
 //
-//   node bridge.mjs --check   compile the Q# sources under src/ and print each diagnostic as
+//   node bridge.mjs --check   compile the Q# library under src/, alone and with the test operations
+//                             under tests/, check that src/ declares every name entry-points.json
+//                             lists, and print each diagnostic as
 //                             "file(line,col): error QS: message [code]" (exit 1 on any error)
 //   node bridge.mjs           compile once, print one "ready" line, then answer requests:
 //                             one JSON object per line on stdin, one JSON reply per line on stdout
+//
+// The bridge loads src/ only; with QRT_QSHARP_TESTS=1 in its environment (the test project sets it)
+// it loads tests/ too, the operations only the C# tests call.
 //
 // Requests carry an "id" that the reply echoes, and a "method":
 //   {"id":1,"method":"version"}                               -> {"id":1,"ok":true,"result":{"qsharp":"1.32.5-dev","node":"v20..."}}
@@ -25,10 +30,12 @@ import { summariseCircuit } from "./circuit-summary.mjs";
 
 const projectDir = path.dirname(fileURLToPath(import.meta.url));
 const sourceDir = path.join(projectDir, "src");
+const testDir = path.join(projectDir, "tests");
+const entryPointsFile = path.join(projectDir, "entry-points.json");
 const packageDir = path.join(projectDir, "node_modules", "qsharp-lang");
 
-/** Every .qs file under src/, as [path relative to the project, text], in a stable order. */
-function readSources() {
+/** Every .qs file under dir, as [path relative to the project, text], in a stable order. */
+function readSources(dir) {
   const found = [];
   const walk = (dir) => {
     for (const entry of fs.readdirSync(dir, { withFileTypes: true }).sort((a, b) => a.name.localeCompare(b.name))) {
@@ -37,7 +44,7 @@ function readSources() {
       else if (entry.name.endsWith(".qs")) found.push([path.relative(projectDir, full).split(path.sep).join("/"), fs.readFileSync(full, "utf8")]);
     }
   };
-  walk(sourceDir);
+  walk(dir);
   return found;
 }
 
@@ -71,6 +78,46 @@ async function checkSources(compiler, sources) {
       message: d.message,
     };
   });
+}
+
+/** The callables and types the sources declare, by full name: their kind and whether they are internal. */
+function declarations(sources) {
+  const found = new Map();
+  for (const [, text] of sources) {
+    const namespace = text.match(/^\s*namespace\s+([\w.]+)/m)?.[1];
+    for (const [, internal, kind, name] of text.matchAll(/^\s*(internal\s+)?(operation|function|struct|newtype)\s+(\w+)/gm)) {
+      found.set(`${namespace}.${name}`, { kind, internal: internal !== undefined });
+    }
+  }
+  return found;
+}
+
+/**
+ * An error for each name entry-points.json lists that the library does not declare as a non-internal
+ * callable ("operations") or type ("types"): the host names them in strings, so a rename would
+ * otherwise fail only when a call runs.
+ */
+function checkEntryPoints(library) {
+  const text = fs.readFileSync(entryPointsFile, "utf8");
+  const listed = JSON.parse(text);
+  const declared = declarations(library);
+  const kinds = { operations: ["operation", "function"], types: ["struct", "newtype"] };
+  const errors = [];
+  for (const [group, allowed] of Object.entries(kinds)) {
+    for (const name of listed[group] ?? []) {
+      const item = declared.get(name);
+      if (item && allowed.includes(item.kind) && !item.internal) continue;
+      const problem = !item ? `no ${allowed.join(" or ")} of that name is declared under src/`
+        : item.internal ? `src/ declares it internal`
+        : `src/ declares it with "${item.kind}" and the "${group}" list takes ${allowed.join(" or ")}`;
+      const lines = text.slice(0, text.indexOf(`"${name}"`)).split("\n");
+      errors.push({
+        file: entryPointsFile, line: lines.length, column: lines.at(-1).length + 1, severity: "error", code: "entry-points",
+        message: `the host names ${name}, but ${problem}`,
+      });
+    }
+  }
+  return errors;
 }
 
 function formatDiagnostic(d) {
@@ -221,13 +268,18 @@ async function serve(compiler, sources) {
 }
 
 const compiler = await loadCompiler();
-const sources = readSources();
+const library = readSources(sourceDir);
+const tests = readSources(testDir);
 if (process.argv.includes("--check")) {
-  const diagnostics = await checkSources(compiler, sources);
+  const isError = (d) => d.severity === "error";
+  const diagnostics = await checkSources(compiler, [...library, ...tests]);
+  // The host's bridges load src/ alone, so it must compile without the tests.
+  if (!diagnostics.some(isError)) diagnostics.push(...(await checkSources(compiler, library)).filter(isError));
+  diagnostics.push(...checkEntryPoints(library));
   for (const d of diagnostics) console.log(formatDiagnostic(d));
-  const errors = diagnostics.filter((d) => d.severity === "error").length;
-  console.log(`Q#: ${sources.length} files, ${errors} errors, ${diagnostics.length - errors} warnings`);
+  const errors = diagnostics.filter(isError).length;
+  console.log(`Q#: ${library.length} library files, ${tests.length} test files, ${errors} errors, ${diagnostics.length - errors} warnings`);
   process.exit(errors > 0 ? 1 : 0);
 } else {
-  await serve(compiler, sources);
+  await serve(compiler, process.env.QRT_QSHARP_TESTS === "1" ? [...library, ...tests] : library);
 }

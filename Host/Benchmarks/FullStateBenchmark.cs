@@ -69,7 +69,7 @@ public static class FullStateBenchmark
     {
         using var fresh = pool is null ? new BridgePool(workers) : null;
         pool ??= fresh!;
-        var floor = CallFloorMilliseconds(pool.Bridges[0], variant == Variant.Current ? FullStateEngine.BatchOperation : BaselineEngine.Operation);
+        var floor = CallFloorMilliseconds(pool.Bridges[0], variant == Variant.Current ? QSharpOperations.MeasureGroverBatch : QSharpOperations.MeasureGroverBatchWithControlledZ);
         var (requests, time) = (pool.Requests, pool.RequestTime);
         var root = new SeededRandom(seed);
         var engine = variant == Variant.Current ? (IGroverEngine)new FullStateEngine(pool, ownsPool: false) : new BaselineEngine(pool);
@@ -102,8 +102,6 @@ public static class FullStateBenchmark
     /// </summary>
     private sealed class BaselineEngine(BridgePool pool) : IGroverEngine
     {
-        public const string Operation = "QuantumRayTracing.Search.MeasureGroverBatchWithControlledZ";
-
         public long GroverRuns { get; private set; }
 
         public string Name => "fullstate (baseline)";
@@ -111,8 +109,8 @@ public static class FullStateBenchmark
         public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
         {
             GroverRuns += requests.Count;
-            return BridgeBatches.Measure(pool, requests, ChunkLimits.Count(FullStateEngine.DefaultMaxRequestsPerCall), Operation,
-                r => FullStateEngine.BatchExpression(r, Operation));
+            return BridgeBatches.Measure(pool, requests, ChunkLimits.Count(FullStateEngine.DefaultMaxRequestsPerCall), QSharpOperations.MeasureGroverBatchWithControlledZ,
+                r => FullStateEngine.BatchExpression(r, QSharpOperations.MeasureGroverBatchWithControlledZ));
         }
 
         public void Dispose() { }

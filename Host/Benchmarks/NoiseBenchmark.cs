@@ -48,8 +48,8 @@ public static class NoiseBenchmark
                 Say($"device experiment: {NoiseBenchSettings.DeviceRates.Length} error rates x {settings.DeviceShots} shots");
                 device = DeviceExperiment(pool, NoiseBenchSettings.DeviceRates, settings.DeviceShots);
                 var argument = GateEngine.OracleArgument(DeviceExperimentScene.Ray());
-                deviceSearch = Trace(pool, $"QuantumRayTracing.Intersection.MeasureGateGroverSearch({argument}, 1)");
-                deviceOracle = Trace(pool, $"QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters({argument})");
+                deviceSearch = Trace(pool, $"{QSharpOperations.MeasureGateGroverSearch}({argument}, 1)");
+                deviceOracle = Trace(pool, $"{QSharpOperations.ApplyIntersectionOracleOnNewRegisters}({argument})");
             }
         }
         var sweeps = new List<NoisyRenderBenchmark.Sweep>();

@@ -12,8 +12,6 @@ namespace QuantumRayTracing.Benchmarks;
 /// </summary>
 public static class SimulatorMemoryBenchmark
 {
-    public const string Operation = "QuantumRayTracing.Capacity.MeasureDenseState";
-
     public sealed record Row(int Qubits, long IdleBytes, long PeakBytes, TimeSpan Elapsed)
     {
         public double Amplitudes => Math.Pow(2, Qubits);
@@ -24,11 +22,11 @@ public static class SimulatorMemoryBenchmark
     public static Row Measure(int qubits, BridgeOptions? options = null)
     {
         using var bridge = new QSharpBridge(options ?? new BridgeOptions());
-        bridge.Run($"{Operation}(1)");
+        bridge.Run($"{QSharpOperations.MeasureDenseState}(1)");
         var pid = bridge.ProcessId ?? throw new BridgeException("the bridge is not running after start-up");
         var idle = PeakResidentBytes(pid);
         var clock = Stopwatch.StartNew();
-        bridge.Run($"{Operation}({qubits.ToString(CultureInfo.InvariantCulture)})");
+        bridge.Run($"{QSharpOperations.MeasureDenseState}({qubits.ToString(CultureInfo.InvariantCulture)})");
         var elapsed = clock.Elapsed;
         return new Row(qubits, idle, PeakResidentBytes(pid), elapsed);
     }

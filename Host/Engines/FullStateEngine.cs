@@ -21,10 +21,6 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
     /// <summary>Large enough to amortise the ~60 ms compile of every QDK call, small enough to spread over workers.</summary>
     public const int DefaultMaxRequestsPerCall = 500;
 
-    public const string BatchOperation = "QuantumRayTracing.Search.MeasureGroverBatch";
-
-    public const string ScheduleOperation = "QuantumRayTracing.Search.MeasureGroverSchedules";
-
     public string Name => "fullstate";
 
     /// <summary>The noise every call runs under.</summary>
@@ -41,7 +37,7 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
     public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
     {
         CheckCapacity(requests);
-        var measured = BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), BatchOperation, BatchExpression, Noise);
+        var measured = BridgeBatches.Measure(pool, requests, ChunkLimits.Count(maxRequestsPerCall), QSharpOperations.MeasureGroverBatch, BatchExpression, Noise);
         Interlocked.Add(ref _runs, requests.Count);
         return measured;
     }
@@ -69,9 +65,9 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
     /// <summary>The runs of each schedule up to its first marked index, each index checked against its N.</summary>
     private int[][] ParseSchedules(IReadOnlyList<IReadOnlyList<GroverRequest>> schedules, string value)
     {
-        var measured = JsonSerializer.Deserialize<int[][]>(value) ?? throw new BridgeException($"{ScheduleOperation} returned no value");
+        var measured = JsonSerializer.Deserialize<int[][]>(value) ?? throw new BridgeException($"{QSharpOperations.MeasureGroverSchedules} returned no value");
         if (measured.Length != schedules.Count)
-            throw new BridgeException($"{ScheduleOperation} returned {measured.Length} outcome lists for {schedules.Count} searches");
+            throw new BridgeException($"{QSharpOperations.MeasureGroverSchedules} returned {measured.Length} outcome lists for {schedules.Count} searches");
         for (var k = 0; k < schedules.Count; k++)
         {
             var runs = schedules[k];
@@ -79,14 +75,14 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
             var firstMarked = Array.FindIndex(outcomes, i => i >= 0 && i < runs[0].Marked.Count && runs[0].Marked.Contains(i));
             var expected = firstMarked < 0 ? runs.Count : firstMarked + 1;
             if (outcomes.Length != expected)
-                throw new BridgeException($"{ScheduleOperation} returned {outcomes.Length} outcomes for a schedule of {runs.Count} runs, expected {expected}");
-            foreach (var index in outcomes) BridgeBatches.CheckIndex(ScheduleOperation, index, runs[0], Noise);
+                throw new BridgeException($"{QSharpOperations.MeasureGroverSchedules} returned {outcomes.Length} outcomes for a schedule of {runs.Count} runs, expected {expected}");
+            foreach (var index in outcomes) BridgeBatches.CheckIndex(QSharpOperations.MeasureGroverSchedules, index, runs[0], Noise);
         }
         return measured;
     }
 
     /// <summary>The Q# call for a batch: <c>MeasureGroverBatch([(N, [marked…], r), …])</c>, or the same call of another operation with that signature.</summary>
-    public static string BatchExpression(IReadOnlyList<GroverRequest> requests) => BatchExpression(requests, BatchOperation);
+    public static string BatchExpression(IReadOnlyList<GroverRequest> requests) => BatchExpression(requests, QSharpOperations.MeasureGroverBatch);
 
     /// <inheritdoc cref="BatchExpression(IReadOnlyList{GroverRequest})"/>
     public static string BatchExpression(IReadOnlyList<GroverRequest> requests, string operation) =>
@@ -94,7 +90,7 @@ public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = Fu
 
     /// <summary>The Q# call for schedules: <c>MeasureGroverSchedules([(N, [marked…], [r₁, r₂, …]), …])</c>.</summary>
     public static string ScheduleExpression(IReadOnlyList<IReadOnlyList<GroverRequest>> schedules) =>
-        Call(ScheduleOperation, schedules, s => s[0], (text, s) => IntArray(text, s.Select(r => r.Iterations).ToArray()));
+        Call(QSharpOperations.MeasureGroverSchedules, schedules, s => s[0], (text, s) => IntArray(text, s.Select(r => r.Iterations).ToArray()));
 
     /// <summary><c>operation([(N, [marked…], last), …])</c>: one tuple per item, <paramref name="last"/> writing its last element.</summary>
     private static string Call<T>(string operation, IReadOnlyList<T> items, Func<T, GroverRequest> request, Func<StringBuilder, T, StringBuilder> last)

@@ -55,12 +55,6 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
     /// <summary>A request's simulation cost: (r + 1) · N², the preparation counted as one iteration.</summary>
     public static double Cost(GroverRequest request) => (request.Iterations + 1.0) * request.Marked.Count * request.Marked.Count;
 
-    public const string BatchOperation = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";
-
-    public const string InputType = "QuantumRayTracing.Intersection.IntersectionInput";
-
-    public const string ConstructionType = "QuantumRayTracing.Intersection.OracleConstruction";
-
     public string Name => "gate";
 
     public IReadOnlyList<int> Measure(IReadOnlyList<GroverRequest> requests)
@@ -78,13 +72,13 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         // The whole batch is checked before any of it is sent, so a refused render allocates nothing.
         if (widest is { } wide && wide.Registers.PeakQubits > maxQubits)
             throw new QubitLimitException(wide.Input, wide.Registers, maxQubits);
-        return BridgeBatches.Measure(pool, requests, new ChunkLimits(maxRequestsPerCall, Cost, MaxCostPerCall), BatchOperation, BatchExpression, Noise);
+        return BridgeBatches.Measure(pool, requests, new ChunkLimits(maxRequestsPerCall, Cost, MaxCostPerCall), QSharpOperations.MeasureGateGroverBatch, BatchExpression, Noise);
     }
 
     /// <summary>The Q# call for a batch: <c>MeasureGateGroverBatch([(input, r), …])</c>.</summary>
     public static string BatchExpression(IReadOnlyList<GroverRequest> requests)
     {
-        var text = new StringBuilder(BatchOperation).Append("([");
+        var text = new StringBuilder(QSharpOperations.MeasureGateGroverBatch).Append("([");
         for (var k = 0; k < requests.Count; k++)
         {
             if (k > 0) text.Append(", ");
@@ -108,7 +102,7 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         var geometry = input.Geometry;
         var constants = OracleConstants.For(input);
         var n = table.Count;
-        var text = new StringBuilder("new ").Append(InputType).Append(" { CoordinateBits = ").Append(Int(table.CoordinateBits))
+        var text = new StringBuilder("new ").Append(QSharpTypes.IntersectionInput).Append(" { CoordinateBits = ").Append(Int(table.CoordinateBits))
             .Append(", DepthBits = ").Append(Int(table.DepthBits)).Append(", Bounds = [");
         for (var p = 0; p < n; p++)
         {
@@ -132,7 +126,7 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         for (var p = 0; p < n; p++)
             text.Append(p > 0 ? ", " : "").Append(Int(geometry.Rectangles[p].FlatAxis));
         var construction = input.Construction;
-        return text.Append("], Construction = new ").Append(ConstructionType)
+        return text.Append("], Construction = new ").Append(QSharpTypes.OracleConstruction)
             .Append(" { InPlaneAxes = ").Append(Bool(construction.InPlaneAxes))
             .Append(", BothBounds = ").Append(Bool(construction.BothBounds))
             .Append(", MeasuredUnload = ").Append(Bool(construction.MeasuredUnload)).Append(" } }").ToString();

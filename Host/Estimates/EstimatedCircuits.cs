@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
 
@@ -9,44 +10,40 @@ namespace QuantumRayTracing.Estimates;
 /// </summary>
 public static class EstimatedCircuits
 {
-    private const string Intersection = "QuantumRayTracing.Intersection.";
-
     /// <summary>Int_r (paper fig. 3) applied once, XORing i_r(p) into a fresh output qubit: the paper's table 9 circuit.</summary>
     public static readonly EstimatedCircuit Oracle = new(
         "oracle",
         "the intersection oracle Int_r once (compute the flags, XOR their AND into the output, uncompute)",
-        s => $"{Intersection}ApplyIntersectionOracleOnNewRegisters({GateEngine.OracleArgument(s.Oracle)})",
+        s => $"{QSharpOperations.ApplyIntersectionOracleOnNewRegisters}({GateEngine.OracleArgument(s.Oracle)})",
         s => OracleRegisters.ForOracle(s.Oracle));
 
     /// <summary>One Grover iteration: the phase oracle and the reflection about the uniform superposition over N.</summary>
     public static readonly EstimatedCircuit GroverIteration = new(
         "Grover iteration",
         "one Grover iteration: the phase oracle, then the reflection about the uniform superposition over N",
-        s => $"{Intersection}ApplyGateGroverIterationOnNewRegisters({GateEngine.OracleArgument(s.Oracle)})",
+        s => $"{QSharpOperations.ApplyGateGroverIterationOnNewRegisters}({GateEngine.OracleArgument(s.Oracle)})",
         s => OracleRegisters.For(s.Oracle));
 
     /// <summary>One QSearch run: prepare the uniform superposition, r iterations, measure the index.</summary>
     public static readonly EstimatedCircuit SearchRun = new(
         "QSearch run",
         "one run of QSearch: prepare the uniform superposition over N, r Grover iterations, measure the index",
-        s => $"{Intersection}MeasureGateGroverSearch({GateEngine.OracleArgument(s.Oracle)}, {s.Iterations.ToString(CultureInfo.InvariantCulture)})",
+        s => $"{QSharpOperations.MeasureGateGroverSearch}({GateEngine.OracleArgument(s.Oracle)}, {s.Iterations.ToString(CultureInfo.InvariantCulture)})",
         s => OracleRegisters.For(s.Oracle),
         RepeatsIterations: true);
-
-    private const string Supersampling = "QuantumRayTracing.Supersampling.";
 
     /// <summary>The QSS circuit: subpixel register in superposition, counter-controlled Grover powers, inverse QFT, measurement.</summary>
     public static readonly EstimatedCircuit QssReadout = new(
         "QSS readout",
         "quantum supersampling: the subpixels in superposition, 2^i coin Grover operators controlled by counter bit i, inverse QFT, measure the counter",
-        s => $"{Supersampling}MeasureQssReadout({s.SubpixelValues}, {s.CounterBits.ToString(CultureInfo.InvariantCulture)})",
+        s => $"{QSharpOperations.MeasureQssReadout}({s.SubpixelValues}, {s.CounterBits.ToString(CultureInfo.InvariantCulture)})",
         _ => null);
 
     /// <summary>One QCoin step: the shifted coin Q_F,E, one Grover operator G_F,E, one flip.</summary>
     public static readonly EstimatedCircuit QCoinStep = new(
         "QCoin step",
         "one QCoin step (i = 1): prepare the shifted coin Q_F,E, apply its Grover operator G_F,E once, flip (measure the coin)",
-        s => $"{Supersampling}CountCoinHeads(true, {s.SubpixelValues}, 1, 1)",
+        s => $"{QSharpOperations.CountCoinHeads}(true, {s.SubpixelValues}, 1, 1)",
         _ => null);
 
     /// <summary>The circuits of one ray, for the oracle's tables and checks.</summary>

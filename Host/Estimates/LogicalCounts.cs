@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using QuantumRayTracing.Bridge;
 
 namespace QuantumRayTracing.Estimates;
 
@@ -28,7 +29,7 @@ public sealed record LogicalCounts(int Qubits, long T, long Rotations, long Rota
     /// takes no CCiX count: circuits with CCiX gates are refused rather than priced as something else.
     /// </summary>
     public string AccountingExpression => Ccix == 0
-        ? FormattableString.Invariant($"QuantumRayTracing.Estimation.AccountForLogicalCounts({Qubits}, {T}, {Rotations}, {RotationDepth}, {Ccz}, {Measurements})")
+        ? FormattableString.Invariant($"{QSharpOperations.AccountForLogicalCounts}({Qubits}, {T}, {Rotations}, {RotationDepth}, {Ccz}, {Measurements})")
         : throw new NotSupportedException($"counts with {Ccix} CCiX gates cannot be priced from counts alone");
 
     public static LogicalCounts Parse(JsonNode estimate)

@@ -89,7 +89,7 @@ public static class NoiseCheck
     {
         var outside = NoiseLocations.PrepareAndMeasure(request.Marked.Count);
         if (request.Oracle is not { } oracle) return outside + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked);
-        var expression = $"QuantumRayTracing.Intersection.ApplyGateGroverIterationOnNewRegisters({GateEngine.OracleArgument(oracle)})";
+        var expression = $"{QSharpOperations.ApplyGateGroverIterationOnNewRegisters}({GateEngine.OracleArgument(oracle)})";
         double perIteration;
         lock (GateIterationCache)
         {

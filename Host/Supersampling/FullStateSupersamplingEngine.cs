@@ -19,10 +19,6 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     /// <summary>The noise every call runs under.</summary>
     public NoiseModel Noise { get; } = noise ?? NoiseModel.None;
 
-    public const string CoinOperation = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
-    public const string DirectCoinOperation = "QuantumRayTracing.Supersampling.CountDirectCoinHeadsBatch";
-    public const string QssOperation = "QuantumRayTracing.Supersampling.MeasureQssBatch";
-
     /// <summary>Oracle applications (each N controlled rotations) per call: a few seconds of simulation, far below the bridge's time limit.</summary>
     public const double MaxOracleCallsPerChunk = 20_000;
 
@@ -47,8 +43,8 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         var heads = new int[requests.Count];
         var direct = Enumerable.Range(0, requests.Count).Where(k => requests[k].Kind == CoinKind.Direct).ToArray();
         var subpixel = Enumerable.Range(0, requests.Count).Where(k => requests[k].Kind != CoinKind.Direct).ToArray();
-        FlipBatch(subpixel.Select(k => requests[k]).ToArray(), r => (double)r.Queries * r.Amplitudes.Length, CoinOperation, CoinExpression, subpixel, heads);
-        FlipBatch(direct.Select(k => requests[k]).ToArray(), r => r.Queries, DirectCoinOperation, DirectCoinExpression, direct, heads);
+        FlipBatch(subpixel.Select(k => requests[k]).ToArray(), r => (double)r.Queries * r.Amplitudes.Length, QSharpOperations.CountCoinHeadsBatch, CoinExpression, subpixel, heads);
+        FlipBatch(direct.Select(k => requests[k]).ToArray(), r => r.Queries, QSharpOperations.CountDirectCoinHeadsBatch, DirectCoinExpression, direct, heads);
         return heads;
     }
 
@@ -73,14 +69,14 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
             SimulatorCapacity.Check($"a QSS readout with {widest.CounterBits} counter bits over {widest.Amplitudes.Length} subpixels", qubits, qubits, MaxQubits);
         }
         var readouts = new int[requests.Count][];
-        Run(requests, r => (double)r.Shots * QssRequest.QueriesPerRun(r.CounterBits) * r.Amplitudes.Length, QssOperation, QssExpression, (chunk, start, json) =>
+        Run(requests, r => (double)r.Shots * QssRequest.QueriesPerRun(r.CounterBits) * r.Amplitudes.Length, QSharpOperations.MeasureQssBatch, QssExpression, (chunk, start, json) =>
         {
-            var values = JsonSerializer.Deserialize<int[][]>(json) ?? throw new BridgeException($"{QssOperation} returned no value");
-            if (values.Length != chunk.Count) throw new BridgeException($"{QssOperation} returned {values.Length} results for {chunk.Count} requests");
+            var values = JsonSerializer.Deserialize<int[][]>(json) ?? throw new BridgeException($"{QSharpOperations.MeasureQssBatch} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{QSharpOperations.MeasureQssBatch} returned {values.Length} results for {chunk.Count} requests");
             for (var k = 0; k < chunk.Count; k++)
             {
                 if (values[k].Length != chunk[k].Shots || values[k].Any(y => y < 0 || y >= 1 << chunk[k].CounterBits))
-                    throw new BridgeException($"{QssOperation} returned readouts outside 0..{(1 << chunk[k].CounterBits) - 1} or the wrong number of them");
+                    throw new BridgeException($"{QSharpOperations.MeasureQssBatch} returned readouts outside 0..{(1 << chunk[k].CounterBits) - 1} or the wrong number of them");
                 readouts[start + k] = values[k];
             }
         });
@@ -121,7 +117,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
 
     public static string CoinExpression(IReadOnlyList<CoinRequest> requests)
     {
-        var text = new StringBuilder(CoinOperation).Append("([");
+        var text = new StringBuilder(QSharpOperations.CountCoinHeadsBatch).Append("([");
         for (var k = 0; k < requests.Count; k++)
         {
             var r = requests[k];
@@ -137,7 +133,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     /// <summary>The direct coins' call: each request's head amplitude √f (<see cref="CoinProbability.HeadAmplitude"/>), m and flips.</summary>
     public static string DirectCoinExpression(IReadOnlyList<CoinRequest> requests)
     {
-        var text = new StringBuilder(DirectCoinOperation).Append("([");
+        var text = new StringBuilder(QSharpOperations.CountDirectCoinHeadsBatch).Append("([");
         for (var k = 0; k < requests.Count; k++)
         {
             var r = requests[k];
@@ -151,7 +147,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
 
     public static string QssExpression(IReadOnlyList<QssRequest> requests)
     {
-        var text = new StringBuilder(QssOperation).Append("([");
+        var text = new StringBuilder(QSharpOperations.MeasureQssBatch).Append("([");
         for (var k = 0; k < requests.Count; k++)
         {
             var r = requests[k];

@@ -16,7 +16,7 @@ namespace QuantumRayTracing.Intersection {
     /// The work registers, in |0⟩; they end in |0⟩.
     /// ## flag
     /// A qubit in |1⟩; it stays in |1⟩.
-    operation ApplyGateGroverIteration(tables : IntersectionTables, count : Int, index : Qubit[], registers : IntersectionRegisters, flag : Qubit) : Unit is Adj + Ctl {
+    internal operation ApplyGateGroverIteration(tables : IntersectionTables, count : Int, index : Qubit[], registers : IntersectionRegisters, flag : Qubit) : Unit is Adj + Ctl {
         ApplyIntersectionPhaseOracle(tables, index, registers, flag);
         ReflectAboutUniformSuperposition(count, Controlled Z(_, flag), index);
     }

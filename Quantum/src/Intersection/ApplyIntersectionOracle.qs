@@ -12,7 +12,7 @@ namespace QuantumRayTracing.Intersection {
     /// The work registers, in |0⟩; passed in so a caller can check they end in |0⟩.
     /// ## output
     /// The qubit i_r(p) is XORed into.
-    operation ApplyIntersectionOracle(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters, output : Qubit) : Unit is Adj + Ctl {
+    internal operation ApplyIntersectionOracle(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters, output : Qubit) : Unit is Adj + Ctl {
         within {
             ComputeIntersectionFlags(tables, index, registers);
         } apply {

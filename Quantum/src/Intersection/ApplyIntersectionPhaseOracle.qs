@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Intersection {
     /// ## flag
     /// A qubit held in |1⟩: the flags' AND controls a Z on it, which
     /// kicks the phase back. It stays in |1⟩.
-    operation ApplyIntersectionPhaseOracle(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters, flag : Qubit) : Unit is Adj + Ctl {
+    internal operation ApplyIntersectionPhaseOracle(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters, flag : Qubit) : Unit is Adj + Ctl {
         within {
             ComputeIntersectionFlags(tables, index, registers);
         } apply {

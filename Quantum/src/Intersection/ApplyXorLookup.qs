@@ -17,7 +17,7 @@ namespace QuantumRayTracing.Intersection {
     /// `Adjoint Select` uncomputes by measurement, which is only right when the target returns to
     /// |0…0⟩. A lookup that changes a loaded value into another (minimum into maximum) must be undone
     /// by applying it again.
-    operation ApplyXorLookup(data : Bool[][], address : Qubit[], target : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyXorLookup(data : Bool[][], address : Qubit[], target : Qubit[]) : Unit is Adj + Ctl {
         body (...) {
             Select(data, address, target);
         }

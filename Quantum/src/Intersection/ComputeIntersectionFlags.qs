@@ -35,7 +35,7 @@ namespace QuantumRayTracing.Intersection {
     /// The limit comparator reads the index register as the low bits and the depth register as
     /// the high bits of one number, so one comparison against a constant gives the lexicographic
     /// (depth, id) order.
-    operation ComputeIntersectionFlags(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters) : Unit is Adj {
+    internal operation ComputeIntersectionFlags(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters) : Unit is Adj {
         let (rpc, coord) = (registers.Rpc, registers.Coord);
         let c = tables.CoordinateBits;
         let (low, high) = tables.BoundRegisters == 2 ? (coord[...c - 1], coord[c...]) | (coord, coord);

@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Intersection {
     ///
     /// # Output
     /// [valid, the axis flags, near, limit].
-    function IntersectionFlags(registers : IntersectionRegisters) : Qubit[] {
+    internal function IntersectionFlags(registers : IntersectionRegisters) : Qubit[] {
         [registers.Valid] + registers.AxisFlags + registers.DepthFlags
     }
 }

@@ -18,7 +18,7 @@ namespace QuantumRayTracing.Intersection {
     /// The row's depth (DepthBits qubits).
     /// ## DepthFlags
     /// [near, limit]: depth ≥ Near, and (depth, p) below the limit.
-    struct IntersectionRegisters {
+    internal struct IntersectionRegisters {
         Rpc : Qubit[],
         Coord : Qubit[],
         AxisFlags : Qubit[],

@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Intersection {
     ///
     /// # Output
     /// The registers, in the order rpc, coord, axis flags, valid, depth, near limit.
-    function IntersectionRegistersOf(tables : IntersectionTables, work : Qubit[]) : IntersectionRegisters {
+    internal function IntersectionRegistersOf(tables : IntersectionTables, work : Qubit[]) : IntersectionRegisters {
         if Length(work) != IntersectionWorkQubits(tables) {
             fail $"expected {IntersectionWorkQubits(tables)} work qubits, got {Length(work)}";
         }

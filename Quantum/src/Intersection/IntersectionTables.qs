@@ -34,7 +34,7 @@ namespace QuantumRayTracing.Intersection {
     /// The near comparator's constant.
     /// ## Limit
     /// The limit comparator's constant.
-    struct IntersectionTables {
+    internal struct IntersectionTables {
         IndexBits : Int,
         CoordinateBits : Int,
         DepthBits : Int,

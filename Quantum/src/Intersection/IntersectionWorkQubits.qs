@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Intersection {
     ///
     /// # Output
     /// (1 + BoundRegisters) · CoordinateBits + Axes + 1 + DepthBits + 2.
-    function IntersectionWorkQubits(tables : IntersectionTables) : Int {
+    internal function IntersectionWorkQubits(tables : IntersectionTables) : Int {
         (1 + tables.BoundRegisters) * tables.CoordinateBits + tables.Axes + 1 + tables.DepthBits + 2
     }
 }

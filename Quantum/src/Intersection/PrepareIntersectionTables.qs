@@ -15,7 +15,7 @@ namespace QuantumRayTracing.Intersection {
     ///
     /// # Output
     /// The tables, one entry per primitive, and the comparator constants as BigInt.
-    function PrepareIntersectionTables(input : IntersectionInput) : IntersectionTables {
+    internal function PrepareIntersectionTables(input : IntersectionInput) : IntersectionTables {
         let count = Length(input.Bounds);
         let (c, d) = (input.CoordinateBits, input.DepthBits);
         let construction = input.Construction;

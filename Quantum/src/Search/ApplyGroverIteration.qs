@@ -12,7 +12,7 @@ namespace QuantumRayTracing.Search {
     /// Index register holding a state prepared by `PrepareUniformSuperposition(count, _)`.
     /// ## auxiliaries
     /// `PhaseAuxiliaryCount(Length(index))` qubits in |0⟩; they end in |0⟩.
-    operation ApplyGroverIteration(count : Int, marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyGroverIteration(count : Int, marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
         ApplyMarkingOracle(marked, index, auxiliaries);
         ReflectAboutUniformSuperposition(count, ApplyPhaseToAllOnes(_, auxiliaries), index);
     }

@@ -20,7 +20,7 @@ namespace QuantumRayTracing.Search {
     /// index bits where m is 0 and applying a phase to the all-ones state; between consecutive
     /// marked values only the bits whose flip pattern changes are toggled, which removes most X
     /// gates when the set is sorted.
-    operation ApplyMarkingOracle(marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyMarkingOracle(marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
         if not IsEmpty(marked) {
             let allOnes = (1 <<< Length(index)) - 1;
             let flips = Mapped(m -> allOnes ^^^ m, marked);

@@ -18,7 +18,7 @@ namespace QuantumRayTracing.Search {
     /// # Remarks
     /// The standard library's `Controlled Z` allocates and releases n − 2 auxiliaries inside every
     /// gate, which costs the simulator more than the gates; `ApplyMarkingOracle` reuses its own.
-    operation ApplyMarkingOracleWithControlledZ(marked : Int[], index : Qubit[], flag : Qubit) : Unit is Adj + Ctl {
+    internal operation ApplyMarkingOracleWithControlledZ(marked : Int[], index : Qubit[], flag : Qubit) : Unit is Adj + Ctl {
         if not IsEmpty(marked) {
             let allOnes = (1 <<< Length(index)) - 1;
             let flips = Mapped(m -> allOnes ^^^ m, marked);

@@ -15,7 +15,7 @@ namespace QuantumRayTracing.Search {
     /// n ≥ 3. The caller allocates the auxiliaries once for many gates; the standard library's
     /// `Controlled Z` allocates and releases its own in every gate, which costs the simulator
     /// more than the gates themselves. On an empty register the phase is global and left out.
-    operation ApplyPhaseToAllOnes(register : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyPhaseToAllOnes(register : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
         let width = Length(register);
         if Length(auxiliaries) < PhaseAuxiliaryCount(width) {
             fail $"a phase on {width} qubits needs {PhaseAuxiliaryCount(width)} auxiliaries, got {Length(auxiliaries)}";
@@ -38,7 +38,7 @@ namespace QuantumRayTracing.Search {
 
     /// # Summary
     /// The number of auxiliary qubits `ApplyPhaseToAllOnes` needs for a register of `width` qubits.
-    function PhaseAuxiliaryCount(width : Int) : Int {
+    internal function PhaseAuxiliaryCount(width : Int) : Int {
         width > 2 ? width - 2 | 0
     }
 }

@@ -21,7 +21,7 @@ namespace QuantumRayTracing.Search {
     /// once for every gate of the search.
     /// When more than half the indices are marked the oracle marks the complement instead:
     /// that oracle is the original times −1, a global phase this uncontrolled search cannot see.
-    operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
+    internal operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
         if count < 1 {
             fail $"count must be at least 1, got {count}";
         }
@@ -45,7 +45,7 @@ namespace QuantumRayTracing.Search {
 
     /// # Summary
     /// Returns the indices in 0..count-1 that are not in `indices`, in ascending order.
-    function ComplementIndices(count : Int, indices : Int[]) : Int[] {
+    internal function ComplementIndices(count : Int, indices : Int[]) : Int[] {
         mutable isListed = [false, size = count];
         for i in indices {
             set isListed w/= i <- true;

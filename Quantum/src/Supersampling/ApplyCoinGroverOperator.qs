@@ -19,7 +19,7 @@ namespace QuantumRayTracing.Supersampling {
     /// # Remarks
     /// The global sign −1 is applied (X Z X Z = −I): QSS runs G under counter qubits, where it
     /// becomes a relative phase, and the eigenphases ±2θ that the inverse QFT reads assume it.
-    operation ApplyCoinGroverOperator(
+    internal operation ApplyCoinGroverOperator(
         prepare : (Qubit[] => Unit is Adj + Ctl),
         markHead : (Qubit[] => Unit is Adj + Ctl),
         qubits : Qubit[]

@@ -19,7 +19,7 @@ namespace QuantumRayTracing.Supersampling {
     /// For binary subpixels (a_i ∈ {0, 1}) this is the phase-marking oracle of the thesis (004)
     /// written with a coin: a_i = 1 flips the coin, and a Z on the coin marks the subpixel.
     /// A zero amplitude costs no gate.
-    operation ApplyCoinOracle(amplitudes : Double[], index : Qubit[], coin : Qubit) : Unit is Adj + Ctl {
+    internal operation ApplyCoinOracle(amplitudes : Double[], index : Qubit[], coin : Qubit) : Unit is Adj + Ctl {
         for i in 0..Length(amplitudes) - 1 {
             if AbsD(amplitudes[i]) > 0.0 {
                 ApplyControlledOnInt(i, Ry(2.0 * ArcSin(amplitudes[i]), _), index, coin);

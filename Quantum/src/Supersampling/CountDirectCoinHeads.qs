@@ -22,7 +22,7 @@ namespace QuantumRayTracing.Supersampling {
     /// # Remarks
     /// One qubit. The Grover operator −A S₀ A† S_χ is A Z A† Z here (S_χ = Z, and S₀ = −Z on one
     /// qubit), four gates with no global phase to repair: the coin is never run under control.
-    operation CountDirectCoinHeads(headAmplitude : Double, iterations : Int, flips : Int) : Int {
+    internal operation CountDirectCoinHeads(headAmplitude : Double, iterations : Int, flips : Int) : Int {
         let angle = 2.0 * ArcSin(headAmplitude);
         mutable heads = 0;
         use coin = Qubit();

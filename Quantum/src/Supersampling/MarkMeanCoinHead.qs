@@ -3,7 +3,7 @@ namespace QuantumRayTracing.Supersampling {
 
     /// # Summary
     /// S_χ of the mean coin: a phase of −1 wherever the coin qubit (last in `register`) is |1⟩.
-    operation MarkMeanCoinHead(register : Qubit[]) : Unit is Adj + Ctl {
+    internal operation MarkMeanCoinHead(register : Qubit[]) : Unit is Adj + Ctl {
         Z(Tail(register));
     }
 }

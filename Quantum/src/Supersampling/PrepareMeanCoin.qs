@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Supersampling {
     /// One amplitude per subpixel, N = Length(amplitudes) ≥ 1.
     /// ## register
     /// The subpixel register followed by the coin qubit, all in |0⟩.
-    operation PrepareMeanCoin(amplitudes : Double[], register : Qubit[]) : Unit is Adj + Ctl {
+    internal operation PrepareMeanCoin(amplitudes : Double[], register : Qubit[]) : Unit is Adj + Ctl {
         let index = Most(register);
         PrepareUniformSuperposition(Length(amplitudes), index);
         ApplyCoinOracle(amplitudes, index, Tail(register));

@@ -17,7 +17,7 @@ namespace QuantumRayTracing.Supersampling {
     /// # Remarks
     /// The paper writes the outer steps as H on every index qubit; the exact uniform preparation
     /// (and its adjoint) is the same for a power-of-two N and stays exact for any other N.
-    operation PrepareShiftedCoin(amplitudes : Double[], register : Qubit[]) : Unit is Adj + Ctl {
+    internal operation PrepareShiftedCoin(amplitudes : Double[], register : Qubit[]) : Unit is Adj + Ctl {
         let index = Most(register);
         within {
             PrepareUniformSuperposition(Length(amplitudes), index);

@@ -16,7 +16,7 @@ namespace QuantumRayTracing.Intersection {
     /// The measured output i_r(p), and the measured values of the registers [index, rpc, coord,
     /// axis flags, valid, depth, near limit]: p if the oracle left the index alone, then all 0 if
     /// it uncomputed every work register.
-    operation EvaluateIntersectionOracle(input : IntersectionInput, p : Int) : (Bool, Int[]) {
+    internal operation EvaluateIntersectionOracle(input : IntersectionInput, p : Int) : (Bool, Int[]) {
         let tables = PrepareIntersectionTables(input);
         if p < 0 or p >= Length(input.Bounds) {
             fail $"basis index {p} is outside 0..{Length(input.Bounds) - 1}";

@@ -50,7 +50,7 @@ namespace QuantumRayTracing.Search {
 
     /// # Summary
     /// Runs `action` with `control` in |+⟩ and returns whether the control came back in |+⟩.
-    operation HasSamePhase(control : Qubit, action : () => Unit) : Bool {
+    internal operation HasSamePhase(control : Qubit, action : () => Unit) : Bool {
         H(control);
         action();
         H(control);
