@@ -23,7 +23,8 @@ public sealed class FrameCostTests(FullStateFixture fixture)
     public void FrameFiguresAreTheSumsOfThePerRunEstimatesAndTheSplitKeepsTheFrameWithinItsBudget()
     {
         var scene = SceneLoader.Load(Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"));
-        var options = new RenderOptions(4, 4, Seed: 7);
+        // 2x2 pixels: enough runs of different circuits for the sums to be sums, a quarter of the runs to price.
+        var options = new RenderOptions(2, 2, Seed: 7);
         var search = new QSearchOptions();
         var models = QubitModel.Defaults;
         var frame = FrameEstimate.Run(new FrameSettings(scene, options, search, OracleConstruction.Default, models, Budget, Qpus: 1), fixture.Engine.Pool);
@@ -41,6 +42,7 @@ public sealed class FrameCostTests(FullStateFixture fixture)
         // Each run's own circuit, at ε / R and at ε; identical expressions are the same circuit, estimated once.
         var expressions = quantum.Select(r => EstimatedCircuits.SearchRun.Expression(new EstimateSubject(r.Oracle!, r.Iterations, ""))).ToArray();
         var distinct = expressions.Distinct().ToArray();
+        Assert.True(distinct.Length >= 2, $"{quantum.Length} runs of {distinct.Length} distinct circuits: the sums would test nothing");
         IReadOnlyDictionary<string, CircuitEstimate> Estimate(double budget)
         {
             var estimator = new ResourceEstimator(fixture.Engine.Pool, models.Select(m => m with { Budget = budget }).ToArray(), withCircuits: false);
