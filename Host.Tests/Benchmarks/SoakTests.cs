@@ -183,7 +183,7 @@ public sealed class SoakTests : IDisposable
         Assert.Contains("2 ok, 0 FAILED, 0 skipped", text);
 
         File.WriteAllText(Path.Combine(scenes, "broken.json"), "{ \"name\": ");
-        Assert.Equal(BenchSoakCommand.ChecksFailed, ConsoleCaptureRun(arguments));
+        Assert.Equal(ExitCodes.ChecksFailed, ConsoleCaptureRun(arguments));
         text = File.ReadAllText(_scratch.File("soak.md"));
         Assert.Contains("| broken |", text);
         Assert.Contains("FAILED: scene does not load: ", text);

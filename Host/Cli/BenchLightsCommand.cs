@@ -37,7 +37,7 @@ public sealed class BenchLightsCommand : Command
         _report.AddTo(this, workers: false);
         _size.Between(1, 1024);
         _imageSize.Between(1, 1024);
-        _referenceSamples.Between(1, RenderCommand.MaxSamples);
+        _referenceSamples.Between(1, CommonOptions.MaxSamples);
         SetAction(Execute);
     }
 

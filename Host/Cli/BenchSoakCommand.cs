@@ -102,8 +102,8 @@ public sealed class BenchSoakCommand : Command
         });
         _size.Between(1, 1024);
         _gateSize.Between(1, 64);
-        _areaSamples.Between(1, RenderCommand.MaxSamples);
-        _vpl.Between(0, RenderCommand.MaxSamples);
+        _areaSamples.Between(1, CommonOptions.MaxSamples);
+        _vpl.Between(0, CommonOptions.MaxSamples);
         _maxQubits.Between(1, 100_000);
         _gateBudget.Validators.Add(r =>
         {

@@ -27,17 +27,9 @@ public sealed class EngineOptions
 
     public readonly Option<EngineKind> Engine;
 
-    public readonly Option<ulong> Seed = new("--seed")
-    {
-        Description = "Seed of every classical random choice (QSearch's iteration counts, analytic outcomes, random primitives).",
-        DefaultValueFactory = _ => 1UL,
-    };
+    public readonly Option<ulong> Seed = CommonOptions.Seed("Seed of every classical random choice (QSearch's iteration counts, analytic outcomes, random primitives).");
 
-    public readonly Option<int> Workers = new("--workers")
-    {
-        Description = "Node bridge processes running Q# in parallel (fullstate engine). Default: the core count.",
-        DefaultValueFactory = _ => BridgePool.DefaultWorkers,
-    };
+    public readonly Option<int> Workers = CommonOptions.Workers("Node bridge processes running Q# in parallel (fullstate engine). Default: the core count.");
 
     public readonly Option<int?> MaxQubits = new("--max-qubits")
     {
@@ -57,11 +49,7 @@ public sealed class EngineOptions
         HelpName = "L",
     };
 
-    public readonly Option<FileInfo?> Cluster = new("--cluster")
-    {
-        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.",
-        HelpName = "file",
-    };
+    public readonly Option<FileInfo?> Cluster = CommonOptions.LocalBridgesOrCluster();
 
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
@@ -87,7 +75,6 @@ public sealed class EngineOptions
             if (!_accepted.Contains(kind))
                 result.AddError($"--engine {EngineFactory.Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(EngineFactory.Name))}");
         });
-        Workers.AtLeast(1);
         MaxQubits.Between(1, 100_000);
         Noise.Validators.Add(result =>
         {

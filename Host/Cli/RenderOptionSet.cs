@@ -81,8 +81,8 @@ public sealed class RenderOptionSet
 
     public RenderOptionSet()
     {
-        AreaSamples.Between(1, RenderCommand.MaxSamples);
-        Vpl.Between(0, RenderCommand.MaxSamples);
+        AreaSamples.Between(1, CommonOptions.MaxSamples);
+        Vpl.Between(0, CommonOptions.MaxSamples);
         PlannedMiss.Validators.Add(r =>
         {
             if (r.GetValueOrDefault<double?>() is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");

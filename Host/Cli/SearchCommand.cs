@@ -1,5 +1,4 @@
 using System.CommandLine;
-using System.Globalization;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
 using Spectre.Console;
@@ -67,13 +66,7 @@ public sealed class SearchCommand : Command
         var settings = new SearchRunSettings(parse.GetValue(_count), parse.GetResult(_marked) is null ? null : parse.GetValue(_marked) ?? [],
             parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges);
-        var (marked, registers) = (settings.MarkedSet, settings.Registers);
-
-        AnsiConsole.WriteLine($"N = {settings.Count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", settings.Schedule.Bounds)}}}");
-        AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index qubits + {registers.AuxiliaryQubits} auxiliaries for the multi-controlled phase");
-        var noise = EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
-        AnsiConsole.WriteLine($"noise model: {noise}");
-
+        SearchRunView.PrintPlan(settings);
         var run = AnsiConsole.Profile.Capabilities.Interactive
             ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
             {
@@ -81,26 +74,8 @@ public sealed class SearchCommand : Command
                 return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
             })
             : SearchRun.Run(settings);
-
-        var figures = run.Figures;
-        var table = new Table().AddColumns("measure", "value");
-        table.AddRow("searches", N(figures.Searches));
-        table.AddRow("found / not found", $"{N(figures.Found)} / {N(figures.NotFound)}");
-        table.AddRow("#Eval per search, conservative", Per(figures.QueriesConservativePerSearch));
-        table.AddRow("#Eval per search, paper", Per(figures.QueriesPaperPerSearch));
-        table.AddRow("#C_Int per search", Per(figures.ClassicalTestsPerSearch));
-        table.AddRow("Grover runs per search", Per(figures.GroverRunsPerSearch));
-        table.AddRow("engine calls (rounds)", N(figures.Rounds));
-        table.AddRow("noise model", noise);
-        table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
-        table.AddRow("ran on", Markup.Escape(run.RanOn.Description));
-        AnsiConsole.Write(table);
-        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
-        _json.Write(parse, figures, _engine, run.RanOn);
-        return 0;
+        SearchRunView.Print(settings, run);
+        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        return ExitCodes.Success;
     }
-
-    private static string Per(double value) => value.ToString("0.00", CultureInfo.InvariantCulture);
-
-    private static string N(int value) => value.ToString(CultureInfo.InvariantCulture);
 }
