@@ -4,6 +4,7 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Tests.Engines;
 
@@ -193,8 +194,8 @@ public sealed class SoakTests : IDisposable
     [Fact]
     public void TheDefaultSceneDirectoryIsTheRepositorysScenes()
     {
-        Assert.Equal(RepositoryPaths.Scenes, BenchSoakCommand.RepositoryScenes(Path.Combine(RepositoryPaths.Root, "Host", "Cli")));
-        Assert.Null(BenchSoakCommand.RepositoryScenes(_scratch.Path));
+        Assert.Equal(RepositoryPaths.Scenes, RepositoryScenes.Find(Path.Combine(RepositoryPaths.Root, "Host", "Cli")));
+        Assert.Null(RepositoryScenes.Find(_scratch.Path));
     }
 
     [Fact]

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 
 namespace QuantumRayTracing.Cli;
@@ -25,11 +26,7 @@ public sealed class BenchNoiseCommand : Command
         DefaultValueFactory = _ => 1024,
     };
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Pixels per side of the noisy renders on the analytic engine.",
-        DefaultValueFactory = _ => 128,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Pixels per side of the noisy renders on the analytic engine.", 128);
 
     private readonly Option<int> _confirmSize = new("--confirm-size")
     {
@@ -60,16 +57,16 @@ public sealed class BenchNoiseCommand : Command
         Options.Add(_confirmRates);
         Options.Add(_parts);
         _report.AddTo(this, seed: false, cluster: true);
-        _size.Between(1, 1024);
         _confirmSize.Between(0, 128);
         _confirmRates.Validators.Add(r =>
         {
-            if ((r.GetValueOrDefault<double[]>() ?? []).Any(p => !(p > 0 && p <= 1))) r.AddError("--confirm-rates: each rate must lie in (0, 1]");
+            if (r.TryGetValue<double[]>(out var rates) && (rates ?? []).Any(p => !(p > 0 && p <= 1))) r.AddError("--confirm-rates: each rate must lie in (0, 1]");
         });
         _parts.Validators.Add(r =>
         {
-            foreach (var part in r.GetValueOrDefault<string[]>() ?? [])
-                if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of {string.Join(", ", NoiseBenchSettings.AllParts)}");
+            if (r.TryGetValue<string[]>(out var parts))
+                foreach (var part in parts ?? [])
+                    if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of {string.Join(", ", NoiseBenchSettings.AllParts)}");
         });
         _shots.Between(100, 1_000_000);
         _deviceShots.Between(16, 1_000_000);
@@ -88,7 +85,7 @@ public sealed class BenchNoiseCommand : Command
         writer.EnsureWritable(settings.PlotNames());
         using var cluster = _report.StartBridges(parse);
         var (report, machine) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(machine, cluster));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(machine, cluster));
+        return ExitCodes.Success;
     }
 }

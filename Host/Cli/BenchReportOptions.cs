@@ -58,13 +58,6 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
     public BridgePool? StartBridges(ParseResult parse) =>
         parse.GetValue(Cluster) is { } file ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers)) : null;
 
-    /// <summary>The lines closing every report: the machine, where the Q# work ran, and the command that regenerates it.</summary>
-    public static IReadOnlyList<string> Footer(string machine, BridgePool? cluster = null) =>
-    [
-        $"Machine: {machine}{(cluster is null ? "" : $"; Q# engines on {cluster.Where}")}.",
-        $"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.",
-    ];
-
     /// <summary>The scene <paramref name="stem"/>.json from the scene directory.</summary>
     public Scene Load(ParseResult parse, string stem) => SceneLoader.Load(Path.Combine(parse.GetValue(SceneDirectory)!.FullName, stem + ".json"));
 }
