@@ -2,6 +2,7 @@ using System.CommandLine;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes.Generation;
 using Spectre.Console;
 

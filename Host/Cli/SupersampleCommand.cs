@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Scenes.Generation;
 
