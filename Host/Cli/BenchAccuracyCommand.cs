@@ -20,9 +20,7 @@ public sealed class BenchAccuracyCommand : Command
 
     public BenchAccuracyCommand() : base("accuracy", "Wrong pixels and Int/Ray of the default pipeline on random scenes by size, beside --lattice 0 and the paper's plain pipeline (analytic engine).")
     {
-        Options.Add(_sizes);
-        Options.Add(_seeds);
-        Options.Add(_deepSize);
+        this.AddOptions(_sizes, _seeds, _deepSize);
         _report.AddTo(this, scenes: false, seed: false, workers: false);
         SetAction(Execute);
     }

@@ -18,9 +18,7 @@ public sealed class BenchClusterCommand : Command
 
     public BenchClusterCommand() : base("cluster", "A fullstate render and single bridge requests on local bridges against a cluster's workers.")
     {
-        Options.Add(_cluster);
-        Options.Add(_size);
-        Options.Add(_requests);
+        this.AddOptions(_cluster, _size, _requests);
         _report.AddTo(this);
         SetAction(Execute);
     }

@@ -30,9 +30,7 @@ public sealed class BenchFullStateCommand : Command
     public BenchFullStateCommand() : base("fullstate", "Whole renders on the fullstate engine against its baseline: ms per ray, bridge calls, time in calls against simulation, and the simulator-only floor.")
     {
         _report.AddTo(this, cluster: true);
-        Options.Add(_sceneNames);
-        Options.Add(_sizes);
-        Options.Add(_baselineLimit);
+        this.AddOptions(_sceneNames, _sizes, _baselineLimit);
         _baselineLimit.Validators.Add(r =>
         {
             if (r.TryGetValue<long>(out var limit) && limit < 0) r.AddError("--baseline-limit must be at least 0");

@@ -23,8 +23,7 @@ public sealed class BenchGroverCommand : Command
 
     public BenchGroverCommand() : base("grover", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")
     {
-        Options.Add(_sizes);
-        Options.Add(_batches);
+        this.AddOptions(_sizes, _batches);
         _report.AddTo(this, scenes: false, cluster: true);
         _batches.Validators.Add(r =>
         {

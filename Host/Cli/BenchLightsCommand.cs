@@ -19,9 +19,7 @@ public sealed class BenchLightsCommand : Command
 
     public BenchLightsCommand() : base("lights", "Area light and VPL indirect light (the paper's sec. 7): Int/Ray and error of the quantum and classical pipelines, with images beside their classical references.")
     {
-        Options.Add(_size);
-        Options.Add(_imageSize);
-        Options.Add(_referenceSamples);
+        this.AddOptions(_size, _imageSize, _referenceSamples);
         _report.AddTo(this, workers: false);
         SetAction(Execute);
     }

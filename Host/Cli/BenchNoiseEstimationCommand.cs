@@ -31,9 +31,7 @@ public sealed class BenchNoiseEstimationCommand : Command
 
     public BenchNoiseEstimationCommand() : base("noise-estimation", "Mean estimation under noise: the QCoin paper's fig. 10 (k against noise), fig. 12 (QSS against QCoin, MLAE and MC against the per-gate error), fig. 1 right (QCoin image under noise) and the noise-aware MLAE; -o docs/noise-estimation.md.")
     {
-        Options.Add(_trials);
-        Options.Add(_deviceRate);
-        Options.Add(_imageSize);
+        this.AddOptions(_trials, _deviceRate, _imageSize);
         _report.AddTo(this, scenes: false);
         _deviceRate.Validators.Add(r =>
         {

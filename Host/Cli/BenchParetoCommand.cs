@@ -22,8 +22,7 @@ public sealed class BenchParetoCommand : Command
 
     public BenchParetoCommand() : base("pareto", "Speed against error for every configuration of every engine (classical, randomized, analytic, fullstate), Pareto fronts marked, with PNG plots.")
     {
-        Options.Add(_scene);
-        Options.Add(_size);
+        this.AddOptions(_scene, _size);
         _report.AddTo(this, scenes: false, cluster: true);
         SetAction(Execute);
     }

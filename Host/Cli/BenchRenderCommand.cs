@@ -17,8 +17,7 @@ public sealed class BenchRenderCommand : Command
 
     public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
     {
-        Options.Add(_size);
-        Options.Add(_engineSize);
+        this.AddOptions(_size, _engineSize);
         _report.AddTo(this, cluster: true);
         SetAction(Execute);
     }

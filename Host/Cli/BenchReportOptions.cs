@@ -38,8 +38,7 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
         if (seed) command.Options.Add(Seed);
         if (workers) command.Options.Add(Workers);
         if (cluster) command.Options.Add(Cluster);
-        command.Options.Add(Output);
-        command.Options.Add(Csv);
+        command.AddOptions(Output, Csv);
     }
 
     /// <summary>The report's writer, its Markdown file checked writable before any work starts.</summary>

@@ -73,16 +73,7 @@ public sealed class BenchSoakCommand : Command
 
     public BenchSoakCommand() : base("soak", "Render every scene on every engine with two seeds; check each render (no exception, finite pixels, error against classical, same seed same bytes, another seed another render) and report failures.")
     {
-        Options.Add(_scenesToSoak);
-        Options.Add(_engines);
-        Options.Add(_seeds);
-        Options.Add(_short);
-        Options.Add(_size);
-        Options.Add(_gateSize);
-        Options.Add(_areaSamples);
-        Options.Add(_vpl);
-        Options.Add(_gateBudget);
-        Options.Add(_maxQubits);
+        this.AddOptions(_scenesToSoak, _engines, _seeds, _short, _size, _gateSize, _areaSamples, _vpl, _gateBudget, _maxQubits);
         _report.AddTo(this, scenes: false, seed: false, cluster: true);
         _engines.CustomParser = r => OptionText.ParseEngines(r, _engines.Name, SoakSettings.AllEngines);
         _seeds.Validators.Add(r =>

@@ -17,9 +17,7 @@ public sealed class BenchSupersampleCommand : Command
     {
         Options.Add(_trials);
         _report.Seed.Description = "Seed of the means and the analytic engine.";
-        Options.Add(_report.Seed);
-        Options.Add(_report.Output);
-        Options.Add(_report.Csv);
+        this.AddOptions(_report.Seed, _report.Output, _report.Csv);
         SetAction(Execute);
     }
 

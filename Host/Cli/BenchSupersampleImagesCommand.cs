@@ -17,10 +17,7 @@ public sealed class BenchSupersampleImagesCommand : Command
 
     public BenchSupersampleImagesCommand() : base("supersample-images", "Supersampling on rendered images: paper 003's fig. 1 (8x8 subpixels, 240 queries), thesis 004's tables 4.1/4.2 (4x4), and the confidence map against the error (analytic engine).")
     {
-        Options.Add(_seeds);
-        Options.Add(_sizes);
-        Options.Add(_report.Output);
-        Options.Add(_report.Csv);
+        this.AddOptions(_seeds, _sizes, _report.Output, _report.Csv);
         SetAction(Execute);
     }
 

@@ -19,6 +19,12 @@ public static class CommonOptions
     /// <summary>The most area samples or VPLs per point an option accepts.</summary>
     public const int MaxSamples = 4096;
 
+    /// <summary>Attaches options in the order help lists them.</summary>
+    public static void AddOptions(this Command command, params IEnumerable<Option> options)
+    {
+        foreach (var option in options) command.Options.Add(option);
+    }
+
     /// <summary>The scene file argument; left out, the built-in Qornell box.</summary>
     public static Argument<FileInfo?> SceneFile() => new("scene")
     {

@@ -65,20 +65,10 @@ public sealed class EstimateCommand : Command
     public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model. With --frame: what every Grover run of a whole frame costs, per pass.")
     {
         Arguments.Add(Scene);
-        Options.Add(Pixel);
-        Options.Add(WorstCase);
-        Options.Add(Size);
-        Options.Add(Iterations);
-        Options.Add(Subpixels);
-        Options.Add(CounterBits);
+        this.AddOptions(Pixel, WorstCase, Size, Iterations, Subpixels, CounterBits);
         Estimator.AddTo(this);
         Json.AddTo(this);
-        Options.Add(Frame);
-        Options.Add(ErrorBudget);
-        Options.Add(Qpus);
-        Options.Add(Output);
-        Options.Add(Cluster);
-        Options.Add(Engine.Seed);
+        this.AddOptions(Frame, ErrorBudget, Qpus, Output, Cluster, Engine.Seed);
         Render.AddTo(this);
         QSearch.AddTo(this);
         Pixel.Validators.Add(r =>

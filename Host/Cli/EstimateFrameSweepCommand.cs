@@ -45,17 +45,7 @@ public sealed class EstimateFrameSweepCommand : Command
 
     public EstimateFrameSweepCommand() : base("frame-sweep", "Whole-frame costs on fault-tolerant machines: Qornell-64 and Depth Complexity 64 at several sizes, the Qornell box against N, on every model given, as Markdown with a plot.")
     {
-        Options.Add(_sizes);
-        Options.Add(_primitives);
-        Options.Add(_scalingSize);
-        Options.Add(_detailedSize);
-        Options.Add(_errorBudget);
-        Options.Add(_qpus);
-        Options.Add(_output);
-        Options.Add(_seed);
-        Options.Add(_options.Oracle);
-        Options.Add(_options.Models);
-        Options.Add(_options.Workers);
+        this.AddOptions(_sizes, _primitives, _scalingSize, _detailedSize, _errorBudget, _qpus, _output, _seed, _options.Oracle, _options.Models, _options.Workers);
         _sizes.Validators.Add(r =>
         {
             if (r.TryGetValue<int[]>(out var values) && (values is not { Length: > 0 } || values.Any(s => s < 1 || s > SceneLoader.MaxImageSide)))

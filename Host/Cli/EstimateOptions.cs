@@ -56,9 +56,7 @@ public sealed class EstimateOptions
 
     public void AddTo(Command command, bool withFormat = true)
     {
-        command.Options.Add(Oracle);
-        command.Options.Add(Models);
-        command.Options.Add(NoCircuit);
+        command.AddOptions(Oracle, Models, NoCircuit);
         if (withFormat) command.Options.Add(Format);
         command.Options.Add(Workers);
     }

@@ -26,10 +26,7 @@ public sealed class EstimateSweepCommand : Command
 
     public EstimateSweepCommand() : base("sweep", "The oracle's estimates against the number of primitives (4..512) and the coordinate bits (2..8), before and after the compact construction, as Markdown.")
     {
-        Options.Add(_primitives);
-        Options.Add(_bits);
-        Options.Add(_ablation);
-        Options.Add(_output);
+        this.AddOptions(_primitives, _bits, _ablation, _output);
         _options.AddTo(this, withFormat: false);
         SetAction(Execute);
     }

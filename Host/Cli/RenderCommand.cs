@@ -37,10 +37,7 @@ public sealed class RenderCommand : Command
     public RenderCommand() : base("render", "Render a scene with quantum (or classical) ray searches; print cost per pass (paper table 1) and the error against the classical image.")
     {
         Arguments.Add(_scene);
-        Options.Add(_output);
-        Options.Add(_size);
-        Options.Add(_reference);
-        Options.Add(_referenceSamples);
+        this.AddOptions(_output, _size, _reference, _referenceSamples);
         _render.AddTo(this);
         _engine.AddTo(this);
         _qsearch.AddTo(this);

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
 using Spectre.Console;
@@ -11,11 +12,11 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class SearchCommand : Command
 {
-    private readonly Option<int> _count = new("--count", "-n")
+    private readonly Option<int> _count = new Option<int>("--count", "-n")
     {
         Description = "N, the number of indices searched (1 to 4096).",
         DefaultValueFactory = _ => 64,
-    };
+    }.Between(1, 4096);
 
     private readonly Option<int[]> _marked = new("--marked", "-m")
     {
@@ -24,11 +25,11 @@ public sealed class SearchCommand : Command
         Arity = ArgumentArity.ZeroOrMore,
     };
 
-    private readonly Option<int> _searches = new("--searches", "-s")
+    private readonly Option<int> _searches = new Option<int>("--searches", "-s")
     {
         Description = "Independent searches run side by side, one engine call per round for all of them.",
         DefaultValueFactory = _ => 100,
-    };
+    }.AtLeast(1);
 
     private readonly QSearchOptionSet _qsearch = new();
 
@@ -38,25 +39,31 @@ public sealed class SearchCommand : Command
 
     public SearchCommand() : base("search", "Grover search with QSearch (adaptive exponential search) over N indices with a given marked set.")
     {
-        Options.Add(_count);
-        Options.Add(_marked);
-        Options.Add(_searches);
+        this.AddOptions(_count, _marked, _searches);
         _qsearch.AddTo(this);
         _engine.AddTo(this);
         _json.AddTo(this);
-        _count.Between(1, 4096);
-        _searches.AtLeast(1);
-        Validators.Add(r =>
-        {
-            var n = r.GetValue(_count);
-            var marked = r.GetValue(_marked) ?? [];
-            var outside = marked.Where(m => m < 0 || m >= n).ToArray();
-            if (outside.Length > 0)
-                r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
-            else if (marked.Distinct().Count() != marked.Length)
-                r.AddError("--marked: an index is listed twice");
-        });
+        Validators.Add(EnsureMarkedIndicesAreDistinctAndBelowCount);
         SetAction(Execute);
+    }
+
+    private void EnsureMarkedIndicesAreDistinctAndBelowCount(CommandResult r)
+    {
+        int n;
+        int[] marked;
+        try
+        {
+            (n, marked) = (r.GetValue(_count), r.GetValue(_marked) ?? []);
+        }
+        catch (InvalidOperationException)
+        {
+            return; // a value that does not parse has its own error
+        }
+        var outside = marked.Where(m => m < 0 || m >= n).ToArray();
+        if (outside.Length > 0)
+            r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
+        else if (marked.Distinct().Count() != marked.Length)
+            r.AddError("--marked: an index is listed twice");
     }
 
     private int Execute(ParseResult parse)

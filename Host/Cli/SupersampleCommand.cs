@@ -31,11 +31,11 @@ public sealed class SupersampleCommand : Command
 
     private readonly Option<string?> _size = CommonOptions.ImageSize("Output size for a scene, WIDTHxHEIGHT or one number for a square; the scene is rendered at s times it. Default: the scene's size.");
 
-    private readonly Option<int> _subpixels = new("--subpixels")
+    private readonly Option<int> _subpixels = new Option<int>("--subpixels")
     {
         Description = "s: each output pixel averages s x s subpixels (4: 16 subpixels, 8: 64).",
         DefaultValueFactory = _ => DefaultSubpixels,
-    };
+    }.Between(1, 16);
 
     private readonly Option<SupersampleMethod> _method = new("--method", "-m")
     {
@@ -46,30 +46,30 @@ public sealed class SupersampleCommand : Command
         HelpName = "mc|qss|qcoin|mlae|mlae-noise",
     };
 
-    private readonly Option<long?> _queries = new("--queries", "-q")
+    private readonly Option<long?> _queries = new Option<long?>("--queries", "-q")
     {
         Description = $"Queries per pixel and channel for mc, qcoin, mlae and mlae-noise (a coin flip 1, a Grover operator 2). Default: {SupersampleSettings.DefaultQueries}. Not for qss, whose count follows from --counter-bits.",
-    };
+    }.Between(1, 100_000);
 
-    private readonly Option<int?> _steps = new("--steps")
+    private readonly Option<int?> _steps = new Option<int?>("--steps")
     {
         Description = "qcoin: shift-and-scale steps k. Default: the measured best k for the budget (4 at 240 queries).",
-    };
+    }.Between(1, 12);
 
-    private readonly Option<int?> _levels = new("--levels")
+    private readonly Option<int?> _levels = new Option<int?>("--levels")
     {
         Description = "mlae and mlae-noise: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
-    };
+    }.Between(0, 12);
 
-    private readonly Option<int?> _counterBits = new("--counter-bits", "-t")
+    private readonly Option<int?> _counterBits = new Option<int?>("--counter-bits", "-t")
     {
         Description = "qss: counter qubits t; a run costs 2^(t+1) - 1 queries. Default: ceil(log2 N) for bit planes (4 for 4x4), 7 for continuous values (255 queries).",
-    };
+    }.Between(1, 12);
 
-    private readonly Option<int?> _planes = new("--planes")
+    private readonly Option<int?> _planes = new Option<int?>("--planes")
     {
         Description = $"qss with bit planes: each channel quantised to P bits, one QSS run per bit plane. Default: {SupersampleSettings.DefaultPlanes} (exact for 8-bit inputs); 1 for black-and-white images.",
-    };
+    }.Between(1, 8);
 
     private readonly Option<QssValues?> _qssValues = new("--qss-values")
     {
@@ -85,28 +85,11 @@ public sealed class SupersampleCommand : Command
 
     public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from an image file or a scene) with Monte Carlo, QSS, QCoin or MLAE; print the error against the exact average.")
     {
-        Options.Add(_image);
-        Options.Add(_scene);
-        Options.Add(_size);
-        Options.Add(_subpixels);
-        Options.Add(_method);
-        Options.Add(_queries);
-        Options.Add(_steps);
-        Options.Add(_levels);
-        Options.Add(_counterBits);
-        Options.Add(_planes);
-        Options.Add(_qssValues);
-        Options.Add(_output);
+        this.AddOptions(_image, _scene, _size, _subpixels, _method, _queries, _steps, _levels, _counterBits, _planes, _qssValues, _output);
         _engine.AddTo(this);
         _json.AddTo(this);
         _method.Choices();
         _qssValues.Choices();
-        _subpixels.Between(1, 16);
-        _queries.Between(1, 100_000);
-        _steps.Between(1, 12);
-        _levels.Between(0, 12);
-        _counterBits.Between(1, 12);
-        _planes.Between(1, 8);
         Validators.Add(EnsureOneInputAndAMethodThatFits);
         SetAction(Execute);
     }

@@ -37,12 +37,7 @@ public sealed class WorkerCommand : Command
 
     public WorkerCommand() : base("worker", "Serve Q# chunks of renders on this machine's bridges, as a worker of a cluster (docs/cluster.md).")
     {
-        Options.Add(_cluster);
-        Options.Add(_workers);
-        Options.Add(_siloPort);
-        Options.Add(_gatewayPort);
-        Options.Add(_advertise);
-        Options.Add(_loadEvery);
+        this.AddOptions(_cluster, _workers, _siloPort, _gatewayPort, _advertise, _loadEvery);
         SetAction(parse =>
         {
             WorkerRun.Run(new WorkerSettings(parse.GetValue(_cluster)!.FullName, parse.GetValue(_workers), parse.GetValue(_siloPort),
