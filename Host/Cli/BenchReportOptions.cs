@@ -1,5 +1,4 @@
 using System.CommandLine;
-using System.Text;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Output;
@@ -10,8 +9,7 @@ namespace QuantumRayTracing.Cli;
 
 /// <summary>
 /// What every `bench` command that writes a report to docs/ shares: the scene directory, the seed, the
-/// bridge count, the output file (replaced only if this command wrote it) and the footer naming the
-/// machine and the command that regenerates the report.
+/// bridge count, the cluster, the output file (replaced only if this command wrote it) and its CSV tables.
 /// </summary>
 public sealed class BenchReportOptions(string commandLine, string outputExample)
 {

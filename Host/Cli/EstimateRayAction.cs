@@ -15,7 +15,7 @@ internal static class EstimateRayAction
         command.Json.EnsureWritable(parse, parse.GetValue(command.Scene) is { } sceneFile ? [sceneFile.FullName] : []);
         var scene = DefaultScene.Load(parse.GetValue(command.Scene));
         var geometry = new SceneGeometry(scene);
-        var (width, height) = OptionText.ParseSize(parse.GetValue(command.Size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
+        var (width, height) = OptionText.SizeOr(parse.GetValue(command.Size), scene);
         var construction = command.Estimator.Construction(parse);
         var (input, label) = OptionText.ParsePixel(parse.GetValue(command.Pixel)) is { Pixel: { } pixel }
             ? pixel.X < width && pixel.Y < height

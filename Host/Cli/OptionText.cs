@@ -22,6 +22,9 @@ public static class OptionText
         return ((width, height), null);
     }
 
+    /// <summary>The size <paramref name="text"/> gives (validated at parse time), else the scene's own.</summary>
+    public static (int Width, int Height) SizeOr(string? text, Scene scene) => ParseSize(text) is { Size: { } size } ? size : (scene.Width, scene.Height);
+
     /// <summary>"12,7" → the pixel; null text → no pixel.</summary>
     public static ((int X, int Y)? Pixel, string? Error) ParsePixel(string? text)
     {

@@ -68,7 +68,7 @@ public sealed class RenderCommand : Command
         var scene = DefaultScene.Load(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
         var stem = sceneFile is null ? DefaultScene.Stem : Path.GetFileNameWithoutExtension(sceneFile.Name);
-        var (width, height) = OptionText.ParseSize(parse.GetValue(_size)) is { Size: { } size } ? size : (scene.Width, scene.Height);
+        var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
         return new RenderRunSettings(scene, _render.Get(parse, width, height, parse.GetValue(_engine.Seed)), kind, _qsearch.Get(parse),
             parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse));
