@@ -4,6 +4,7 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Tests.Engines;
 
@@ -182,7 +183,7 @@ public sealed class SoakTests : IDisposable
         Assert.Contains("2 ok, 0 FAILED, 0 skipped", text);
 
         File.WriteAllText(Path.Combine(scenes, "broken.json"), "{ \"name\": ");
-        Assert.Equal(BenchSoakCommand.ChecksFailed, ConsoleCaptureRun(arguments));
+        Assert.Equal(ExitCodes.ChecksFailed, ConsoleCaptureRun(arguments));
         text = File.ReadAllText(_scratch.File("soak.md"));
         Assert.Contains("| broken |", text);
         Assert.Contains("FAILED: scene does not load: ", text);
@@ -192,8 +193,8 @@ public sealed class SoakTests : IDisposable
     [Fact]
     public void TheDefaultSceneDirectoryIsTheRepositorysScenes()
     {
-        Assert.Equal(RepositoryPaths.Scenes, BenchSoakCommand.RepositoryScenes(Path.Combine(RepositoryPaths.Root, "Host", "Cli")));
-        Assert.Null(BenchSoakCommand.RepositoryScenes(_scratch.Path));
+        Assert.Equal(RepositoryPaths.Scenes, RepositoryScenes.Find(Path.Combine(RepositoryPaths.Root, "Host", "Cli")));
+        Assert.Null(RepositoryScenes.Find(_scratch.Path));
     }
 
     [Fact]

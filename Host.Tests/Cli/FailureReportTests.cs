@@ -112,7 +112,7 @@ public sealed class FailureReportTests : IDisposable
         }
 
         var (code, text) = ErrorReport.Describe(thrown, verbose: false);
-        Assert.Equal(ErrorReport.InternalError, code);
+        Assert.Equal(ExitCodes.InternalError, code);
         Assert.Equal(["error: internal error (InvalidOperationException): an impossible state. This is a bug in QuantumRayTracing", "(run again with --verbose for the details)"], Lines(text));
 
         var (_, verbose) = ErrorReport.Describe(thrown, verbose: true);

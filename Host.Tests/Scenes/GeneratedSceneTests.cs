@@ -4,6 +4,7 @@ using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
 using QuantumRayTracing.Rays;
 using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Shading;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
@@ -18,7 +19,7 @@ public class GeneratedSceneTests
     public void ShippedScenesAreTheGeneratorsOutput()
     {
         var marker = GeneratedReport.JsonMarker(ScenesCommand.GenerateCommandLine);
-        foreach (var (file, builder) in ScenesCommand.Standard())
+        foreach (var (file, builder) in StandardScenes.All())
             Assert.Equal(new GeneratedReport(null, marker).Compose(builder.ToJson()), File.ReadAllText(Path.Combine(RepositoryPaths.Scenes, file)));
     }
 

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes.Generation;
 
 namespace QuantumRayTracing.Cli;
@@ -9,39 +10,18 @@ public sealed class BenchAccuracyCommand : Command
 {
     public const string CommandLine = "qrt bench accuracy";
 
-    private readonly Option<int[]> _sizes = new("--sizes")
-    {
-        Description = "Square image sizes (space-separated).",
-        DefaultValueFactory = _ => [4, 8, 16, 32, 64, 128],
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _sizes = CommonOptions.SquareSizes("Square image sizes (space-separated).", [4, 8, 16, 32, 64, 128]);
 
-    private readonly Option<int> _seeds = new("--seeds")
-    {
-        Description = "Random scenes per kind and size (seeds 1..n).",
-        DefaultValueFactory = _ => 10,
-    };
+    private readonly Option<int> _seeds = CommonOptions.SeedCount("Random scenes per kind and size (seeds 1..n).", 10, max: 1000);
 
-    private readonly Option<int> _deepSize = new("--deep-size")
-    {
-        Description = "Largest size rendered for the 4,000-rectangle scenes (their rays each test 4,000 primitives classically).",
-        DefaultValueFactory = _ => 64,
-    };
+    private readonly Option<int> _deepSize = CommonOptions.SquareSize("Largest size rendered for the 4,000-rectangle scenes (their rays each test 4,000 primitives classically).", 64, "--deep-size");
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/accuracy.md");
 
     public BenchAccuracyCommand() : base("accuracy", "Wrong pixels and Int/Ray of the default pipeline on random scenes by size, beside --lattice 0 and the paper's plain pipeline (analytic engine).")
     {
-        Options.Add(_sizes);
-        Options.Add(_seeds);
-        Options.Add(_deepSize);
+        this.AddOptions(_sizes, _seeds, _deepSize);
         _report.AddTo(this, scenes: false, seed: false, workers: false);
-        _seeds.Between(1, 1000);
-        _deepSize.Between(1, 1024);
-        _sizes.Validators.Add(r =>
-        {
-            if (r.GetValueOrDefault<int[]>() is { } sizes && sizes.Any(s => s is < 1 or > 1024)) r.AddError("--sizes: each size must be 1..1024");
-        });
         SetAction(Execute);
     }
 
@@ -50,7 +30,7 @@ public sealed class BenchAccuracyCommand : Command
         var writer = _report.Writer(parse);
         var settings = new AccuracySettings(parse.GetValue(_sizes)!, parse.GetValue(_seeds), parse.GetValue(_deepSize), DefaultScene.Load(null));
         var report = AccuracyExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
+        return ExitCodes.Success;
     }
 }

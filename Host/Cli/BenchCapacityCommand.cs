@@ -1,6 +1,7 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Cli;
 
@@ -9,12 +10,8 @@ public sealed class BenchCapacityCommand : Command
 {
     public const string CommandLine = "qrt bench capacity";
 
-    private readonly Option<int[]> _qubits = new("--qubits")
-    {
-        Description = "Widths of the dense states measured (space-separated, 1..25; 25 takes about 15 s and 2.5 GB).",
-        DefaultValueFactory = _ => [16, 18, 20, 22, 24],
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _qubits = CommonOptions.List("--qubits", "Widths of the dense states measured (space-separated, 1..25; 25 takes about 15 s and 2.5 GB).",
+        [16, 18, 20, 22, 24], "width", 1, 25, " (26 exhausts the simulator's 4 GiB WebAssembly heap)");
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/simulator-capacity.md");
 
@@ -23,10 +20,6 @@ public sealed class BenchCapacityCommand : Command
         Options.Add(_qubits);
         // Each width runs in a bridge process of its own on this machine, whose memory is the measure: no --workers, no --cluster.
         _report.AddTo(this, scenes: false, seed: false, workers: false);
-        _qubits.Validators.Add(r =>
-        {
-            if ((r.GetValueOrDefault<int[]>() ?? []).Any(q => q is < 1 or > 25)) r.AddError("--qubits: each width must be between 1 and 25 (26 exhausts the simulator's 4 GiB WebAssembly heap)");
-        });
         SetAction(Execute);
     }
 
@@ -35,7 +28,7 @@ public sealed class BenchCapacityCommand : Command
         var writer = _report.Writer(parse);
         var report = SimulatorCapacityExperiment.Run(new SimulatorCapacitySettings(parse.GetValue(_qubits)!), Console.Error.WriteLine);
         var tools = ToolVersions.Detect();
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(tools.QsharpLang, tools.Node)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(tools.QsharpLang, tools.Node)));
+        return ExitCodes.Success;
     }
 }

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Cluster;
+using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Cli;
 
@@ -9,33 +10,16 @@ public sealed class BenchClusterCommand : Command
 {
     private readonly BenchReportOptions _report = new("qrt bench cluster", "docs/cluster-performance.md");
 
-    private readonly Option<FileInfo> _cluster = new("--cluster")
-    {
-        Description = "The cluster file of the running workers (docs/cluster.md). Default: none; the benchmark needs one.",
-        HelpName = "file",
-        Required = true,
-    };
+    private readonly Option<FileInfo?> _cluster = CommonOptions.Cluster("The cluster file of the running workers (docs/cluster.md). Default: none; the benchmark needs one.", required: true);
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Side of the square render of the Qornell box with 64 primitives, in pixels.",
-        DefaultValueFactory = _ => 32,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Side of the square render of the Qornell box with 64 primitives, in pixels.", 32);
 
-    private readonly Option<int> _requests = new("--requests")
-    {
-        Description = "Bridge requests timed one at a time on each path.",
-        DefaultValueFactory = _ => 200,
-    };
+    private readonly Option<int> _requests = new Option<int>("--requests") { Description = "Bridge requests timed one at a time on each path.", DefaultValueFactory = _ => 200 }.Between(1, 100_000);
 
     public BenchClusterCommand() : base("cluster", "A fullstate render and single bridge requests on local bridges against a cluster's workers.")
     {
-        Options.Add(_cluster);
-        Options.Add(_size);
-        Options.Add(_requests);
+        this.AddOptions(_cluster, _size, _requests);
         _report.AddTo(this);
-        _size.Between(1, 1024);
-        _requests.Between(1, 100_000);
         SetAction(Execute);
     }
 
@@ -46,7 +30,7 @@ public sealed class BenchClusterCommand : Command
         using var cluster = ClusterBridges.Start(parse.GetValue(_cluster)!.FullName, parse.GetValue(_report.Workers));
         var settings = new ClusterPerformanceSettings(scene, parse.GetValue(_size), parse.GetValue(_requests), parse.GetValue(_report.Seed), parse.GetValue(_report.Workers), cluster);
         var report = ClusterPerformanceExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
+        return ExitCodes.Success;
     }
 }

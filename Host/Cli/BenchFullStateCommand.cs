@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Bridge;
 
@@ -18,12 +19,7 @@ public sealed class BenchFullStateCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
-    private readonly Option<int[]> _sizes = new("--sizes")
-    {
-        Description = "Square image sizes, space-separated.",
-        DefaultValueFactory = _ => [32, 64, 128],
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _sizes = CommonOptions.SquareSizes("Square image sizes, space-separated.", [32, 64, 128]);
 
     private readonly Option<long> _baselineLimit = new("--baseline-limit")
     {
@@ -34,16 +30,10 @@ public sealed class BenchFullStateCommand : Command
     public BenchFullStateCommand() : base("fullstate", "Whole renders on the fullstate engine against its baseline: ms per ray, bridge calls, time in calls against simulation, and the simulator-only floor.")
     {
         _report.AddTo(this, cluster: true);
-        Options.Add(_sceneNames);
-        Options.Add(_sizes);
-        Options.Add(_baselineLimit);
-        _sizes.Validators.Add(r =>
-        {
-            if ((r.GetValueOrDefault<int[]>() ?? []).Any(n => n is < 1 or > 1024)) r.AddError("--sizes: each size must be between 1 and 1024");
-        });
+        this.AddOptions(_sceneNames, _sizes, _baselineLimit);
         _baselineLimit.Validators.Add(r =>
         {
-            if (r.GetValueOrDefault<long>() < 0) r.AddError("--baseline-limit must be at least 0");
+            if (r.TryGetValue<long>(out var limit) && limit < 0) r.AddError("--baseline-limit must be at least 0");
         });
         SetAction(Execute);
     }
@@ -57,7 +47,7 @@ public sealed class BenchFullStateCommand : Command
             parse.GetValue(_report.Seed), parse.GetValue(_report.Workers), cluster);
         var report = FullStatePerformanceExperiment.Run(settings, Console.Error.WriteLine);
         var versions = ToolVersions.Detect();
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(versions.QsharpLang, versions.Node), cluster));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(versions.QsharpLang, versions.Node), cluster));
+        return ExitCodes.Success;
     }
 }

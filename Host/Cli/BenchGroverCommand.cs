@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Bridge;
 
@@ -9,12 +10,7 @@ public sealed class BenchGroverCommand : Command
 {
     public const string CommandLine = "qrt bench grover";
 
-    private readonly Option<int[]> _sizes = new("--sizes")
-    {
-        Description = "Search sizes N (space-separated).",
-        DefaultValueFactory = _ => [8, 64, 512],
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _sizes = CommonOptions.List("--sizes", "Search sizes N (space-separated).", [8, 64, 512], "N", 1, 4096);
 
     private readonly Option<int[]> _batches = new("--batches")
     {
@@ -27,16 +23,11 @@ public sealed class BenchGroverCommand : Command
 
     public BenchGroverCommand() : base("grover", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")
     {
-        Options.Add(_sizes);
-        Options.Add(_batches);
+        this.AddOptions(_sizes, _batches);
         _report.AddTo(this, scenes: false, cluster: true);
-        _sizes.Validators.Add(r =>
-        {
-            if ((r.GetValueOrDefault<int[]>() ?? []).Any(n => n is < 1 or > 4096)) r.AddError("--sizes: each N must be between 1 and 4096");
-        });
         _batches.Validators.Add(r =>
         {
-            if ((r.GetValueOrDefault<int[]>() ?? []).Any(b => b < 1)) r.AddError("--batches: each batch size must be at least 1");
+            if (r.TryGetValue<int[]>(out var batches) && (batches ?? []).Any(b => b < 1)) r.AddError("--batches: each batch size must be at least 1");
         });
         SetAction(Execute);
     }
@@ -48,7 +39,7 @@ public sealed class BenchGroverCommand : Command
         var settings = new GroverPerformanceSettings(parse.GetValue(_sizes)!, parse.GetValue(_batches)!, parse.GetValue(_report.Workers), parse.GetValue(_report.Seed), cluster);
         var report = GroverPerformanceExperiment.Run(settings, Console.Error.WriteLine);
         var tools = ToolVersions.Detect();
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(tools.QsharpLang, tools.Node), cluster));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(tools.QsharpLang, tools.Node), cluster));
+        return ExitCodes.Success;
     }
 }

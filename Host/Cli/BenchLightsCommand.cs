@@ -1,6 +1,6 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
-using QuantumRayTracing.Rendering;
 
 namespace QuantumRayTracing.Cli;
 
@@ -9,35 +9,18 @@ public sealed class BenchLightsCommand : Command
 {
     public const string CommandLine = "qrt bench lights";
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Square image size of the measured renders (the paper: 128).",
-        DefaultValueFactory = _ => 128,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of the measured renders (the paper: 128).", 128);
 
-    private readonly Option<int> _imageSize = new("--image-size")
-    {
-        Description = "Square size of the images written beside the report (rendered apart, same options).",
-        DefaultValueFactory = _ => 64,
-    };
+    private readonly Option<int> _imageSize = CommonOptions.SquareSize("Square size of the images written beside the report (rendered apart, same options).", 64, "--image-size");
 
-    private readonly Option<int> _referenceSamples = new("--reference-samples")
-    {
-        Description = "Area samples and VPLs per point of the converged classical reference (the paper: 512).",
-        DefaultValueFactory = _ => RenderDefaults.ReferenceSamples,
-    };
+    private readonly Option<int> _referenceSamples = CommonOptions.ReferenceSamples("Area samples and VPLs per point of the converged classical reference (the paper: 512).", min: 1);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/lights.md; the images go beside it as <name>-<case>-<render>.png, and only with it");
 
     public BenchLightsCommand() : base("lights", "Area light and VPL indirect light (the paper's sec. 7): Int/Ray and error of the quantum and classical pipelines, with images beside their classical references.")
     {
-        Options.Add(_size);
-        Options.Add(_imageSize);
-        Options.Add(_referenceSamples);
+        this.AddOptions(_size, _imageSize, _referenceSamples);
         _report.AddTo(this, workers: false);
-        _size.Between(1, 1024);
-        _imageSize.Between(1, 1024);
-        _referenceSamples.Between(1, RenderCommand.MaxSamples);
         SetAction(Execute);
     }
 
@@ -49,7 +32,7 @@ public sealed class BenchLightsCommand : Command
         var settings = new LightsSettings(stem => _report.Load(parse, stem), parse.GetValue(_size), images ? parse.GetValue(_imageSize) : null,
             parse.GetValue(_referenceSamples), parse.GetValue(_report.Seed));
         var report = LightsExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
+        return ExitCodes.Success;
     }
 }

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 
 namespace QuantumRayTracing.Cli;
@@ -13,29 +14,25 @@ public sealed class BenchNoiseCommand : Command
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/noise.md");
 
-    private readonly Option<int> _shots = new("--shots")
+    private readonly Option<int> _shots = new Option<int>("--shots")
     {
         Description = "Runs per case of the model checks (searches, coins and QSS).",
         DefaultValueFactory = _ => 2000,
-    };
+    }.Between(100, 1_000_000);
 
-    private readonly Option<int> _deviceShots = new("--device-shots")
+    private readonly Option<int> _deviceShots = new Option<int>("--device-shots")
     {
         Description = "Measurements per error rate of the device experiment (the paper's fig. 15 took 1024).",
         DefaultValueFactory = _ => 1024,
-    };
+    }.Between(16, 1_000_000);
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Pixels per side of the noisy renders on the analytic engine.",
-        DefaultValueFactory = _ => 128,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Pixels per side of the noisy renders on the analytic engine.", 128);
 
-    private readonly Option<int> _confirmSize = new("--confirm-size")
+    private readonly Option<int> _confirmSize = new Option<int>("--confirm-size")
     {
         Description = "Pixels per side of the renders on the noisy fullstate engine that confirm the analytic model (0 skips them).",
         DefaultValueFactory = _ => 32,
-    };
+    }.Between(0, 128);
 
     private readonly Option<double[]> _confirmRates = new("--confirm-rates")
     {
@@ -53,26 +50,18 @@ public sealed class BenchNoiseCommand : Command
 
     public BenchNoiseCommand() : base("noise", "Hardware noise: the analytic noise model against the noisy simulator, the paper's device experiment (fig. 15), rendering under noise; -o docs/noise.md.")
     {
-        Options.Add(_shots);
-        Options.Add(_deviceShots);
-        Options.Add(_size);
-        Options.Add(_confirmSize);
-        Options.Add(_confirmRates);
-        Options.Add(_parts);
+        this.AddOptions(_shots, _deviceShots, _size, _confirmSize, _confirmRates, _parts);
         _report.AddTo(this, seed: false, cluster: true);
-        _size.Between(1, 1024);
-        _confirmSize.Between(0, 128);
         _confirmRates.Validators.Add(r =>
         {
-            if ((r.GetValueOrDefault<double[]>() ?? []).Any(p => !(p > 0 && p <= 1))) r.AddError("--confirm-rates: each rate must lie in (0, 1]");
+            if (r.TryGetValue<double[]>(out var rates) && (rates ?? []).Any(p => !(p > 0 && p <= 1))) r.AddError("--confirm-rates: each rate must lie in (0, 1]");
         });
         _parts.Validators.Add(r =>
         {
-            foreach (var part in r.GetValueOrDefault<string[]>() ?? [])
-                if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of {string.Join(", ", NoiseBenchSettings.AllParts)}");
+            if (r.TryGetValue<string[]>(out var parts))
+                foreach (var part in parts ?? [])
+                    if (!NoiseBenchSettings.AllParts.Contains(part)) r.AddError($"--parts: '{part}' is not one of {string.Join(", ", NoiseBenchSettings.AllParts)}");
         });
-        _shots.Between(100, 1_000_000);
-        _deviceShots.Between(16, 1_000_000);
         SetAction(Execute);
     }
 
@@ -88,7 +77,7 @@ public sealed class BenchNoiseCommand : Command
         writer.EnsureWritable(settings.PlotNames());
         using var cluster = _report.StartBridges(parse);
         var (report, machine) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(machine, cluster));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(machine, cluster));
+        return ExitCodes.Success;
     }
 }

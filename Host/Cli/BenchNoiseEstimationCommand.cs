@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using System.Globalization;
 using QuantumRayTracing.Benchmarks;
 
@@ -12,11 +13,7 @@ public sealed class BenchNoiseEstimationCommand : Command
 {
     public const string CommandLine = "qrt bench noise-estimation";
 
-    private readonly Option<int> _trials = new("--trials")
-    {
-        Description = "Estimates per point: repeated runs at f = 0.5 (fig. 10), random pixels (fig. 12) or random means (the noise-aware comparison).",
-        DefaultValueFactory = _ => 1000,
-    };
+    private readonly Option<int> _trials = CommonOptions.Trials("Estimates per point: repeated runs at f = 0.5 (fig. 10), random pixels (fig. 12) or random means (the noise-aware comparison).", 1000, max: 100_000);
 
     private readonly Option<double> _deviceRate = new("--device-rate")
     {
@@ -24,26 +21,21 @@ public sealed class BenchNoiseEstimationCommand : Command
         DefaultValueFactory = _ => NoiseEstimationSettings.DefaultDeviceRate,
     };
 
-    private readonly Option<int> _imageSize = new("--image-size")
+    private readonly Option<int> _imageSize = new Option<int>("--image-size")
     {
         Description = "Output pixels per side of the fig. 1 image (8x8 subpixels each, rendered classically at 8 times the size).",
         DefaultValueFactory = _ => 64,
-    };
+    }.Between(1, 256);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/noise-estimation.md");
 
     public BenchNoiseEstimationCommand() : base("noise-estimation", "Mean estimation under noise: the QCoin paper's fig. 10 (k against noise), fig. 12 (QSS against QCoin, MLAE and MC against the per-gate error), fig. 1 right (QCoin image under noise) and the noise-aware MLAE; -o docs/noise-estimation.md.")
     {
-        Options.Add(_trials);
-        Options.Add(_deviceRate);
-        Options.Add(_imageSize);
+        this.AddOptions(_trials, _deviceRate, _imageSize);
         _report.AddTo(this, scenes: false);
-        _trials.Between(10, 100_000);
-        _imageSize.Between(1, 256);
         _deviceRate.Validators.Add(r =>
         {
-            var rate = r.GetValueOrDefault<double>();
-            if (!NoiseEstimationSettings.StepRates.Contains(rate))
+            if (r.TryGetValue<double>(out var rate) && !NoiseEstimationSettings.StepRates.Contains(rate))
                 r.AddError($"--device-rate: {rate.ToString(CultureInfo.InvariantCulture)} is not one of the swept rates {string.Join(", ", NoiseEstimationSettings.StepRates.Where(p => p > 0).Select(p => p.ToString(CultureInfo.InvariantCulture)))}");
         });
         SetAction(Execute);
@@ -55,7 +47,7 @@ public sealed class BenchNoiseEstimationCommand : Command
         var settings = new NoiseEstimationSettings(parse.GetValue(_trials), parse.GetValue(_deviceRate), parse.GetValue(_imageSize), parse.GetValue(_report.Seed));
         var result = NoiseEstimationExperiment.Run(settings, Console.Error.WriteLine);
         var machine = MachineDescription.Describe(null, null);
-        writer.Write(NoiseEstimationReport.Build(result, settings, machine), BenchReportOptions.Footer(machine));
-        return 0;
+        writer.Write(NoiseEstimationReport.Build(result, settings, machine), ReportFooter.Lines(machine));
+        return ExitCodes.Success;
     }
 }

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 
 namespace QuantumRayTracing.Cli;
@@ -8,11 +9,7 @@ public sealed class BenchOptimisedCommand : Command
 {
     public const string CommandLine = "qrt bench optimised";
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Square image size (the paper: 128).",
-        DefaultValueFactory = _ => 128,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Square image size (the paper: 128).", 128);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/optimised-tracing.md");
 
@@ -20,7 +17,6 @@ public sealed class BenchOptimisedCommand : Command
     {
         Options.Add(_size);
         _report.AddTo(this);
-        _size.Between(1, 1024);
         SetAction(Execute);
     }
 
@@ -29,7 +25,7 @@ public sealed class BenchOptimisedCommand : Command
         var writer = _report.Writer(parse);
         var settings = new OptimisedTracingSettings(stem => _report.Load(parse, stem), parse.GetValue(_size), parse.GetValue(_report.Seed), parse.GetValue(_report.Workers));
         var report = OptimisedTracingExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
+        return ExitCodes.Success;
     }
 }

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Scenes;
 
@@ -15,20 +16,14 @@ public sealed class BenchParetoCommand : Command
         DefaultValueFactory = _ => new FileInfo(Path.Combine("Scenes", "qornell-64.json")),
     };
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Square image size (the full-state engine renders every configuration too).",
-        DefaultValueFactory = _ => 32,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Square image size (the full-state engine renders every configuration too).", 32);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/speed-vs-error.md; the plots go beside it as <name>-intray.png and <name>-walltime.png");
 
     public BenchParetoCommand() : base("pareto", "Speed against error for every configuration of every engine (classical, randomized, analytic, fullstate), Pareto fronts marked, with PNG plots.")
     {
-        Options.Add(_scene);
-        Options.Add(_size);
+        this.AddOptions(_scene, _size);
         _report.AddTo(this, scenes: false, cluster: true);
-        _size.Between(1, 1024);
         SetAction(Execute);
     }
 
@@ -40,7 +35,7 @@ public sealed class BenchParetoCommand : Command
         using var cluster = _report.StartBridges(parse);
         var settings = new SpeedVsErrorSettings(scene, parse.GetValue(_size), parse.GetValue(_report.Seed), parse.GetValue(_report.Workers), cluster);
         var report = SpeedVsErrorExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null), cluster));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null), cluster));
+        return ExitCodes.Success;
     }
 }

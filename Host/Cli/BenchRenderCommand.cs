@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 
 namespace QuantumRayTracing.Cli;
@@ -8,27 +9,16 @@ public sealed class BenchRenderCommand : Command
 {
     public const string CommandLine = "qrt bench render";
 
-    private readonly Option<int> _size = new("--size")
-    {
-        Description = "Square image size of the table 2 and 3 renders (the paper: 128).",
-        DefaultValueFactory = _ => 128,
-    };
+    private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of the table 2 and 3 renders (the paper: 128).", 128);
 
-    private readonly Option<int> _engineSize = new("--engine-size")
-    {
-        Description = "Square image size of the engine comparison (the full-state simulator is slow).",
-        DefaultValueFactory = _ => 32,
-    };
+    private readonly Option<int> _engineSize = CommonOptions.SquareSize("Square image size of the engine comparison (the full-state simulator is slow).", 32, "--engine-size");
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/rendering-results.md");
 
     public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
     {
-        Options.Add(_size);
-        Options.Add(_engineSize);
+        this.AddOptions(_size, _engineSize);
         _report.AddTo(this, cluster: true);
-        _size.Between(1, 1024);
-        _engineSize.Between(1, 1024);
         SetAction(Execute);
     }
 
@@ -39,7 +29,7 @@ public sealed class BenchRenderCommand : Command
         var settings = new RenderResultsSettings(stem => _report.Load(parse, stem), parse.GetValue(_size), parse.GetValue(_engineSize),
             parse.GetValue(_report.Seed), parse.GetValue(_report.Workers), cluster);
         var report = RenderResultsExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null), cluster));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null), cluster));
+        return ExitCodes.Success;
     }
 }

@@ -1,5 +1,4 @@
 using System.CommandLine;
-using System.Text;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Output;
@@ -10,38 +9,20 @@ namespace QuantumRayTracing.Cli;
 
 /// <summary>
 /// What every `bench` command that writes a report to docs/ shares: the scene directory, the seed, the
-/// bridge count, the output file (replaced only if this command wrote it) and the footer naming the
-/// machine and the command that regenerates the report.
+/// bridge count, the cluster, the output file (replaced only if this command wrote it) and its CSV tables.
 /// </summary>
 public sealed class BenchReportOptions(string commandLine, string outputExample)
 {
-    public readonly Option<DirectoryInfo> Scenes = new("--scenes")
-    {
-        Description = "Directory holding the scene files.",
-        DefaultValueFactory = _ => new DirectoryInfo("Scenes"),
-    };
+    public readonly Option<DirectoryInfo> SceneDirectory = CommonOptions.SceneDirectory();
 
-    public readonly Option<ulong> Seed = new("--seed")
-    {
-        Description = "Seed of every render and simulation.",
-        DefaultValueFactory = _ => 1UL,
-    };
+    public readonly Option<ulong> Seed = CommonOptions.Seed("Seed of every render and simulation.");
 
-    public readonly Option<int> Workers = new("--workers")
-    {
-        Description = "Node bridges for the Q# engines. Default: the core count.",
-        DefaultValueFactory = _ => Bridge.BridgePool.DefaultWorkers,
-    };
+    public readonly Option<int> Workers = CommonOptions.Workers("Node bridges for the Q# engines. Default: the core count.");
 
-    public readonly Option<FileInfo?> Output = new("--output", "-o")
-    {
-        Description = $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before. Default: the report is printed only.",
-    };
+    public readonly Option<FileInfo?> Output = CommonOptions.ReportOutput(
+        $"Write the Markdown report here (e.g. {outputExample}). It replaces only a report this command wrote before. Default: the report is printed only.");
 
-    public readonly Option<FileInfo?> Cluster = new("--cluster")
-    {
-        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.",
-    };
+    public readonly Option<FileInfo?> Cluster = CommonOptions.LocalBridgesOrCluster();
 
     public readonly Option<bool> Csv = new("--csv")
     {
@@ -51,13 +32,11 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
     /// <summary>Adds the shared options; <paramref name="cluster"/> for experiments that run Q# engines, no <paramref name="workers"/> for those that start no bridges.</summary>
     public void AddTo(Command command, bool scenes = true, bool seed = true, bool cluster = false, bool workers = true)
     {
-        if (scenes) command.Options.Add(Scenes);
+        if (scenes) command.Options.Add(SceneDirectory);
         if (seed) command.Options.Add(Seed);
         if (workers) command.Options.Add(Workers);
         if (cluster) command.Options.Add(Cluster);
-        command.Options.Add(Output);
-        command.Options.Add(Csv);
-        Workers.AtLeast(1);
+        command.AddOptions(Output, Csv);
     }
 
     /// <summary>The report's writer, its Markdown file checked writable before any work starts.</summary>
@@ -76,13 +55,6 @@ public sealed class BenchReportOptions(string commandLine, string outputExample)
     public BridgePool? StartBridges(ParseResult parse) =>
         parse.GetValue(Cluster) is { } file ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers)) : null;
 
-    /// <summary>The lines closing every report: the machine, where the Q# work ran, and the command that regenerates it.</summary>
-    public static IReadOnlyList<string> Footer(string machine, BridgePool? cluster = null) =>
-    [
-        $"Machine: {machine}{(cluster is null ? "" : $"; Q# engines on {cluster.Where}")}.",
-        $"Command: `dotnet run --project Host -c Release -- {string.Join(' ', Environment.GetCommandLineArgs().Skip(1))}`.",
-    ];
-
     /// <summary>The scene <paramref name="stem"/>.json from the scene directory.</summary>
-    public Scene Load(ParseResult parse, string stem) => SceneLoader.Load(Path.Combine(parse.GetValue(Scenes)!.FullName, stem + ".json"));
+    public Scene Load(ParseResult parse, string stem) => SceneLoader.Load(Path.Combine(parse.GetValue(SceneDirectory)!.FullName, stem + ".json"));
 }

@@ -1,9 +1,10 @@
 using System.CommandLine;
-using System.CommandLine.Parsing;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes;
 using Spectre.Console;
 
 namespace QuantumRayTracing.Cli;
@@ -11,16 +12,14 @@ namespace QuantumRayTracing.Cli;
 /// <summary>
 /// `bench soak`: every scene in a directory on every engine that can hold it, with two seeds, each render
 /// checked (<see cref="Soak"/>); a table per scene and engine, optionally written as Markdown
-/// (docs/soak.md), and exit code <see cref="ChecksFailed"/> when any check failed.
+/// (docs/soak.md), and exit code <see cref="ExitCodes.ChecksFailed"/> when any check failed.
 /// </summary>
 public sealed class BenchSoakCommand : Command
 {
     public const string CommandLine = "qrt bench soak";
 
-    /// <summary>The exit code when a render failed a check: after the codes <see cref="Cli.CommandLine"/> gives every command.</summary>
-    public const int ChecksFailed = 5;
-
-    private readonly Option<DirectoryInfo?> _scenes = new("--scenes")
+    // Not BenchReportOptions' scene directory, where experiments look scenes up by name: every scene in it is soaked.
+    private readonly Option<DirectoryInfo?> _scenesToSoak = new("--scenes")
     {
         Description = "Directory of scene files (every *.json in it). Default: Scenes/ of the repository holding the current directory.",
     };
@@ -45,26 +44,18 @@ public sealed class BenchSoakCommand : Command
         Description = "The CI form: 4x4 images (gate 2x2), 2 TracePass and 1 DirectPass rounds, 2 area samples, fullstate and gate on the smallest scene only.",
     };
 
-    private readonly Option<int?> _size = new("--size")
-    {
-        Description = $"Square image size for every engine but gate. Default: {SoakSettings.DefaultSize} (short form: 4).",
-    };
+    // Sizes and samples left out take the full or the short form's.
+    private readonly Option<int?> _size = new Option<int?>("--size") { Description = $"Square image size for every engine but gate. Default: {SoakSettings.DefaultSize} (short form: 4)." }
+        .Between(1, CommonOptions.MaxSquareSide);
 
-    private readonly Option<int?> _gateSize = new("--gate-size")
-    {
-        Description = $"Square image size for the gate engine, which simulates its whole oracle. Default: {SoakSettings.DefaultGateSize} (short form: 2).",
-    };
+    private readonly Option<int?> _gateSize = new Option<int?>("--gate-size") { Description = $"Square image size for the gate engine, which simulates its whole oracle. Default: {SoakSettings.DefaultGateSize} (short form: 2)." }
+        .Between(1, 64);
 
-    private readonly Option<int?> _areaSamples = new("--area-samples")
-    {
-        Description = $"Shadow rays per point and area light. Default: {RenderDefaults.AreaSamples}, as `render` (short form: 2).",
-    };
+    private readonly Option<int?> _areaSamples = new Option<int?>("--area-samples") { Description = $"Shadow rays per point and area light. Default: {RenderDefaults.AreaSamples}, as `render` (short form: 2)." }
+        .Between(1, CommonOptions.MaxSamples);
 
-    private readonly Option<int> _vpl = new("--vpl")
-    {
-        Description = "VPLs per surface point (0: no indirect light, as `render`).",
-        DefaultValueFactory = _ => RenderDefaults.Vpl,
-    };
+    private readonly Option<int> _vpl = new Option<int>("--vpl") { Description = "VPLs per surface point (0: no indirect light, as `render`).", DefaultValueFactory = _ => RenderDefaults.Vpl }
+        .Between(0, CommonOptions.MaxSamples);
 
     private readonly Option<double> _gateBudget = new("--gate-budget")
     {
@@ -72,39 +63,26 @@ public sealed class BenchSoakCommand : Command
         DefaultValueFactory = _ => SoakSettings.DefaultGateBudget.TotalSeconds,
     };
 
-    private readonly Option<int> _maxQubits = new("--max-qubits")
+    private readonly Option<int> _maxQubits = new Option<int>("--max-qubits")
     {
         Description = "Gate engine: a search needing more qubits at peak is refused before simulating; the soak reports the scene as skipped.",
         DefaultValueFactory = _ => GateEngine.DefaultMaxQubits,
-    };
+    }.Between(1, 100_000);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/soak.md");
 
     public BenchSoakCommand() : base("soak", "Render every scene on every engine with two seeds; check each render (no exception, finite pixels, error against classical, same seed same bytes, another seed another render) and report failures.")
     {
-        Options.Add(_scenes);
-        Options.Add(_engines);
-        Options.Add(_seeds);
-        Options.Add(_short);
-        Options.Add(_size);
-        Options.Add(_gateSize);
-        Options.Add(_areaSamples);
-        Options.Add(_vpl);
-        Options.Add(_gateBudget);
-        Options.Add(_maxQubits);
+        this.AddOptions(_scenesToSoak, _engines, _seeds, _short, _size, _gateSize, _areaSamples, _vpl, _gateBudget, _maxQubits);
         _report.AddTo(this, scenes: false, seed: false, cluster: true);
-        _engines.CustomParser = ParseEngines;
+        _engines.CustomParser = r => OptionText.ParseEngines(r, _engines.Name, SoakSettings.AllEngines);
         _seeds.Validators.Add(r =>
         {
-            var seeds = r.GetValueOrDefault<ulong[]>() ?? [];
+            if (!r.TryGetValue<ulong[]>(out var given)) return;
+            var seeds = given ?? [];
             if (seeds.Length == 0) r.AddError("--seeds: give at least one seed");
             else if (seeds.Distinct().Count() != seeds.Length) r.AddError("--seeds: the seeds must differ");
         });
-        _size.Between(1, 1024);
-        _gateSize.Between(1, 64);
-        _areaSamples.Between(1, RenderCommand.MaxSamples);
-        _vpl.Between(0, RenderCommand.MaxSamples);
-        _maxQubits.Between(1, 100_000);
         _gateBudget.Validators.Add(r =>
         {
             if (r.TryGetValue<double>(out var seconds) && !(seconds >= 0)) r.AddError($"--gate-budget must be 0 or more seconds, got {seconds}");
@@ -115,7 +93,7 @@ public sealed class BenchSoakCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
-        var directory = parse.GetValue(_scenes)?.FullName ?? RepositoryScenes(Environment.CurrentDirectory)
+        var directory = parse.GetValue(_scenesToSoak)?.FullName ?? RepositoryScenes.Find(Environment.CurrentDirectory)
             ?? throw new UserError("--scenes: no Scenes/ folder of this repository above the current directory; name the scene directory");
         if (!Directory.Exists(directory)) throw new UserError($"--scenes: {directory} does not exist");
         var files = Directory.GetFiles(directory, "*.json").Order(StringComparer.Ordinal).ToArray();
@@ -152,56 +130,9 @@ public sealed class BenchSoakCommand : Command
                 Console.Error.WriteLine($"{row.Scene} on {engine}: {row.StatusText}");
             });
 
-        PrintMatrix(result);
+        SoakMatrixView.Print(result);
         // The console gets the matrix above, which fits 80 columns; the report's wide table goes to the file only.
-        writer.Write(result.Report, BenchReportOptions.Footer(MachineDescription.Describe(result.Versions.QSharp, result.Versions.Node), cluster), print: false);
-        return result.Failed ? ChecksFailed : 0;
-    }
-
-    // Scenes by engines, so the table fits 80 columns; the reasons follow it.
-    private static void PrintMatrix(SoakResult result)
-    {
-        var rows = result.Rows;
-        var engineKinds = rows.Where(r => r.Engine is not null).Select(r => r.Engine!.Value).Distinct().ToArray();
-        var table = new Table().Title("soak: scenes by engines");
-        table.AddColumn("scene");
-        foreach (var kind in engineKinds) table.AddColumn(EngineFactory.Name(kind));
-        foreach (var scene in rows.GroupBy(r => r.Scene))
-            table.AddRow([Markup.Escape($"{scene.Key}\nN = {scene.First().Primitives}"),
-                .. engineKinds.Select(k => scene.FirstOrDefault(r => r.Engine == k) is { } row ? Markup.Escape(SoakReport.MatrixCell(row)) : "")]);
-        AnsiConsole.Write(table);
-        foreach (var row in rows.Where(r => r.Status != SoakStatus.Ok))
-            AnsiConsole.WriteLine($"{row.Scene}{(row.Engine is { } e ? " on " + EngineFactory.Name(e) : "")}: {row.StatusText}");
-        AnsiConsole.WriteLine($"{SoakReport.Summary(rows)}; {result.Total.TotalSeconds:0.0} s");
-    }
-
-    /// <summary>Scenes/ of the repository (the directory holding QuantumRayTracing.sln) at or above <paramref name="start"/>, or null.</summary>
-    public static string? RepositoryScenes(string start)
-    {
-        for (var directory = new DirectoryInfo(start); directory is not null; directory = directory.Parent)
-        {
-            var scenes = Path.Combine(directory.FullName, "Scenes");
-            if (File.Exists(Path.Combine(directory.FullName, "QuantumRayTracing.sln")) && Directory.Exists(scenes)) return scenes;
-        }
-        return null;
-    }
-
-    // Engine names, space- or comma-separated, each at most once; listed in the report's order.
-    private static EngineKind[] ParseEngines(ArgumentResult result)
-    {
-        var kinds = new List<EngineKind>();
-        foreach (var name in result.Tokens.SelectMany(t => t.Value.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)))
-        {
-            var match = Enum.GetNames<EngineKind>().FirstOrDefault(n => string.Equals(n, name, StringComparison.OrdinalIgnoreCase));
-            if (match is null)
-            {
-                result.AddError($"--engines: '{name}' is not one of {string.Join(", ", SoakSettings.AllEngines.Select(EngineFactory.Name))}");
-                return [];
-            }
-            var kind = Enum.Parse<EngineKind>(match);
-            if (!kinds.Contains(kind)) kinds.Add(kind);
-        }
-        if (kinds.Count == 0) result.AddError("--engines: name at least one engine");
-        return kinds.OrderBy(k => Array.IndexOf(SoakSettings.AllEngines, k)).ToArray();
+        writer.Write(result.Report, ReportFooter.Lines(MachineDescription.Describe(result.Versions.QSharp, result.Versions.Node), cluster), print: false);
+        return result.Failed ? ExitCodes.ChecksFailed : ExitCodes.Success;
     }
 }

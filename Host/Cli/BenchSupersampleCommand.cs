@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Benchmarks;
 
 namespace QuantumRayTracing.Cli;
@@ -8,7 +9,7 @@ public sealed class BenchSupersampleCommand : Command
 {
     public const string CommandLine = "qrt bench supersample";
 
-    private readonly Option<int> _trials = new("--trials") { Description = "Uniform random means per point.", DefaultValueFactory = _ => 3000 };
+    private readonly Option<int> _trials = CommonOptions.Trials("Uniform random means per point.", 3000, max: 1_000_000);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/supersampling-results.md; the CSV goes beside it with the extension .csv, the plots as <name>-error-vs-queries.png and <name>-qcoin-k.png");
 
@@ -16,10 +17,7 @@ public sealed class BenchSupersampleCommand : Command
     {
         Options.Add(_trials);
         _report.Seed.Description = "Seed of the means and the analytic engine.";
-        Options.Add(_report.Seed);
-        Options.Add(_report.Output);
-        Options.Add(_report.Csv);
-        _trials.Between(10, 1_000_000);
+        this.AddOptions(_report.Seed, _report.Output, _report.Csv);
         SetAction(Execute);
     }
 
@@ -30,7 +28,7 @@ public sealed class BenchSupersampleCommand : Command
         writer.EnsureDataWritable(SupersamplingResultsExperiment.DataTables);
         var settings = new SupersamplingResultsSettings(parse.GetValue(_trials), parse.GetValue(_report.Seed));
         var report = SupersamplingResultsExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(null, null)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
+        return ExitCodes.Success;
     }
 }

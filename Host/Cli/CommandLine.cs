@@ -1,16 +1,19 @@
 using System.CommandLine;
+using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Cli;
 
 /// <summary>
-/// The `qrt` command line: every command, and the one place that turns failures into exit codes —
-/// 0 success, 1 usage error, 2 bad input (scene, paths, options, a request too large for the
-/// simulator), 3 a failure of the QDK or its bridge, 4 an internal error (<see cref="ErrorReport"/>).
+/// The `qrt` command line: every command, and the one place that turns failures into exit codes
+/// (<see cref="ExitCodes"/>, through <see cref="ErrorReport"/>).
 /// </summary>
 public static class CommandLine
 {
-    public const int BadInput = ErrorReport.BadInput;
-    public const int QuantumFailure = ErrorReport.QuantumFailure;
+    /// <summary>Shorthands for the exit codes callers compare most often.</summary>
+    public const int BadInput = ExitCodes.BadInput;
+
+    /// <inheritdoc cref="BadInput"/>
+    public const int QuantumFailure = ExitCodes.QuantumFailure;
 
     /// <summary>Shows stack traces, the bridge's output and the Q# call stack of a failure.</summary>
     public static readonly Option<bool> Verbose = new("--verbose")

@@ -27,23 +27,15 @@ public sealed class EngineOptions
 
     public readonly Option<EngineKind> Engine;
 
-    public readonly Option<ulong> Seed = new("--seed")
-    {
-        Description = "Seed of every classical random choice (QSearch's iteration counts, analytic outcomes, random primitives).",
-        DefaultValueFactory = _ => 1UL,
-    };
+    public readonly Option<ulong> Seed = CommonOptions.Seed("Seed of every classical random choice (QSearch's iteration counts, analytic outcomes, random primitives).");
 
-    public readonly Option<int> Workers = new("--workers")
-    {
-        Description = "Node bridge processes running Q# in parallel (fullstate engine). Default: the core count.",
-        DefaultValueFactory = _ => BridgePool.DefaultWorkers,
-    };
+    public readonly Option<int> Workers = CommonOptions.Workers("Node bridge processes running Q# in parallel (fullstate engine). Default: the core count.");
 
-    public readonly Option<int?> MaxQubits = new("--max-qubits")
+    public readonly Option<int?> MaxQubits = new Option<int?>("--max-qubits")
     {
         Description = $"Refuse, before simulating anything, a circuit wider than this many qubits. Default: fullstate, the widest dense state this machine holds ({SimulatorCapacity.DefaultMaxQubits(BridgePool.DefaultWorkers)} qubits here: about {SimulatorCapacity.BytesPerAmplitude:0} bytes per amplitude in a WebAssembly heap of at most 4 GiB per worker); gate, {GateEngine.DefaultMaxQubits} at peak with library auxiliaries (its states are sparse; `qrt estimate` shows the width).",
         HelpName = "qubits",
-    };
+    }.Between(1, 100_000);
 
     public readonly Option<string?> Noise = new("--noise")
     {
@@ -57,11 +49,7 @@ public sealed class EngineOptions
         HelpName = "L",
     };
 
-    public readonly Option<FileInfo?> Cluster = new("--cluster")
-    {
-        Description = "Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.",
-        HelpName = "file",
-    };
+    public readonly Option<FileInfo?> Cluster = CommonOptions.LocalBridgesOrCluster();
 
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
@@ -87,8 +75,6 @@ public sealed class EngineOptions
             if (!_accepted.Contains(kind))
                 result.AddError($"--engine {EngineFactory.Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(EngineFactory.Name))}");
         });
-        Workers.AtLeast(1);
-        MaxQubits.Between(1, 100_000);
         Noise.Validators.Add(result =>
         {
             if (result.TryGetValue<string?>(out var text) && text is not null && NoiseModel.ParsePauli(text, out var problem) is null)
@@ -119,27 +105,14 @@ public sealed class EngineOptions
             ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers))
             : null;
 
-    /// <summary>The noise model the engine runs under, as reports name it: the one place results take it from.</summary>
-    public RunNoise NoiseRecord(ParseResult parse)
-    {
-        var noise = GetNoise(parse);
-        if (noise.IsNoiseless) return RunNoise.None;
-        var kind = parse.GetValue(Engine);
-        var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
-        return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, EngineFactory.NoiseDescription(kind, noise));
-    }
-
     public void AddTo(Command command)
     {
-        command.Options.Add(Engine);
-        command.Options.Add(Seed);
-        command.Options.Add(Workers);
+        command.AddOptions(Engine, Seed, Workers);
         if (_accepted.Any(k => k.RunsQSharp)) command.Options.Add(MaxQubits);
         if (_accepted.Any(k => k.RunsQSharp)) command.Options.Add(Cluster);
         if (_accepted.Any(k => k.SearchesWithGrover))
         {
-            command.Options.Add(Noise);
-            command.Options.Add(QubitLoss);
+            command.AddOptions(Noise, QubitLoss);
         }
     }
 

@@ -12,28 +12,24 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public static class ErrorReport
 {
-    public const int BadInput = 2;
-    public const int QuantumFailure = 3;
-    public const int InternalError = 4;
-
     public static (int ExitCode, string Text) Describe(Exception e, bool verbose)
     {
         var (code, summary) = Summarise(e);
         var text = $"error: {summary}";
         if (verbose) text += Environment.NewLine + Details(e);
-        else if (code != BadInput) text += Environment.NewLine + "(run again with --verbose for the details)";
+        else if (code != ExitCodes.BadInput) text += Environment.NewLine + "(run again with --verbose for the details)";
         return (code, text);
     }
 
     private static (int Code, string Summary) Summarise(Exception e) => e switch
     {
-        UserError or SceneError or SimulatorLimitException => (BadInput, e.Message),
+        UserError or SceneError or SimulatorLimitException => (ExitCodes.BadInput, e.Message),
         // A file system failure after the up-front checks (a disk that filled, a directory made read-only meanwhile).
-        IOException or UnauthorizedAccessException => (BadInput, e.Message),
-        QSharpException { Code: "compile" } q => (QuantumFailure, q.Message),
-        QSharpException q => (QuantumFailure, $"Q# failed{(q.Location is { } at ? $" at {at}" : "")}: {FirstLine(q.Message)}"),
-        BridgeException b => (QuantumFailure, FirstLine(b.Message)),
-        _ => (InternalError, $"internal error ({e.GetType().Name}): {FirstLine(e.Message)}. This is a bug in QuantumRayTracing"),
+        IOException or UnauthorizedAccessException => (ExitCodes.BadInput, e.Message),
+        QSharpException { Code: "compile" } q => (ExitCodes.QuantumFailure, q.Message),
+        QSharpException q => (ExitCodes.QuantumFailure, $"Q# failed{(q.Location is { } at ? $" at {at}" : "")}: {FirstLine(q.Message)}"),
+        BridgeException b => (ExitCodes.QuantumFailure, FirstLine(b.Message)),
+        _ => (ExitCodes.InternalError, $"internal error ({e.GetType().Name}): {FirstLine(e.Message)}. This is a bug in QuantumRayTracing"),
     };
 
     private static string Details(Exception e)

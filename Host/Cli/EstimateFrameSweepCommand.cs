@@ -27,63 +27,25 @@ public sealed class EstimateFrameSweepCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
-    private readonly Option<int> _scalingSize = new("--scaling-size")
-    {
-        Description = "Image side of the Qornell frames against N.",
-        DefaultValueFactory = _ => 32,
-    };
+    private readonly Option<int> _scalingSize = new Option<int>("--scaling-size") { Description = "Image side of the Qornell frames against N.", DefaultValueFactory = _ => 32 }
+        .Between(1, SceneLoader.MaxImageSide);
 
-    private readonly Option<int> _detailedSize = new("--detailed-size")
-    {
-        Description = "Image side of the Qornell-64 frame shown pass by pass.",
-        DefaultValueFactory = _ => 128,
-    };
+    private readonly Option<int> _detailedSize = new Option<int>("--detailed-size") { Description = "Image side of the Qornell-64 frame shown pass by pass.", DefaultValueFactory = _ => 128 }
+        .Between(1, SceneLoader.MaxImageSide);
 
-    private readonly Option<double> _errorBudget = new("--error-budget")
-    {
-        Description = "The largest probability that a frame fails, shared equally by its Grover runs.",
-        DefaultValueFactory = _ => FrameBudget.DefaultFrame,
-    };
+    private readonly Option<double> _errorBudget = CommonOptions.ErrorBudget("The largest probability that a frame fails, shared equally by its Grover runs.");
 
-    private readonly Option<int> _qpus = new("--qpus")
-    {
-        Description = "Quantum processors of the parallel runtime.",
-        DefaultValueFactory = _ => 64,
-    };
+    private readonly Option<int> _qpus = CommonOptions.Qpus("Quantum processors of the parallel runtime.", 64);
 
-    private readonly Option<FileInfo?> _output = new("--output", "-o")
-    {
-        Description = "Write the Markdown report here (e.g. docs/hardware.md), the plot beside it as <report>-runtime-vs-primitives.png. It replaces only files this command wrote. Default: the report is printed only.",
-    };
+    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("Write the Markdown report here (e.g. docs/hardware.md), the plot beside it as <report>-runtime-vs-primitives.png. It replaces only files this command wrote. Default: the report is printed only.");
 
-    private readonly Option<ulong> _seed = new("--seed")
-    {
-        Description = "Seed of every frame's render.",
-        DefaultValueFactory = _ => 1UL,
-    };
+    private readonly Option<ulong> _seed = CommonOptions.Seed("Seed of every frame's render.");
 
     private readonly EstimateOptions _options = new();
 
     public EstimateFrameSweepCommand() : base("frame-sweep", "Whole-frame costs on fault-tolerant machines: Qornell-64 and Depth Complexity 64 at several sizes, the Qornell box against N, on every model given, as Markdown with a plot.")
     {
-        Options.Add(_sizes);
-        Options.Add(_primitives);
-        Options.Add(_scalingSize);
-        Options.Add(_detailedSize);
-        Options.Add(_errorBudget);
-        Options.Add(_qpus);
-        Options.Add(_output);
-        Options.Add(_seed);
-        Options.Add(_options.Oracle);
-        Options.Add(_options.Models);
-        Options.Add(_options.Workers);
-        _qpus.Between(1, 1_000_000);
-        _scalingSize.Between(1, SceneLoader.MaxImageSide);
-        _detailedSize.Between(1, SceneLoader.MaxImageSide);
-        _errorBudget.Validators.Add(r =>
-        {
-            if (r.TryGetValue<double>(out var budget) && FrameBudget.Problem(budget) is { } problem) r.AddError($"--error-budget {problem}");
-        });
+        this.AddOptions(_sizes, _primitives, _scalingSize, _detailedSize, _errorBudget, _qpus, _output, _seed, _options.Oracle, _options.Models, _options.Workers);
         _sizes.Validators.Add(r =>
         {
             if (r.TryGetValue<int[]>(out var values) && (values is not { Length: > 0 } || values.Any(s => s < 1 || s > SceneLoader.MaxImageSide)))
@@ -106,7 +68,7 @@ public sealed class EstimateFrameSweepCommand : Command
         var settings = new FrameSweepSettings(parse.GetValue(_sizes)!, parse.GetValue(_primitives)!, parse.GetValue(_scalingSize), parse.GetValue(_detailedSize),
             parse.GetValue(_seed), _options.Construction(parse), _options.QubitModels(parse), parse.GetValue(_errorBudget), parse.GetValue(_qpus), parse.GetValue(_options.Workers), machine);
         var report = FrameSweepExperiment.Run(settings, Console.Error.WriteLine);
-        writer.Write(report, BenchReportOptions.Footer(machine));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(machine));
+        return ExitCodes.Success;
     }
 }

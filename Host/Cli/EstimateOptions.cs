@@ -3,7 +3,6 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
-using Spectre.Console;
 
 namespace QuantumRayTracing.Cli;
 
@@ -36,11 +35,7 @@ public sealed class EstimateOptions
         HelpName = "table|md|csv",
     };
 
-    public readonly Option<int> Workers = new("--workers")
-    {
-        Description = "Node bridge processes estimating circuits in parallel. Default: the core count.",
-        DefaultValueFactory = _ => BridgePool.DefaultWorkers,
-    };
+    public readonly Option<int> Workers = CommonOptions.Workers("Node bridge processes estimating circuits in parallel. Default: the core count.");
 
     public EstimateOptions()
     {
@@ -57,14 +52,11 @@ public sealed class EstimateOptions
             foreach (var text in texts)
                 if (QubitModel.Parse(text) is { Error: { } error }) r.AddError($"--models: {error}");
         });
-        Workers.AtLeast(1);
     }
 
     public void AddTo(Command command, bool withFormat = true)
     {
-        command.Options.Add(Oracle);
-        command.Options.Add(Models);
-        command.Options.Add(NoCircuit);
+        command.AddOptions(Oracle, Models, NoCircuit);
         if (withFormat) command.Options.Add(Format);
         command.Options.Add(Workers);
     }
@@ -78,22 +70,5 @@ public sealed class EstimateOptions
     {
         pool = new BridgePool(parse.GetValue(Workers));
         return new ResourceEstimator(pool, QubitModels(parse), withCircuits: !parse.GetValue(NoCircuit));
-    }
-
-    /// <summary>Prints the table in the chosen format.</summary>
-    public void Write(ParseResult parse, ReportTable table)
-    {
-        switch (parse.GetValue(Format))
-        {
-            case ReportFormat.Md:
-                Console.Write(table.ToMarkdown());
-                break;
-            case ReportFormat.Csv:
-                Console.Write(table.ToCsv());
-                break;
-            default:
-                table.WriteToConsole();
-                break;
-        }
     }
 }

@@ -11,50 +11,23 @@ public sealed class EstimateSweepCommand : Command
 {
     public const string CommandLine = "qrt estimate sweep";
 
-    private readonly Option<int[]> _primitives = new("--primitives")
-    {
-        Description = $"Primitive counts N of the sweep over N, on a {EstimateSweep.DefaultCoordinateBits}-bit grid (space-separated).",
-        DefaultValueFactory = _ => EstimateSweep.Primitives.ToArray(),
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _primitives = CommonOptions.List("--primitives", $"Primitive counts N of the sweep over N, on a {EstimateSweep.DefaultCoordinateBits}-bit grid (space-separated).",
+        EstimateSweep.Primitives.ToArray(), "N", 1, 4096);
 
-    private readonly Option<int[]> _bits = new("--bits")
-    {
-        Description = $"Coordinate bits of the sweep over the grid, at N = {EstimateSweep.DefaultPrimitives} (space-separated).",
-        DefaultValueFactory = _ => EstimateSweep.CoordinateBits.ToArray(),
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _bits = CommonOptions.List("--bits", $"Coordinate bits of the sweep over the grid, at N = {EstimateSweep.DefaultPrimitives} (space-separated).",
+        EstimateSweep.CoordinateBits.ToArray(), "count", 2, 16);
 
-    private readonly Option<int[]> _ablation = new("--ablation")
-    {
-        Description = "Primitive counts at which each change of the construction is also measured on its own (space-separated).",
-        DefaultValueFactory = _ => [4, EstimateSweep.DefaultPrimitives],
-        AllowMultipleArgumentsPerToken = true,
-    };
+    private readonly Option<int[]> _ablation = CommonOptions.List("--ablation", "Primitive counts at which each change of the construction is also measured on its own (space-separated).",
+        [4, EstimateSweep.DefaultPrimitives], "N", 1, 4096);
 
-    private readonly Option<FileInfo?> _output = new("--output", "-o")
-    {
-        Description = "Write the Markdown report here (e.g. docs/estimates.md). It replaces only a report this command wrote before. Default: the report is printed only.",
-    };
+    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("Write the Markdown report here (e.g. docs/estimates.md). It replaces only a report this command wrote before. Default: the report is printed only.");
 
     private readonly EstimateOptions _options = new();
 
     public EstimateSweepCommand() : base("sweep", "The oracle's estimates against the number of primitives (4..512) and the coordinate bits (2..8), before and after the compact construction, as Markdown.")
     {
-        Options.Add(_primitives);
-        Options.Add(_bits);
-        Options.Add(_ablation);
-        Options.Add(_output);
+        this.AddOptions(_primitives, _bits, _ablation, _output);
         _options.AddTo(this, withFormat: false);
-        foreach (var option in new[] { _primitives, _ablation })
-            option.Validators.Add(r =>
-            {
-                if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(n => n is < 1 or > 4096)) r.AddError($"{option.Name}: each N must be between 1 and 4096");
-            });
-        _bits.Validators.Add(r =>
-        {
-            if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(c => c is < 2 or > 16)) r.AddError("--bits: each count must be between 2 and 16");
-        });
         SetAction(Execute);
     }
 
@@ -66,7 +39,7 @@ public sealed class EstimateSweepCommand : Command
             _options.QubitModels(parse), WithCircuits: !parse.GetValue(_options.NoCircuit), parse.GetValue(_options.Workers));
         var report = OracleSweepExperiment.Run(settings, Console.Error.WriteLine);
         var versions = ToolVersions.Detect();
-        writer.Write(report, BenchReportOptions.Footer(MachineDescription.Describe(versions.QsharpLang, versions.Node)));
-        return 0;
+        writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(versions.QsharpLang, versions.Node)));
+        return ExitCodes.Success;
     }
 }

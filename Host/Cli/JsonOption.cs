@@ -39,7 +39,7 @@ public sealed class JsonOption
         var record = new RunRecord(parse.CommandResult.Command.Name, Values(parse),
             engine is null ? null : parse.GetValue(engine.Seed),
             engine is null ? null : EngineFactory.Name(parse.GetValue(engine.Engine)),
-            engine?.NoiseRecord(parse) ?? RunNoise.None, figures, ranOn);
+            engine is null ? RunNoise.None : RunNoise.Of(parse.GetValue(engine.Engine), engine.GetNoise(parse)), figures, ranOn);
         RunJsonFile.Write(path, record);
     }
 

@@ -22,14 +22,12 @@ public sealed class QSearchOptionSet
     public QSearchOptionSet() =>
         Growth.Validators.Add(r =>
         {
-            var c = r.GetValueOrDefault<double>();
-            if (!(c > 1 && c < 2)) r.AddError($"--growth must satisfy 1 < c < 2, got {c}");
+            if (r.TryGetValue<double>(out var c) && !(c > 1 && c < 2)) r.AddError($"--growth must satisfy 1 < c < 2, got {c}");
         });
 
     public void AddTo(Command command)
     {
-        command.Options.Add(Growth);
-        command.Options.Add(Rule);
+        command.AddOptions(Growth, Rule);
     }
 
     public QSearchOptions Get(ParseResult parse) => new(parse.GetValue(Growth), parse.GetValue(Rule));

@@ -12,17 +12,17 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class RenderOptionSet
 {
-    public readonly Option<int> Passes = new("--passes", "-p")
+    public readonly Option<int> Passes = new Option<int>("--passes", "-p")
     {
         Description = "TracePass iterations (#IT) for primary and specular rays: searches for a closer hit per ray, at most (the stop rule ends most rays sooner).",
         DefaultValueFactory = _ => RenderDefaults.Iterations,
-    };
+    }.Between(1, 64);
 
-    public readonly Option<int> ShadowPasses = new("--shadow-passes")
+    public readonly Option<int> ShadowPasses = new Option<int>("--shadow-passes")
     {
         Description = "DirectPass rounds: QOccluded searches per shadow ray not yet found occluded.",
         DefaultValueFactory = _ => DirectPass.DefaultIterations,
-    };
+    }.Between(1, 64);
 
     public readonly Option<TieBreak> TieBreak = new("--tie-break")
     {
@@ -50,10 +50,10 @@ public sealed class RenderOptionSet
         HelpName = "off|paper|exact|scene",
     };
 
-    public readonly Option<int?> Lattice = new("--lattice")
+    public readonly Option<int?> Lattice = new Option<int?>("--lattice")
     {
         Description = $"Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where all its neighbours agree, full where they disagree or some are missing. Applies to passes with --neighbours / --shadow-neighbours. Default: from the image size, as many levels (up to {RenderDefaults.LatticeLevels}) as keep {RenderDefaults.LatticePointsPerSide} lattice points along the shorter side.",
-    };
+    }.Between(0, 6);
 
     public readonly Option<double> AgreedMiss = new("--agreed-miss")
     {
@@ -67,34 +67,28 @@ public sealed class RenderOptionSet
         DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
     };
 
-    public readonly Option<int> AreaSamples = new("--area-samples")
+    public readonly Option<int> AreaSamples = new Option<int>("--area-samples")
     {
         Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
         DefaultValueFactory = _ => RenderDefaults.AreaSamples,
-    };
+    }.Between(1, CommonOptions.MaxSamples);
 
-    public readonly Option<int> Vpl = new("--vpl")
+    public readonly Option<int> Vpl = new Option<int>("--vpl")
     {
         Description = "Virtual point lights per surface point for single-bounce indirect light: cosine-weighted rays traced to their closest hit, each lit by the scene's lights through shadow rays (0: no indirect light; the paper: 4).",
         DefaultValueFactory = _ => RenderDefaults.Vpl,
-    };
+    }.Between(0, CommonOptions.MaxSamples);
 
     public RenderOptionSet()
     {
-        AreaSamples.Between(1, RenderCommand.MaxSamples);
-        Vpl.Between(0, RenderCommand.MaxSamples);
         PlannedMiss.Validators.Add(r =>
         {
-            if (r.GetValueOrDefault<double?>() is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
+            if (r.TryGetValue<double?>(out var given) && given is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
         });
-        Lattice.Between(0, 6);
         AgreedMiss.Validators.Add(r =>
         {
-            var p = r.GetValueOrDefault<double>();
-            if (!(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
+            if (r.TryGetValue<double>(out var p) && !(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
         });
-        Passes.Between(1, 64);
-        ShadowPasses.Between(1, 64);
     }
 
     /// <summary>Every option of the set, in help order.</summary>

@@ -1,5 +1,4 @@
 using System.CommandLine;
-using QuantumRayTracing.Output;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
@@ -17,13 +16,6 @@ public sealed class ScenesCommand : Command
         Subcommands.Add(new CheckCommand());
     }
 
-    /// <summary>Every generated scene: file name and builder.</summary>
-    public static IEnumerable<(string File, SceneBuilder Scene)> Standard() =>
-        QornellBox.Sizes.Select(n => ($"qornell-{n}.json", QornellBox.Build(n)))
-            .Concat(DepthComplexityScene.Sizes.Select(n => ($"depth-complexity-{n}.json", DepthComplexityScene.Build(n))))
-            .Concat(QornellBox.AreaLitSizes.Select(n => ($"qornell-{n}-area.json", QornellBox.BuildAreaLit(n))))
-            .Append(($"temple-{TempleScene.Primitives}.json", TempleScene.Build()));
-
     private sealed class GenerateCommand : Command
     {
         private readonly Option<DirectoryInfo> _directory = new("--directory", "-d")
@@ -37,19 +29,9 @@ public sealed class ScenesCommand : Command
             Options.Add(_directory);
             SetAction(parse =>
             {
-                var directory = parse.GetValue(_directory)!.FullName;
-                var files = Standard().Select(s => (Path: Path.Combine(directory, s.File), s.Scene)).ToArray();
-                var marker = GeneratedReport.JsonMarker(GenerateCommandLine);
-                foreach (var (path, _) in files) new GeneratedReport(path, marker).EnsureWritable();
-                foreach (var (path, scene) in files)
-                {
-                    var report = new GeneratedReport(path, marker);
-                    var text = scene.ToJson();
-                    SceneLoader.Parse(report.Compose(text), path); // a generator bug must not reach disk
-                    report.Write(text);
-                    Console.WriteLine($"wrote {Path.GetRelativePath(Environment.CurrentDirectory, path)} ({scene.Count} primitives)");
-                }
-                return 0;
+                StandardScenes.Write(parse.GetValue(_directory)!.FullName, GenerateCommandLine,
+                    (path, primitives) => Console.WriteLine($"wrote {Path.GetRelativePath(Environment.CurrentDirectory, path)} ({primitives} primitives)"));
+                return ExitCodes.Success;
             });
         }
     }
@@ -82,7 +64,7 @@ public sealed class ScenesCommand : Command
                         failures++;
                     }
                 }
-                return failures == 0 ? 0 : 2;
+                return failures == 0 ? ExitCodes.Success : ExitCodes.BadInput;
             });
         }
     }

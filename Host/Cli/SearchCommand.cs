@@ -1,5 +1,5 @@
 using System.CommandLine;
-using System.Globalization;
+using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
 using Spectre.Console;
@@ -12,11 +12,11 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class SearchCommand : Command
 {
-    private readonly Option<int> _count = new("--count", "-n")
+    private readonly Option<int> _count = new Option<int>("--count", "-n")
     {
         Description = "N, the number of indices searched (1 to 4096).",
         DefaultValueFactory = _ => 64,
-    };
+    }.Between(1, 4096);
 
     private readonly Option<int[]> _marked = new("--marked", "-m")
     {
@@ -25,11 +25,11 @@ public sealed class SearchCommand : Command
         Arity = ArgumentArity.ZeroOrMore,
     };
 
-    private readonly Option<int> _searches = new("--searches", "-s")
+    private readonly Option<int> _searches = new Option<int>("--searches", "-s")
     {
         Description = "Independent searches run side by side, one engine call per round for all of them.",
         DefaultValueFactory = _ => 100,
-    };
+    }.AtLeast(1);
 
     private readonly QSearchOptionSet _qsearch = new();
 
@@ -39,25 +39,31 @@ public sealed class SearchCommand : Command
 
     public SearchCommand() : base("search", "Grover search with QSearch (adaptive exponential search) over N indices with a given marked set.")
     {
-        Options.Add(_count);
-        Options.Add(_marked);
-        Options.Add(_searches);
+        this.AddOptions(_count, _marked, _searches);
         _qsearch.AddTo(this);
         _engine.AddTo(this);
         _json.AddTo(this);
-        _count.Between(1, 4096);
-        _searches.AtLeast(1);
-        Validators.Add(r =>
-        {
-            var n = r.GetValue(_count);
-            var marked = r.GetValue(_marked) ?? [];
-            var outside = marked.Where(m => m < 0 || m >= n).ToArray();
-            if (outside.Length > 0)
-                r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
-            else if (marked.Distinct().Count() != marked.Length)
-                r.AddError("--marked: an index is listed twice");
-        });
+        Validators.Add(EnsureMarkedIndicesAreDistinctAndBelowCount);
         SetAction(Execute);
+    }
+
+    private void EnsureMarkedIndicesAreDistinctAndBelowCount(CommandResult r)
+    {
+        int n;
+        int[] marked;
+        try
+        {
+            (n, marked) = (r.GetValue(_count), r.GetValue(_marked) ?? []);
+        }
+        catch (InvalidOperationException)
+        {
+            return; // a value that does not parse has its own error
+        }
+        var outside = marked.Where(m => m < 0 || m >= n).ToArray();
+        if (outside.Length > 0)
+            r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
+        else if (marked.Distinct().Count() != marked.Length)
+            r.AddError("--marked: an index is listed twice");
     }
 
     private int Execute(ParseResult parse)
@@ -67,13 +73,7 @@ public sealed class SearchCommand : Command
         var settings = new SearchRunSettings(parse.GetValue(_count), parse.GetResult(_marked) is null ? null : parse.GetValue(_marked) ?? [],
             parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges);
-        var (marked, registers) = (settings.MarkedSet, settings.Registers);
-
-        AnsiConsole.WriteLine($"N = {settings.Count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", settings.Schedule.Bounds)}}}");
-        AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index qubits + {registers.AuxiliaryQubits} auxiliaries for the multi-controlled phase");
-        var noise = EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
-        AnsiConsole.WriteLine($"noise model: {noise}");
-
+        SearchRunView.PrintPlan(settings);
         var run = AnsiConsole.Profile.Capabilities.Interactive
             ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
             {
@@ -81,26 +81,8 @@ public sealed class SearchCommand : Command
                 return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
             })
             : SearchRun.Run(settings);
-
-        var figures = run.Figures;
-        var table = new Table().AddColumns("measure", "value");
-        table.AddRow("searches", N(figures.Searches));
-        table.AddRow("found / not found", $"{N(figures.Found)} / {N(figures.NotFound)}");
-        table.AddRow("#Eval per search, conservative", Per(figures.QueriesConservativePerSearch));
-        table.AddRow("#Eval per search, paper", Per(figures.QueriesPaperPerSearch));
-        table.AddRow("#C_Int per search", Per(figures.ClassicalTestsPerSearch));
-        table.AddRow("Grover runs per search", Per(figures.GroverRunsPerSearch));
-        table.AddRow("engine calls (rounds)", N(figures.Rounds));
-        table.AddRow("noise model", noise);
-        table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
-        table.AddRow("ran on", Markup.Escape(run.RanOn.Description));
-        AnsiConsole.Write(table);
-        AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
-        _json.Write(parse, figures, _engine, run.RanOn);
-        return 0;
+        SearchRunView.Print(settings, run);
+        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        return ExitCodes.Success;
     }
-
-    private static string Per(double value) => value.ToString("0.00", CultureInfo.InvariantCulture);
-
-    private static string N(int value) => value.ToString(CultureInfo.InvariantCulture);
 }

@@ -1,7 +1,8 @@
 using System.CommandLine;
-using System.Globalization;
+using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Scenes.Generation;
 
@@ -10,7 +11,7 @@ namespace QuantumRayTracing.Cli;
 /// <summary>
 /// `supersample`: estimates every output pixel's mean over s x s subpixels, taken from an image file or from a scene
 /// rendered classically at s times the resolution, with Monte Carlo, QSS, QCoin or MLAE; writes the image (and
-/// for bit-plane QSS the confidence map) and prints the error against the exact average.
+/// for bit-plane QSS the confidence map) and prints the error against the exact average (<see cref="SupersampleRunView"/>).
 /// </summary>
 public sealed class SupersampleCommand : Command
 {
@@ -28,17 +29,13 @@ public sealed class SupersampleCommand : Command
         Description = $"Scene file rendered classically at s times --size, each s x s block one output pixel. Default (without --image): the built-in Qornell box with {DefaultScene.QornellPrimitives} primitives.",
     };
 
-    private readonly Option<string?> _size = new("--size")
-    {
-        Description = "Output size for a scene, WIDTHxHEIGHT or one number for a square; the scene is rendered at s times it. Default: the scene's size.",
-        HelpName = "WxH",
-    };
+    private readonly Option<string?> _size = CommonOptions.ImageSize("Output size for a scene, WIDTHxHEIGHT or one number for a square; the scene is rendered at s times it. Default: the scene's size.");
 
-    private readonly Option<int> _subpixels = new("--subpixels")
+    private readonly Option<int> _subpixels = new Option<int>("--subpixels")
     {
         Description = "s: each output pixel averages s x s subpixels (4: 16 subpixels, 8: 64).",
         DefaultValueFactory = _ => DefaultSubpixels,
-    };
+    }.Between(1, 16);
 
     private readonly Option<SupersampleMethod> _method = new("--method", "-m")
     {
@@ -49,30 +46,30 @@ public sealed class SupersampleCommand : Command
         HelpName = "mc|qss|qcoin|mlae|mlae-noise",
     };
 
-    private readonly Option<long?> _queries = new("--queries", "-q")
+    private readonly Option<long?> _queries = new Option<long?>("--queries", "-q")
     {
         Description = $"Queries per pixel and channel for mc, qcoin, mlae and mlae-noise (a coin flip 1, a Grover operator 2). Default: {SupersampleSettings.DefaultQueries}. Not for qss, whose count follows from --counter-bits.",
-    };
+    }.Between(1, 100_000);
 
-    private readonly Option<int?> _steps = new("--steps")
+    private readonly Option<int?> _steps = new Option<int?>("--steps")
     {
         Description = "qcoin: shift-and-scale steps k. Default: the measured best k for the budget (4 at 240 queries).",
-    };
+    }.Between(1, 12);
 
-    private readonly Option<int?> _levels = new("--levels")
+    private readonly Option<int?> _levels = new Option<int?>("--levels")
     {
         Description = "mlae and mlae-noise: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
-    };
+    }.Between(0, 12);
 
-    private readonly Option<int?> _counterBits = new("--counter-bits", "-t")
+    private readonly Option<int?> _counterBits = new Option<int?>("--counter-bits", "-t")
     {
         Description = "qss: counter qubits t; a run costs 2^(t+1) - 1 queries. Default: ceil(log2 N) for bit planes (4 for 4x4), 7 for continuous values (255 queries).",
-    };
+    }.Between(1, 12);
 
-    private readonly Option<int?> _planes = new("--planes")
+    private readonly Option<int?> _planes = new Option<int?>("--planes")
     {
         Description = $"qss with bit planes: each channel quantised to P bits, one QSS run per bit plane. Default: {SupersampleSettings.DefaultPlanes} (exact for 8-bit inputs); 1 for black-and-white images.",
-    };
+    }.Between(1, 8);
 
     private readonly Option<QssValues?> _qssValues = new("--qss-values")
     {
@@ -80,10 +77,7 @@ public sealed class SupersampleCommand : Command
         HelpName = "planes|continuous",
     };
 
-    private readonly Option<string?> _output = new("--output", "-o")
-    {
-        Description = "PNG to write. Default: <input>-<method>.png in the current directory; bit-plane QSS also writes <output>-confidence.png. An existing file is replaced only if this program wrote it.",
-    };
+    private readonly Option<string?> _output = CommonOptions.ImageOutput("PNG to write. Default: <input>-<method>.png in the current directory; bit-plane QSS also writes <output>-confidence.png. An existing file is replaced only if this program wrote it.");
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic, EngineKind.FullState);
 
@@ -91,53 +85,35 @@ public sealed class SupersampleCommand : Command
 
     public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from an image file or a scene) with Monte Carlo, QSS, QCoin or MLAE; print the error against the exact average.")
     {
-        Options.Add(_image);
-        Options.Add(_scene);
-        Options.Add(_size);
-        Options.Add(_subpixels);
-        Options.Add(_method);
-        Options.Add(_queries);
-        Options.Add(_steps);
-        Options.Add(_levels);
-        Options.Add(_counterBits);
-        Options.Add(_planes);
-        Options.Add(_qssValues);
-        Options.Add(_output);
+        this.AddOptions(_image, _scene, _size, _subpixels, _method, _queries, _steps, _levels, _counterBits, _planes, _qssValues, _output);
         _engine.AddTo(this);
         _json.AddTo(this);
         _method.Choices();
         _qssValues.Choices();
-        _subpixels.Between(1, 16);
-        _queries.Between(1, 100_000);
-        _steps.Between(1, 12);
-        _levels.Between(0, 12);
-        _counterBits.Between(1, 12);
-        _planes.Between(1, 8);
-        _size.Validators.Add(r =>
-        {
-            if (RenderCommand.ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
-        });
-        Validators.Add(r =>
-        {
-            SupersampleSettings settings;
-            try
-            {
-                settings = MethodSettings(r);
-            }
-            catch (InvalidOperationException)
-            {
-                // A value that does not parse (say --method bogus) has its own error; combinations need parsed values.
-                return;
-            }
-            if (r.GetValue(_image) is not null && r.GetValue(_scene) is not null) r.AddError("--image and --scene: give one input, not both");
-            else if (r.GetValue(_image) is not null && r.GetValue(_size) is not null) r.AddError("--size applies to scenes only: an image's output size is its size divided by --subpixels");
-            else if (settings.Problem() is { } problem) r.AddError(problem);
-        });
+        Validators.Add(EnsureOneInputAndAMethodThatFits);
         SetAction(Execute);
     }
 
+    // One error at most: the inputs first, then the method's options (SupersampleSettings.Problem).
+    private void EnsureOneInputAndAMethodThatFits(CommandResult r)
+    {
+        SupersampleSettings settings;
+        try
+        {
+            settings = MethodSettings(r);
+        }
+        catch (InvalidOperationException)
+        {
+            // A value that does not parse (say --method bogus) has its own error; combinations need parsed values.
+            return;
+        }
+        if (r.GetValue(_image) is not null && r.GetValue(_scene) is not null) r.AddError("--image and --scene: give one input, not both");
+        else if (r.GetValue(_image) is not null && r.GetValue(_size) is not null) r.AddError("--size applies to scenes only: an image's output size is its size divided by --subpixels");
+        else if (settings.Problem() is { } problem) r.AddError(problem);
+    }
+
     // Inside a command validator, an option left out reads as default(T), not its default value: those are filled in here.
-    private SupersampleSettings MethodSettings(System.CommandLine.Parsing.CommandResult r) =>
+    private SupersampleSettings MethodSettings(CommandResult r) =>
         new(r.GetResult(_method) is null ? DefaultMethod : r.GetValue(_method), r.GetResult(_subpixels) is null ? DefaultSubpixels : r.GetValue(_subpixels),
             r.GetValue(_queries), r.GetValue(_steps), r.GetValue(_levels), r.GetValue(_counterBits), r.GetValue(_planes), r.GetValue(_qssValues));
 
@@ -149,10 +125,10 @@ public sealed class SupersampleCommand : Command
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
-        var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => PrintPlan(settings, plan));
-        Print(run.Figures, settings, run.RanOn.Description);
+        var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => SupersampleRunView.PrintPlan(settings, plan));
+        SupersampleRunView.Print(settings, run);
         _json.Write(parse, run.Figures, _engine, run.RanOn);
-        return 0;
+        return ExitCodes.Success;
     }
 
     /// <summary>The run the options ask for; the bridges are started after the outputs are checked.</summary>
@@ -164,45 +140,8 @@ public sealed class SupersampleCommand : Command
         var stem = imageFile is not null ? Path.GetFileNameWithoutExtension(imageFile.Name)
             : sceneFile is not null ? Path.GetFileNameWithoutExtension(sceneFile.Name)
             : DefaultScene.Stem;
-        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, RenderCommand.ParseSize(parse.GetValue(_size)).Size,
+        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size,
             parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{stem}-{OptionRules.ChoiceName(method.Method)}.png",
             Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse));
-    }
-
-    /// <summary>What the run models, printed before the estimates start.</summary>
-    private static void PrintPlan(SupersampleRunSettings settings, SupersamplePlan plan)
-    {
-        var (input, s) = (plan.Input, plan.Input.Side);
-        Console.WriteLine(plan.RenderTime is { } time
-            ? $"{plan.InputName}: rendered classically at {input.Image.Width}x{input.Image.Height} in {time.TotalSeconds:0.00} s, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output"
-            : $"{plan.InputName}: {input.Image.Width}x{input.Image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
-        if (plan.Table is { } table)
-            Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
-        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method)})");
-        Console.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
-    }
-
-    private static void Print(SupersampleFigures figures, SupersampleRunSettings settings, string where)
-    {
-        var (engineName, noise) = (EngineFactory.Name(settings.Engine), settings.NoiseModel);
-        var error = figures.Error;
-        var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
-        Console.WriteLine($"queries: {figures.QueriesPerChannel} per pixel per channel, {channels}; {figures.TotalQueries:N0} in all");
-        Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
-        if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
-            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {EngineFactory.NoiseDescription(settings.Engine, noise)}")}; ran on {where}");
-        foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
-    }
-
-    // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
-    private static string Registers(SupersampleSettings settings)
-    {
-        var index = CoinRegisters.SubpixelQubits(settings.Subpixels);
-        var counter = settings.Method == SupersampleMethod.Qss ? $" + {settings.CounterBitsOrDefault} counter" : "";
-        return settings.Method == SupersampleMethod.Mc
-            ? "each query samples one random subpixel"
-            : $"registers: {index} subpixel + 1 coin{counter} qubits";
     }
 }

@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Estimates;
@@ -11,6 +12,22 @@ public static class EstimateTable
 {
     /// <summary>Gate kinds in the order rows list them; kinds not named here follow alphabetically.</summary>
     private static readonly string[] KindOrder = ["X", "CX", "CCX", "Y", "Z", "CZ", "H", "S", "S†", "T", "T†", "Rx", "Ry", "Rz", "SWAP"];
+
+    /// <summary>The lines that say what was estimated: scene, ray, registers, construction, r.</summary>
+    public static IReadOnlyList<string> Context(Scenes.Scene scene, SceneGeometry geometry, EstimateSubject subject)
+    {
+        var table = subject.Oracle.Table;
+        var ray = table.Ray;
+        var construction = subject.Oracle.Construction;
+        return
+        [
+            $"scene: {scene.Name}: N = {geometry.Count}, {scene.Grid}",
+            $"ray: {subject.Label}, origin {ray.Origin}, direction {ray.Direction}; its first search (full range: every depth, every id; marked rows: {table.Marked(subject.Oracle.Window).MarkedCount})",
+            $"registers: {geometry.IndexBits} index, {table.CoordinateBits} bits per coordinate, {table.DepthBits} depth bits",
+            $"oracle construction: {construction} ({(construction.InPlaneAxes ? "the two in-plane axes" : "all three axes")}, {(construction.BothBounds ? "both bounds loaded at once" : "minimum then maximum in one register")}, {(construction.MeasuredUnload ? "unload by measurement" : "unload by lookup")})",
+            $"QSearch run: r = {subject.Iterations.ToString(CultureInfo.InvariantCulture)} iterations",
+        ];
+    }
 
     public static ReportTable For(string title, IReadOnlyList<CircuitEstimate> estimates, IReadOnlyList<QubitModel> models, IReadOnlyList<string> context)
     {

@@ -41,6 +41,23 @@ public sealed class ReportTable(string title, string corner, IReadOnlyList<strin
         return this;
     }
 
+    /// <summary>Prints the table to standard output: a console table, Markdown or CSV.</summary>
+    public void Write(ReportFormat format)
+    {
+        switch (format)
+        {
+            case ReportFormat.Md:
+                Console.Write(ToMarkdown());
+                break;
+            case ReportFormat.Csv:
+                Console.Write(ToCsv());
+                break;
+            default:
+                WriteToConsole();
+                break;
+        }
+    }
+
     public void WriteToConsole()
     {
         foreach (var line in _context) AnsiConsole.WriteLine(line);

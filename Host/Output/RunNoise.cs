@@ -1,3 +1,6 @@
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
+
 namespace QuantumRayTracing.Output;
 
 /// <summary>
@@ -8,4 +11,12 @@ namespace QuantumRayTracing.Output;
 public sealed record RunNoise(string Model, IReadOnlyDictionary<string, double>? Rates = null, string? Description = null)
 {
     public static readonly RunNoise None = new("none");
+
+    /// <summary>The record of <paramref name="noise"/> on the engine <paramref name="kind"/>: the one place results take it from.</summary>
+    public static RunNoise Of(EngineKind kind, NoiseModel noise)
+    {
+        if (noise.IsNoiseless) return None;
+        var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
+        return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, EngineFactory.NoiseDescription(kind, noise));
+    }
 }

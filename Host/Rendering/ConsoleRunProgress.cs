@@ -1,7 +1,6 @@
 using QuantumRayTracing.Passes;
-using QuantumRayTracing.Rendering;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Rendering;
 
 /// <summary>A run's renders on standard error, one <see cref="ConsoleProgress"/> each, its line cleared when the render ends.</summary>
 public sealed class ConsoleRunProgress : IRunProgress

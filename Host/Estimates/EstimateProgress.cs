@@ -1,7 +1,6 @@
-using QuantumRayTracing.Estimates;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Estimates;
 
 /// <summary>Runs estimates with a progress bar on an interactive console, silently otherwise (so piped Markdown or CSV stays clean).</summary>
 public static class EstimateProgress

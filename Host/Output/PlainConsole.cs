@@ -1,6 +1,6 @@
 using Spectre.Console;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Output;
 
 /// <summary>
 /// Output for scripts: when standard output is not a terminal, Spectre.Console writes no escape codes (whatever

@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using QuantumRayTracing.Passes;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Rendering;
 
 /// <summary>
 /// Progress on standard error, only once work has run longer than a second: a line rewritten in place

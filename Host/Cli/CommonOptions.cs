@@ -1,0 +1,111 @@
+using System.CommandLine;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Scenes.Generation;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>
+/// The options several commands share, each declared once: name, type, default and range rule live here, the
+/// description (and a default) where it differs is the caller's. Options of the same name but another kind have
+/// names that say which (<see cref="ImageSize"/> against <see cref="SquareSize"/>).
+/// </summary>
+public static class CommonOptions
+{
+    /// <summary>The side an image option accepts (the paper's largest renders are 128).</summary>
+    public const int MaxSquareSide = 1024;
+
+    /// <summary>The most area samples or VPLs per point an option accepts.</summary>
+    public const int MaxSamples = 4096;
+
+    /// <summary>Attaches options in the order help lists them.</summary>
+    public static void AddOptions(this Command command, params IEnumerable<Option> options)
+    {
+        foreach (var option in options) command.Options.Add(option);
+    }
+
+    /// <summary>The scene file argument; left out, the built-in Qornell box.</summary>
+    public static Argument<FileInfo?> SceneFile() => new("scene")
+    {
+        Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {DefaultScene.QornellPrimitives} primitives, built in.",
+        Arity = ArgumentArity.ZeroOrOne,
+    };
+
+    public static Option<ulong> Seed(string description) => new("--seed") { Description = description, DefaultValueFactory = _ => 1UL };
+
+    public static Option<int> Workers(string description) =>
+        new Option<int>("--workers") { Description = description, DefaultValueFactory = _ => BridgePool.DefaultWorkers }.AtLeast(1);
+
+    /// <summary>A cluster file (docs/cluster.md): where Q# work runs instead of local bridges, or, <paramref name="required"/>, the cluster a command serves or measures.</summary>
+    public static Option<FileInfo?> Cluster(string description, bool required = false) =>
+        new("--cluster") { Description = description, HelpName = "file", Required = required };
+
+    /// <summary>The cluster file of the commands that run Q# engines on local bridges unless told otherwise.</summary>
+    public static Option<FileInfo?> LocalBridgesOrCluster() =>
+        Cluster("Run the Q# engines' chunks on the workers of this cluster file (docs/cluster.md) instead of local bridges. Default: none, local bridges.");
+
+    /// <summary>A report or table written as a file, replaced only if this program wrote it.</summary>
+    public static Option<FileInfo?> ReportOutput(string description) => new("--output", "-o") { Description = description };
+
+    /// <summary>The PNG a command writes; the path is kept as given, for the default name and the JSON record.</summary>
+    public static Option<string?> ImageOutput(string description) => new("--output", "-o") { Description = description };
+
+    /// <summary>The directory named scenes are read from (<c>&lt;name&gt;.json</c>).</summary>
+    public static Option<DirectoryInfo> SceneDirectory() =>
+        new("--scenes") { Description = "Directory holding the scene files.", DefaultValueFactory = _ => new DirectoryInfo("Scenes") };
+
+    /// <summary>An image size written WIDTHxHEIGHT or as one number for a square (<see cref="OptionText.ParseSize"/>); left out, the scene's.</summary>
+    public static Option<string?> ImageSize(string description)
+    {
+        var option = new Option<string?>("--size") { Description = description, HelpName = "WxH" };
+        option.Validators.Add(r =>
+        {
+            if (OptionText.ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
+        });
+        return option;
+    }
+
+    /// <summary>The side of a square image, 1..<see cref="MaxSquareSide"/>.</summary>
+    public static Option<int> SquareSize(string description, int fallback, string name = "--size") =>
+        new Option<int>(name) { Description = description, DefaultValueFactory = _ => fallback }.Between(1, MaxSquareSide);
+
+    /// <summary>Several values, space-separated, each <paramref name="min"/>..<paramref name="max"/>.</summary>
+    public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "")
+    {
+        var option = new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true };
+        option.Validators.Add(r =>
+        {
+            if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(n => n < min || n > max)) r.AddError($"{name}: each {each} must be between {min} and {max}{why}");
+        });
+        return option;
+    }
+
+    /// <summary>Square image sides, space-separated.</summary>
+    public static Option<int[]> SquareSizes(string description, int[] fallback, int max = MaxSquareSide) => List("--sizes", description, fallback, "size", 1, max);
+
+    /// <summary>Seeds 1..n: how many random cases per configuration.</summary>
+    public static Option<int> SeedCount(string description, int fallback, int max) =>
+        new Option<int>("--seeds") { Description = description, DefaultValueFactory = _ => fallback }.Between(1, max);
+
+    public static Option<int> Trials(string description, int fallback, int max) =>
+        new Option<int>("--trials") { Description = description, DefaultValueFactory = _ => fallback }.Between(10, max);
+
+    /// <summary>Area samples and VPLs per point of the converged classical reference.</summary>
+    public static Option<int> ReferenceSamples(string description, int min) =>
+        new Option<int>("--reference-samples") { Description = description, DefaultValueFactory = _ => RenderDefaults.ReferenceSamples }.Between(min, MaxSamples);
+
+    /// <summary>The largest probability that a frame fails, shared by its Grover runs (<see cref="FrameBudget"/>).</summary>
+    public static Option<double> ErrorBudget(string description)
+    {
+        var option = new Option<double>("--error-budget") { Description = description, DefaultValueFactory = _ => FrameBudget.DefaultFrame };
+        option.Validators.Add(r =>
+        {
+            if (r.TryGetValue<double>(out var budget) && FrameBudget.Problem(budget) is { } problem) r.AddError($"--error-budget {problem}");
+        });
+        return option;
+    }
+
+    public static Option<int> Qpus(string description, int fallback) =>
+        new Option<int>("--qpus") { Description = description, DefaultValueFactory = _ => fallback }.Between(1, 1_000_000);
+}

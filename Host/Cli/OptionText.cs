@@ -1,0 +1,57 @@
+using System.CommandLine.Parsing;
+using System.Globalization;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Scenes;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>The option values written in a syntax of their own: image sizes, pixels, engine lists.</summary>
+public static class OptionText
+{
+    /// <summary>"128" or "160x120" → the size; null text → no size.</summary>
+    public static ((int Width, int Height)? Size, string? Error) ParseSize(string? text)
+    {
+        if (text is null) return (null, null);
+        var parts = text.Split('x', 'X');
+        if (parts.Length > 2 || parts.Any(p => !int.TryParse(p, NumberStyles.None, CultureInfo.InvariantCulture, out _)))
+            return (null, $"expected WIDTHxHEIGHT or one number, got '{text}'");
+        var width = int.Parse(parts[0], CultureInfo.InvariantCulture);
+        var height = parts.Length == 2 ? int.Parse(parts[1], CultureInfo.InvariantCulture) : width;
+        if (width < 1 || height < 1 || width > SceneLoader.MaxImageSide || height > SceneLoader.MaxImageSide)
+            return (null, $"each side must be 1..{SceneLoader.MaxImageSide}, got {width}x{height}");
+        return ((width, height), null);
+    }
+
+    /// <summary>The size <paramref name="text"/> gives (validated at parse time), else the scene's own.</summary>
+    public static (int Width, int Height) SizeOr(string? text, Scene scene) => ParseSize(text) is { Size: { } size } ? size : (scene.Width, scene.Height);
+
+    /// <summary>"12,7" → the pixel; null text → no pixel.</summary>
+    public static ((int X, int Y)? Pixel, string? Error) ParsePixel(string? text)
+    {
+        if (text is null) return (null, null);
+        var parts = text.Split(',');
+        if (parts.Length != 2 || !int.TryParse(parts[0], NumberStyles.None, CultureInfo.InvariantCulture, out var x)
+            || !int.TryParse(parts[1], NumberStyles.None, CultureInfo.InvariantCulture, out var y))
+            return (null, $"expected X,Y (two non-negative integers), got '{text}'");
+        return ((x, y), null);
+    }
+
+    /// <summary>Engine names, space- or comma-separated, each kept once, in the order of <paramref name="all"/>.</summary>
+    public static EngineKind[] ParseEngines(ArgumentResult result, string name, EngineKind[] all)
+    {
+        var kinds = new List<EngineKind>();
+        foreach (var text in result.Tokens.SelectMany(t => t.Value.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)))
+        {
+            var match = Enum.GetNames<EngineKind>().FirstOrDefault(n => string.Equals(n, text, StringComparison.OrdinalIgnoreCase));
+            if (match is null)
+            {
+                result.AddError($"{name}: '{text}' is not one of {string.Join(", ", all.Select(EngineFactory.Name))}");
+                return [];
+            }
+            var kind = Enum.Parse<EngineKind>(match);
+            if (!kinds.Contains(kind)) kinds.Add(kind);
+        }
+        if (kinds.Count == 0) result.AddError($"{name}: name at least one engine");
+        return kinds.OrderBy(k => Array.IndexOf(all, k)).ToArray();
+    }
+}

@@ -1,0 +1,87 @@
+using System.Globalization;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Scenes;
+using Spectre.Console;
+
+namespace QuantumRayTracing.Rendering;
+
+/// <summary>`render` on the console: what a run models before it starts, and its figures (the paper's table 1 per pass) after.</summary>
+public static class RenderRunView
+{
+    /// <summary>What the run models, printed before it starts.</summary>
+    public static void PrintPlan(RenderRunSettings settings, RenderPlan plan)
+    {
+        var (scene, options) = (settings.Scene, settings.Options);
+        AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
+        if (settings.SamplesLight)
+        {
+            var converged = settings.Converged;
+            AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
+                + (settings.WithConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
+        }
+        AnsiConsole.WriteLine($"modelled per search: {plan.IndexQubits} index qubits + {plan.AuxiliaryQubits} auxiliaries, lookup table of {plan.Primitives} rows x {plan.CoordinateBits} coordinate bits per axis");
+        if (settings.Engine.SearchesWithGrover)
+            AnsiConsole.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+        if (plan.GateRegisters is { } registers)
+            AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
+    }
+
+    /// <summary>Where the run went, the cost per pass, the error against the references and the files written.</summary>
+    public static void Print(RenderRunSettings settings, RenderRunResult run)
+    {
+        var (kind, noise, figures) = (settings.Engine, settings.NoiseModel, run.Figures);
+        var engineName = EngineFactory.Name(kind);
+        AnsiConsole.WriteLine($"{engineName} ran on {run.RanOn.Description}");
+        if (!noise.IsNoiseless) engineName = $"{engineName} under {EngineFactory.NoiseDescription(kind, noise)}";
+        AnsiConsole.Write(MetricsTable(engineName, figures));
+        var error = figures.Error;
+        var sameSamples = settings.SamplesLight ? " with the same samples (search error alone)" : "";
+        AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
+        // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
+        AnsiConsole.WriteLine($"wrong pixels: expected {figures.Budget.ExpectedWrongPixels:0.0} ({figures.Budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); budget {AccuracyBudget.Target:P1}");
+        AnsiConsole.WriteLine(!noise.IsNoiseless
+            ? "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)"
+            : "(expected: an expectation from each search path's miss rate and finds)");
+        if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } monteCarlo })
+            AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {monteCarlo.Nrmse:P2} (Monte Carlo noise alone)");
+        var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";
+        AnsiConsole.WriteLine($"wall time: {engineName} {figures.RenderTime.TotalSeconds:0.00} s, classical reference {figures.ReferenceTime.TotalSeconds:0.00} s{convergedWall}");
+        AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (docs/conventions.md); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");
+        foreach (var path in figures.Written) AnsiConsole.WriteLine($"wrote {path}");
+    }
+
+    private static Table MetricsTable(string engine, RenderFigures figures)
+    {
+        // Passes as columns, measures as rows: fits an 80-column terminal.
+        var passes = figures.Passes.Append(figures.Total).ToArray();
+        var classical = figures.ClassicalReference;
+        var table = new Table().Title($"{engine}: cost per pass (paper table 1)");
+        table.AddColumn("measure");
+        foreach (var pass in passes) table.AddColumn(new TableColumn(pass.Name).RightAligned());
+        void Row(string measure, Func<PassMetrics, string> value) => table.AddRow([measure, .. passes.Select(value)]);
+        Row("#Rays", p => N(p.Rays));
+        Row("#It", p => p.Iterations.ToString(CultureInfo.InvariantCulture));
+        Row("#Eval, conservative", p => N(p.Cost.QueriesConservative));
+        Row("#Eval, paper", p => N(p.Cost.QueriesPaper));
+        Row("#C_Int", p => N(p.Cost.ClassicalTests));
+        Row("#Int, conservative", p => N(p.IntersectionsConservative));
+        Row("Int/Ray, conservative", p => p.PerRayConservative.ToString("0.00", CultureInfo.InvariantCulture));
+        Row("Int/Ray, paper", p => p.PerRayPaper.ToString("0.00", CultureInfo.InvariantCulture));
+        Row("#Cpix (neighbours)", p => N(p.UpdatedPixels));
+        Row("table rows (eval-rpc)", p => N(p.TableRows));
+        Row("wall time", p => $"{p.Elapsed.TotalSeconds:0.00} s");
+        table.Caption($"classical reference: {N(classical.Rays)} rays, Int/Ray {classical.PerRayConservative:0.00}");
+        return table;
+    }
+
+    private static string LightSummary(Scene scene)
+    {
+        var kinds = new[] { (scene.Lights.Count, "point"), (scene.AreaLights.Count, "area"), (scene.DirectionalLights.Count, "directional") }
+            .Where(k => k.Item1 > 0).Select(k => $"{k.Item1} {k.Item2}").ToArray();
+        return kinds.Length == 0 ? "no lights" : "lights: " + string.Join(", ", kinds);
+    }
+
+    private static string N(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
+}

@@ -1,0 +1,47 @@
+using System.Globalization;
+using QuantumRayTracing.Engines;
+
+namespace QuantumRayTracing.Supersampling;
+
+/// <summary>`supersample` on the console: what a run models before the estimates start, and its figures after.</summary>
+public static class SupersampleRunView
+{
+    /// <summary>What the run models, printed before the estimates start.</summary>
+    public static void PrintPlan(SupersampleRunSettings settings, SupersamplePlan plan)
+    {
+        var (input, s) = (plan.Input, plan.Input.Side);
+        Console.WriteLine(plan.RenderTime is { } time
+            ? $"{plan.InputName}: rendered classically at {input.Image.Width}x{input.Image.Height} in {time.TotalSeconds:0.00} s, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output"
+            : $"{plan.InputName}: {input.Image.Width}x{input.Image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
+        if (plan.Table is { } table)
+            Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
+        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method)})");
+        Console.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+    }
+
+    /// <summary>The queries, the error against the exact average, the confidence, the wall time and the files written.</summary>
+    public static void Print(SupersampleRunSettings settings, SupersampleRunResult run)
+    {
+        var (figures, where) = (run.Figures, run.RanOn.Description);
+        var (engineName, noise) = (EngineFactory.Name(settings.Engine), settings.NoiseModel);
+        var error = figures.Error;
+        var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
+        Console.WriteLine($"queries: {figures.QueriesPerChannel} per pixel per channel, {channels}; {figures.TotalQueries:N0} in all");
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
+        if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
+        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {EngineFactory.NoiseDescription(settings.Engine, noise)}")}; ran on {where}");
+        foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
+    }
+
+    // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
+    private static string Registers(SupersampleSettings settings)
+    {
+        var index = CoinRegisters.SubpixelQubits(settings.Subpixels);
+        var counter = settings.Method == SupersampleMethod.Qss ? $" + {settings.CounterBitsOrDefault} counter" : "";
+        return settings.Method == SupersampleMethod.Mc
+            ? "each query samples one random subpixel"
+            : $"registers: {index} subpixel + 1 coin{counter} qubits";
+    }
+}
