@@ -1,4 +1,4 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Engines;
 
 namespace QuantumRayTracing.Tests.Engines;

@@ -1,4 +1,4 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;

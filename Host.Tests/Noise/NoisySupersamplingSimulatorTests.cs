@@ -1,5 +1,5 @@
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Supersampling;

@@ -1,4 +1,4 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Passes;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes.Generation;

@@ -1,7 +1,7 @@
 using System.CommandLine;
 using QuantumRayTracing.Reports;
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 
 namespace QuantumRayTracing.Cli;
 

@@ -1,5 +1,5 @@
 using System.CommandLine;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;

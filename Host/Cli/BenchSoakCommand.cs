@@ -1,6 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;

@@ -1,6 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 
 namespace QuantumRayTracing.Cli;
 

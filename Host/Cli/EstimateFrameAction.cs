@@ -36,7 +36,7 @@ internal static class EstimateFrameAction
             progress.Finish();
             pricedOn = pool.Place;
             var versions = pool.Bridges[0].Version();
-            machine = Benchmarks.MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
+            machine = Experiments.MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
         }
         var table = FrameTable.For(frame, machine, cluster is null ? null : pricedOn.Description);
         table.Write(format);

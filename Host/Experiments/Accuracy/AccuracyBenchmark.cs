@@ -6,7 +6,7 @@ using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>A pipeline configuration measured by <see cref="AccuracyBenchmark"/>: its options at a size, and its QSearch rule.</summary>
 public sealed record AccuracyConfiguration(string Name, Func<int, ulong, RenderOptions> Options, QSearchOptions QSearch);

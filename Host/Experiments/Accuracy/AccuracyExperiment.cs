@@ -4,7 +4,7 @@ using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes.Generation;
 using static System.FormattableString;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench accuracy`: wrong pixels and Int/Ray of the default pipeline on random scenes it was not tuned on, by image

@@ -1,6 +1,6 @@
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench accuracy` measures: random scenes of every kind at <paramref name="Sizes"/>² with seeds 1..<paramref name="Seeds"/>

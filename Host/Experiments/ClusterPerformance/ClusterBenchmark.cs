@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using QuantumRayTracing.Bridge;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>What the cluster path adds to one bridge request: requests sent one at a time, timed end to end.</summary>
 public static class ClusterBenchmark

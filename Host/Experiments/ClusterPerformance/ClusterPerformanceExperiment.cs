@@ -5,7 +5,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench cluster`: the same fullstate render on local bridges and on a cluster's workers, and the time one bridge

@@ -1,7 +1,7 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench cluster` measures: a fullstate render of <paramref name="Scene"/> at <paramref name="Size"/>² on

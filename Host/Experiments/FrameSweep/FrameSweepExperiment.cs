@@ -7,7 +7,7 @@ using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `estimate frame-sweep`: whole-frame costs on fault-tolerant machines for Qornell-64 and Depth Complexity 64 at several

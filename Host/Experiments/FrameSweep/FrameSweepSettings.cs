@@ -1,7 +1,7 @@
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `estimate frame-sweep` prices: Qornell-64 and Depth Complexity 64 frames at each of <paramref name="Sizes"/>, the

@@ -7,7 +7,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Whole renders on the fullstate engine, where their time goes: bridge calls, the time spent in them,

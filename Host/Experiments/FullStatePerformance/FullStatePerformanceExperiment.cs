@@ -1,9 +1,9 @@
 using System.Globalization;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Reports;
-using static QuantumRayTracing.Benchmarks.FullStateBenchmark;
+using static QuantumRayTracing.Experiments.FullStateBenchmark;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench fullstate`: whole renders on the fullstate engine, the current engine beside the baseline it replaced, each

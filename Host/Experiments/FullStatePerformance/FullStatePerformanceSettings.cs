@@ -1,7 +1,7 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench fullstate` measures: each of <paramref name="Scenes"/> at each of <paramref name="Sizes"/>² on the current engine,

@@ -3,7 +3,7 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Cost per Grover run on each engine at several N and batch sizes: the batch of 1 shows the

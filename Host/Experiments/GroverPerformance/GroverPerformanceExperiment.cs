@@ -4,7 +4,7 @@ using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Reports;
 using static System.FormattableString;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench grover`: wall time per Grover run on the full-state simulator (one bridge and all of them) and the analytic engine (docs/performance.md).</summary>
 public static class GroverPerformanceExperiment

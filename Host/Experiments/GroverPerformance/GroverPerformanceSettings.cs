@@ -1,6 +1,6 @@
 using QuantumRayTracing.Bridge;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench grover` measures: a Grover run at each N in <paramref name="Sizes"/>, in batches of each size in

@@ -6,7 +6,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench lights`: the paper's sec. 7 on our renderer — the Qornell box under an area light (32 shadow rays per

@@ -1,6 +1,6 @@
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench lights` measures: renders at <paramref name="Size"/>², errors against a classical reference converged with

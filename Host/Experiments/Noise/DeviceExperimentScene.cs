@@ -1,7 +1,10 @@
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Rays;
 
-namespace QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Scenes.Generation;
+
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// The ray tracing paper's device experiment (sec. 8): a minimal scene of 4 primitives on the 16x16x16

@@ -1,7 +1,7 @@
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// A rough forecast of a gate-engine render's wall time, so a soak can skip the renders that would take

@@ -1,7 +1,7 @@
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>Everything `bench noise` measured; the parts not asked for are empty.</summary>
 public sealed record NoiseBenchResult(

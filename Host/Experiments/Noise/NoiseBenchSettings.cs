@@ -1,7 +1,7 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>What `bench noise` measures.</summary>
 /// <param name="Parts">Any of "model" (the approximation against the simulator), "supersampling" (the same for the coins and QSS), "device" (fig. 15), "render" (rendering under noise).</param>

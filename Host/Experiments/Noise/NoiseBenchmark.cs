@@ -7,7 +7,7 @@ using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Supersampling;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// The measurements behind docs/noise.md: the depolarizing approximation against the noisy simulator, and

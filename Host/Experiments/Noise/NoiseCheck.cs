@@ -2,7 +2,9 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Noise;
+using QuantumRayTracing.Noise;
+
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>A circuit measured many times on the noisy simulator: the share of one outcome, beside what the approximation predicts.</summary>
 public interface IModelCheckRow

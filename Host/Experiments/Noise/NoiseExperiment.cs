@@ -1,6 +1,6 @@
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench noise`: the parts the settings ask for measured (<see cref="NoiseBenchmark"/>) and reported

@@ -1,7 +1,7 @@
 using QuantumRayTracing.Output;
 using ScottPlot;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// The plots of docs/noise.md: the line plots as <see cref="PlotSpec"/>s, which the report writer draws like every other

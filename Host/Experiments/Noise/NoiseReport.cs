@@ -4,7 +4,7 @@ using QuantumRayTracing.Noise;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Supersampling;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>The report `qrt bench noise` writes (docs/noise.md): a section per part measured, with its tables and plots.</summary>
 public static class NoiseReport

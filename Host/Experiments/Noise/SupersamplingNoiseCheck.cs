@@ -1,7 +1,9 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Supersampling;
 
-namespace QuantumRayTracing.Noise;
+using QuantumRayTracing.Noise;
+
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// One circuit of the supersampling model check: a coin of <see cref="Kind"/> flipped after <see cref="Iterations"/>

@@ -4,7 +4,7 @@ using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Supersampling;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench noise-estimation`: the QCoin paper's device experiments (fig. 10, fig. 12, fig. 1 right) and the noise-aware

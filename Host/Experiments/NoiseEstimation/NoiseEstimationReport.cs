@@ -3,9 +3,9 @@ using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Supersampling;
-using static QuantumRayTracing.Benchmarks.NoiseEstimationExperiment;
+using static QuantumRayTracing.Experiments.NoiseEstimationExperiment;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>docs/noise-estimation.md from what <see cref="NoiseEstimationExperiment"/> measured.</summary>
 public static class NoiseEstimationReport

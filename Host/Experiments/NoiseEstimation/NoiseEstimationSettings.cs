@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>What `bench noise-estimation` measures (docs/noise-estimation.md).</summary>
 /// <param name="Trials">Estimates per point of the sweeps: repeated runs at f = ½ for fig. 10, random pixels or means elsewhere.</param>

@@ -7,7 +7,7 @@ using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench optimised`: the paper's sec. 6 on our renderer — NeighOpt by iterations (table 5), false-negative

@@ -1,6 +1,6 @@
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench optimised` measures: the paper's tables 5-8 and our default configuration at <paramref name="Size"/>²,

@@ -2,7 +2,7 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `estimate sweep`: the oracle's resource estimates against the number of primitives and the coordinate bits, before and

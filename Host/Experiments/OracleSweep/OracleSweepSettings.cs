@@ -1,6 +1,6 @@
 using QuantumRayTracing.Estimates;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `estimate sweep` estimates: the oracle at each of <paramref name="Primitives"/> (default grid) and each of

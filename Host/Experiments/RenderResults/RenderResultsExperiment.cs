@@ -5,7 +5,7 @@ using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench render`: the paper's tables 2 and 3 on our renderer, the engines side by side, and the gate-level

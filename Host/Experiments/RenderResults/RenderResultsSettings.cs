@@ -1,7 +1,7 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench render` measures: tables 2 and 3 at <paramref name="Size"/>², the engines side by side at

@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// The loose acceptance bound a soak holds quantum renders to: the most pixels (#Dpix) that may differ

@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Published results of the ray tracing paper (000 in docs/conventions.md, tables 2 and 3; 128x128), the

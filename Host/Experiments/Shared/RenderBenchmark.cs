@@ -4,7 +4,7 @@ using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// One measured render: what it cost (its metrics and wall time) and how far it is from the classical

@@ -3,7 +3,7 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Reports;
 using static System.FormattableString;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench capacity`: the simulator's memory per amplitude, the figure behind the full-state engines' --max-qubits default (docs/simulator-capacity.md).</summary>
 public static class SimulatorCapacityExperiment

@@ -2,7 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using QuantumRayTracing.Bridge;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Measures the full-state simulator's memory per amplitude: a fresh bridge per width runs

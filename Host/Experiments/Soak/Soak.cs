@@ -7,7 +7,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Renders every scene on every engine with every seed through `render`'s default pipeline and checks

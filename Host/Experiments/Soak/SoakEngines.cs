@@ -5,7 +5,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// The engines a soak renders on, each render through <see cref="Renderer"/> as `render`'s, with the fullstate and gate engines on one bridge pool

@@ -2,7 +2,7 @@ using System.Diagnostics;
 using QuantumRayTracing.Passes;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What a soak found: a row per scene and engine, the wall time of the whole soak, the qsharp-lang and Node versions

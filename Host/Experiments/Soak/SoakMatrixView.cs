@@ -1,7 +1,7 @@
 using QuantumRayTracing.Engines;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>A soak on the console: scenes by engines, so the table fits 80 columns, then the reasons of every row that is not ok.</summary>
 public static class SoakMatrixView

@@ -2,7 +2,7 @@ using System.Globalization;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Engines;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>A soak's rows as table cells, and as the report `bench soak -o` writes (docs/soak.md).</summary>
 public static class SoakReport

@@ -1,6 +1,6 @@
 using QuantumRayTracing.Engines;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>What a soak found for one scene on one engine.</summary>
 public enum SoakStatus

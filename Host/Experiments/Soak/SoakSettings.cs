@@ -3,7 +3,7 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Rendering;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What a soak renders: the engines, the seeds, the image sizes (<see cref="Size"/> for every engine but

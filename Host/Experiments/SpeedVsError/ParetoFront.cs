@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>The points no other point beats on both axes (lower is better on each), ordered by x.</summary>
 public static class ParetoFront

@@ -5,7 +5,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench pareto`: speed against error for every configuration of every engine on one scene — Int/Ray and

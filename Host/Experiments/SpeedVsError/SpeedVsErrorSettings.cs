@@ -1,7 +1,7 @@
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench pareto` measures: every configuration of every engine on <paramref name="Scene"/> at

@@ -7,7 +7,7 @@ using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Supersampling;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Supersampling experiments on images (paper 003 fig. 1; thesis 004 tables 4.1-4.2 and its confidence map): inputs

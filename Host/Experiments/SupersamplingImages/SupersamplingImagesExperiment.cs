@@ -3,9 +3,9 @@ using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Supersampling;
-using static QuantumRayTracing.Benchmarks.SupersamplingImageBenchmark;
+using static QuantumRayTracing.Experiments.SupersamplingImageBenchmark;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench supersample-images`: supersampling on rendered images — the QCoin paper's fig. 1 experiment (8x8 subpixels,

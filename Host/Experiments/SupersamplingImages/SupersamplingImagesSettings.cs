@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What `bench supersample-images` measures: every configuration with seeds 1..<paramref name="Seeds"/>, and the thesis's

@@ -1,7 +1,7 @@
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Supersampling;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// Error against queries over uniform random means (paper 003, figs. 7-8) on the analytic engine (the exact

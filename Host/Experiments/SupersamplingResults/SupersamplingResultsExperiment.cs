@@ -2,9 +2,9 @@ using System.Globalization;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Supersampling;
-using Point = QuantumRayTracing.Benchmarks.SupersamplingBenchmark.Point;
+using Point = QuantumRayTracing.Experiments.SupersamplingBenchmark.Point;
 
-namespace QuantumRayTracing.Benchmarks;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench supersample`: error against queries for Monte Carlo, QSS, QCoin and MLAE on the analytic engine (the QCoin

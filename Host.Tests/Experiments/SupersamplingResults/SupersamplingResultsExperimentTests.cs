@@ -1,8 +1,8 @@
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench supersample`'s report holds the measured errors where its headers say, and its data hold every point.</summary>
 public sealed class SupersamplingResultsExperimentTests

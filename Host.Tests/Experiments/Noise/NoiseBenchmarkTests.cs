@@ -1,6 +1,6 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 public class NoiseBenchmarkTests
 {

@@ -1,8 +1,8 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Supersampling;
-using static QuantumRayTracing.Benchmarks.NoiseEstimationExperiment;
+using static QuantumRayTracing.Experiments.NoiseEstimationExperiment;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 public class NoiseEstimationTests
 {

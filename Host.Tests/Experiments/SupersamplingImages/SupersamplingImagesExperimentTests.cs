@@ -1,8 +1,8 @@
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench supersample-images`' report at a tiny size: its tables agree with the runs in its data, and the confidence bins count every pixel once.</summary>
 public sealed class SupersamplingImagesExperimentTests

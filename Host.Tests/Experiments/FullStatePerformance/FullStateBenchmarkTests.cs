@@ -1,5 +1,5 @@
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
@@ -9,7 +9,7 @@ using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Tests.Output;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>What `bench fullstate` renders and how it splits a render's time.</summary>
 public sealed class FullStateBenchmarkTests : IDisposable

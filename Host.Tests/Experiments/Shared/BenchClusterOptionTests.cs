@@ -1,4 +1,4 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Cluster;
@@ -8,7 +8,7 @@ using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Tests.Cluster;
 using QuantumRayTracing.Tests.Engines;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>
 /// `--cluster` on the benches whose experiments run Q# engines: a cluster file that is missing or names no worker

@@ -1,12 +1,12 @@
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench optimised` at 2x2: its tables hold the renders and rates they name, measured, not copied.</summary>
 public sealed class OptimisedTracingExperimentTests

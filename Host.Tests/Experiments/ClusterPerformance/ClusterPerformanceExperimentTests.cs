@@ -1,11 +1,11 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Tests.Cluster;
 using QuantumRayTracing.Tests.Engines;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench cluster`'s experiment against a one-worker cluster in this process: local bridges, then the cluster's, each row naming where it ran.</summary>
 public sealed class ClusterPerformanceExperimentTests

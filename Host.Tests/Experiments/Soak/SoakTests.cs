@@ -1,4 +1,4 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
@@ -8,7 +8,7 @@ using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Tests.Engines;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>
 /// `bench soak`: the short form over every shipped scene passes with every check run, and each check

@@ -1,6 +1,6 @@
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>The data tables and plots of an experiment's report, for tests of what it holds.</summary>
 internal static class ReportBlocks

@@ -1,11 +1,11 @@
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Tests.Engines;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench fullstate`'s experiment on a pool it is given (as a cluster's): every call it counts went through that pool.</summary>
 public sealed class FullStatePerformanceExperimentTests

@@ -1,9 +1,9 @@
 using System.Globalization;
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes.Generation;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench accuracy` on 4x4 images and one seed: its tables hold the cells it measured, summed as they say.</summary>
 public sealed class AccuracyExperimentTests

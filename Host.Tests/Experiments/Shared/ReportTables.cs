@@ -1,6 +1,6 @@
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>The named tables of an experiment's report, for tests that read its cells.</summary>
 internal static class ReportTables

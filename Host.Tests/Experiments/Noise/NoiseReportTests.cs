@@ -1,9 +1,9 @@
-using QuantumRayTracing.Benchmarks;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Search;
 
-namespace QuantumRayTracing.Tests.Benchmarks;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>
 /// <see cref="NoiseReport"/> on measurements made up here, so every figure it shows can be checked by hand: the model
