@@ -8,7 +8,7 @@ using QuantumRayTracing.Tests.Engines;
 
 namespace QuantumRayTracing.Tests.Cli;
 
-/// <summary>`estimate` and `estimate sweep` through <see cref="CommandLine.Run"/>: exit codes and the report file.</summary>
+/// <summary>`estimate` and `estimate oracle-sweep` through <see cref="CommandLine.Run"/>: exit codes and the report file.</summary>
 public sealed class EstimateCommandTests : IDisposable
 {
     private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
@@ -120,8 +120,8 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void FrameSweepWritesItsReportAndPlot()
     {
-        var output = Path.Combine(_scratch.Path, "hardware.md");
-        var plot = Path.Combine(_scratch.Path, "hardware-runtime-vs-primitives.png");
+        var output = Path.Combine(_scratch.Path, "frame-sweep.md");
+        var plot = Path.Combine(_scratch.Path, "frame-sweep-runtime-vs-primitives.png");
         // What an earlier run of the same command left: it replaces both.
         File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine) + "\nan earlier report\n");
         ImageFiles.Write([(new RgbImage(1, 1), plot)]);
@@ -135,17 +135,17 @@ public sealed class EstimateCommandTests : IDisposable
         foreach (var scene in new[] { "Qornell-64", "Depth Complexity 64" })
             Assert.Equal(3, lines.Count(l => l.StartsWith($"| {scene} | 2x2 |", StringComparison.Ordinal)));
         Assert.Equal(3, lines.Count(l => l.StartsWith("| 8 | ", StringComparison.Ordinal)));
-        Assert.Contains(lines, l => l.Contains("(hardware-runtime-vs-primitives.png)", StringComparison.Ordinal));
+        Assert.Contains(lines, l => l.Contains("(frame-sweep-runtime-vs-primitives.png)", StringComparison.Ordinal));
         Assert.Equal(QuantumRayTracing.Estimates.FramePlots.Width, ImageReader.Read(plot).Width);
     }
 
     [Fact]
     public void SweepWritesItsReportWithThePapersFigure()
     {
-        var output = Path.Combine(_scratch.Path, "estimates.md");
-        Assert.Equal(0, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
+        var output = Path.Combine(_scratch.Path, "oracle-sweep.md");
+        Assert.Equal(0, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         var lines = File.ReadAllLines(output);
-        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateSweepCommand.CommandLine), lines[0]);
+        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandLine), lines[0]);
         Assert.Contains("| paper (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
         // One row per requested N and bit count in the before → after tables.
         Assert.Equal(["4", "8"], DataRows(lines, "## The oracle against the number of primitives"));
@@ -154,7 +154,7 @@ public sealed class EstimateCommandTests : IDisposable
         foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
             Assert.Equal(800, ImageReader.Read(Path.Combine(_scratch.Path, png)).Width);
         // Regenerating replaces the file this command wrote.
-        Assert.Equal(0, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
+        Assert.Equal(0, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));
     }
 
@@ -173,7 +173,7 @@ public sealed class EstimateCommandTests : IDisposable
     {
         var output = Path.ChangeExtension(Path.Combine(_scratch.Path, "notes"), "md");
         File.WriteAllText(output, "# my notes\n");
-        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", "sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]).Code);
+        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]).Code);
         Assert.Equal("# my notes\n", File.ReadAllText(output));
     }
 }

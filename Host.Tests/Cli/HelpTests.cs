@@ -59,3 +59,43 @@ public sealed class HelpTests
         return command;
     }
 }
+
+/// <summary>Each experiment's command, folder and page share one name; the commands' earlier names still run them.</summary>
+public sealed class ExperimentNameTests
+{
+    [Theory]
+    [InlineData("bench capacity", "simulator-capacity")]
+    [InlineData("bench cluster", "cluster-performance")]
+    [InlineData("bench fullstate", "fullstate-performance")]
+    [InlineData("bench grover", "grover-performance")]
+    [InlineData("bench optimised", "optimised-tracing")]
+    [InlineData("bench pareto", "speed-vs-error")]
+    [InlineData("bench render", "render-results")]
+    [InlineData("bench supersample", "supersampling-results")]
+    [InlineData("bench supersample-images", "supersampling-images")]
+    [InlineData("estimate sweep", "oracle-sweep")]
+    public void EarlierNamesStillRunTheirExperiment(string earlier, string name)
+    {
+        var result = CommandLine.Build().Parse([.. earlier.Split(' '), "--help"]);
+        Assert.Equal(name, result.CommandResult.Command.Name);
+        Assert.Empty(result.Errors);
+    }
+
+    [Fact]
+    public void EveryExperimentFolderHasItsCommandAndItsPage()
+    {
+        var experiments = Path.Combine(RepositoryPaths.Root, "Host", "Experiments");
+        var folders = Directory.GetDirectories(experiments).Select(Path.GetFileName).Where(f => f != "Shared").ToArray();
+        Assert.NotEmpty(folders);
+        var root = CommandLine.Build();
+        var commands = root.Subcommands.Where(c => c.Name is "bench" or "estimate").SelectMany(c => c.Subcommands).Select(c => c.Name).ToHashSet();
+        foreach (var folder in folders)
+        {
+            // PascalCase folder → kebab-case command and page: SpeedVsError → speed-vs-error.
+            var name = string.Concat(folder!.Select((ch, k) => char.IsUpper(ch) && k > 0 ? "-" + char.ToLowerInvariant(ch) : char.ToLowerInvariant(ch).ToString()))
+                .Replace("full-state", "fullstate");
+            Assert.Contains(name, commands);
+            Assert.True(File.Exists(Path.Combine(RepositoryPaths.Root, "docs", name + ".md")), $"docs/{name}.md is missing for Host/Experiments/{folder}");
+        }
+    }
+}

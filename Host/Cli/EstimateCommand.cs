@@ -82,7 +82,7 @@ public sealed class EstimateCommand : Command
         Validators.Add(EnsurePixelNotSpecifiedWithWorstCase);
         Validators.Add(EnsureOneRayOptionsNotSpecifiedWithFrame);
         Validators.Add(EnsureFrameOptionsNotSpecifiedWithoutFrame);
-        Subcommands.Add(new EstimateSweepCommand());
+        Subcommands.Add(new EstimateOracleSweepCommand());
         Subcommands.Add(new EstimateFrameSweepCommand());
         SetAction(parse => parse.GetValue(Frame) ? EstimateFrameAction.Run(this, parse) : EstimateRayAction.Run(this, parse));
     }

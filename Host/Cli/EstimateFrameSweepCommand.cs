@@ -8,7 +8,7 @@ using QuantumRayTracing.Scenes.Generation;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`estimate frame-sweep`: options → <see cref="FrameSweepSettings"/> → <see cref="FrameSweepExperiment"/> (docs/hardware.md, with a plot of runtime per frame against N).</summary>
+/// <summary>`estimate frame-sweep`: options → <see cref="FrameSweepSettings"/> → <see cref="FrameSweepExperiment"/> (docs/frame-sweep.md, with a plot of runtime per frame against N).</summary>
 public sealed class EstimateFrameSweepCommand : Command
 {
     public const string CommandLine = "qrt estimate frame-sweep";
@@ -37,7 +37,7 @@ public sealed class EstimateFrameSweepCommand : Command
 
     private readonly Option<int> _qpus = CommonOptions.Qpus("Quantum processors of the parallel runtime.", 64);
 
-    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("Write the Markdown report here (e.g. docs/hardware.md), the plot beside it as <report>-runtime-vs-primitives.png. It replaces only files this command wrote. Default: the report is printed only.");
+    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("Write the Markdown report here (e.g. docs/frame-sweep.md), the plot beside it as <report>-runtime-vs-primitives.png. It replaces only files this command wrote. Default: the report is printed only.");
 
     private readonly Option<ulong> _seed = CommonOptions.Seed("Seed of every frame's render.");
 

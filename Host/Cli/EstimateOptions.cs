@@ -6,7 +6,7 @@ using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>The options `estimate` and `estimate sweep` share: oracle construction, qubit models, circuit extraction, workers, format.</summary>
+/// <summary>The options `estimate` and `estimate oracle-sweep` share: oracle construction, qubit models, circuit extraction, workers, format.</summary>
 public sealed class EstimateOptions
 {
     public readonly Option<string> Oracle = new("--oracle")

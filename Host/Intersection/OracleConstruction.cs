@@ -10,7 +10,7 @@ namespace QuantumRayTracing.Intersection;
 /// <param name="MeasuredUnload">Clear the loaded registers with the measurement-based unlookup (few Toffolis, 2^⌊n/2⌋ + 2^⌈n/2⌉ − n − 2 auxiliaries) rather than a second lookup.</param>
 public sealed record OracleConstruction(string Name, bool InPlaneAxes, bool BothBounds, bool MeasuredUnload)
 {
-    /// <summary>The first construction (paper fig. 4 axis by axis, one bound register): the "before" of docs/estimates.md.</summary>
+    /// <summary>The first construction (paper fig. 4 axis by axis, one bound register): the "before" of docs/oracle-sweep.md.</summary>
     public static readonly OracleConstruction Baseline = new("baseline", InPlaneAxes: false, BothBounds: false, MeasuredUnload: true);
 
     /// <summary>Two in-plane axes, both bounds at once, measured unloads: the fewest Toffolis.</summary>

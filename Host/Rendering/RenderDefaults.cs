@@ -2,7 +2,7 @@ namespace QuantumRayTracing.Rendering;
 
 /// <summary>
 /// The configuration `render` uses unless told otherwise, and the reference every render is compared
-/// with. The defaults are the measured best (docs/rendering-results.md).
+/// with. The defaults are the measured best (docs/render-results.md).
 /// </summary>
 public static class RenderDefaults
 {

@@ -7,7 +7,7 @@ using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
 namespace QuantumRayTracing.Tests.Experiments;
 
-/// <summary>`bench cluster`'s experiment against a one-worker cluster in this process: local bridges, then the cluster's, each row naming where it ran.</summary>
+/// <summary>`bench cluster-performance`'s experiment against a one-worker cluster in this process: local bridges, then the cluster's, each row naming where it ran.</summary>
 public sealed class ClusterPerformanceExperimentTests
 {
     [Fact]

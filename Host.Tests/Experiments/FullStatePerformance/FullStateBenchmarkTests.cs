@@ -11,7 +11,7 @@ using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
 namespace QuantumRayTracing.Tests.Experiments;
 
-/// <summary>What `bench fullstate` renders and how it splits a render's time.</summary>
+/// <summary>What `bench fullstate-performance` renders and how it splits a render's time.</summary>
 public sealed class FullStateBenchmarkTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-bench-fullstate-");

@@ -7,7 +7,7 @@ using static QuantumRayTracing.Tests.Intersection.TestScenes;
 
 namespace QuantumRayTracing.Tests.Experiments;
 
-/// <summary>`bench fullstate`'s experiment on a pool it is given (as a cluster's): every call it counts went through that pool.</summary>
+/// <summary>`bench fullstate-performance`'s experiment on a pool it is given (as a cluster's): every call it counts went through that pool.</summary>
 public sealed class FullStatePerformanceExperimentTests
 {
     [Fact]

@@ -8,7 +8,7 @@ using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Tests.Experiments;
 
-/// <summary>`bench optimised` at 2x2: its tables hold the renders and rates they name, measured, not copied.</summary>
+/// <summary>`bench optimised-tracing` at 2x2: its tables hold the renders and rates they name, measured, not copied.</summary>
 public sealed class OptimisedTracingExperimentTests
 {
     private static Scene Load(string stem) => SceneLoader.Load(Path.Combine(RepositoryPaths.Scenes, stem + ".json"));

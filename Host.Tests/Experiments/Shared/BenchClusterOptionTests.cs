@@ -24,8 +24,8 @@ public sealed class BenchClusterOptionTests(OneWorkerCluster worker) : IClassFix
     // Tiny forms of each bench that takes --cluster, writing their report in the scratch directory.
     private string[] Bench(string name, string cluster) => name switch
     {
-        "pareto" => ["bench", "pareto", "--scene", Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"), "--size", "1", "--cluster", cluster, "-o", _scratch.File("speed-vs-error.md")],
-        "grover" => ["bench", "grover", "--sizes", "8", "--batches", "1", "--cluster", cluster, "-o", _scratch.File("performance.md")],
+        "pareto" => ["bench", "speed-vs-error", "--scene", Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"), "--size", "1", "--cluster", cluster, "-o", _scratch.File("speed-vs-error.md")],
+        "grover" => ["bench", "grover-performance", "--sizes", "8", "--batches", "1", "--cluster", cluster, "-o", _scratch.File("grover-performance.md")],
         "soak" => ["bench", "soak", "--short", "--engines", "fullstate", "--scenes", RepositoryPaths.Scenes, "--cluster", cluster, "-o", _scratch.File("soak.md")],
         "noise" => ["bench", "noise", "--parts", "device", "--device-shots", "16", "--cluster", cluster, "-o", _scratch.File("noise.md")],
         _ => throw new ArgumentOutOfRangeException(nameof(name)),

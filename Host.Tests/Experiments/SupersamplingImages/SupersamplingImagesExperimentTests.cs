@@ -4,7 +4,7 @@ using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Tests.Experiments;
 
-/// <summary>`bench supersample-images`' report at a tiny size: its tables agree with the runs in its data, and the confidence bins count every pixel once.</summary>
+/// <summary>`bench supersampling-images`' report at a tiny size: its tables agree with the runs in its data, and the confidence bins count every pixel once.</summary>
 public sealed class SupersamplingImagesExperimentTests
 {
     private static readonly Report Report = SupersamplingImagesExperiment.Run(new SupersamplingImagesSettings(1, [4]), _ => { });

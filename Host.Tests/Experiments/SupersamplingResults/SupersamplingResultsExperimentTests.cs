@@ -4,7 +4,7 @@ using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Tests.Experiments;
 
-/// <summary>`bench supersample`'s report holds the measured errors where its headers say, and its data hold every point.</summary>
+/// <summary>`bench supersampling-results`'s report holds the measured errors where its headers say, and its data hold every point.</summary>
 public sealed class SupersamplingResultsExperimentTests
 {
     private const int Trials = 10;

@@ -8,7 +8,7 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench cluster`: the same fullstate render on local bridges and on a cluster's workers, and the time one bridge
+/// `bench cluster-performance`: the same fullstate render on local bridges and on a cluster's workers, and the time one bridge
 /// request takes on each path, the per-chunk overhead of the cluster (docs/cluster-performance.md).
 /// </summary>
 public static class ClusterPerformanceExperiment

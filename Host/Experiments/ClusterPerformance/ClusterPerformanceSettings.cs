@@ -4,7 +4,7 @@ using QuantumRayTracing.Scenes;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// What `bench cluster` measures: a fullstate render of <paramref name="Scene"/> at <paramref name="Size"/>² on
+/// What `bench cluster-performance` measures: a fullstate render of <paramref name="Scene"/> at <paramref name="Size"/>² on
 /// <paramref name="Workers"/> local bridges and on <paramref name="Cluster"/>'s, and <paramref name="Requests"/>
 /// single bridge requests timed on each.
 /// </summary>

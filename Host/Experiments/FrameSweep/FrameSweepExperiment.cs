@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `estimate frame-sweep`: whole-frame costs on fault-tolerant machines for Qornell-64 and Depth Complexity 64 at several
-/// sizes and for the Qornell box against N, with a plot of runtime per frame against N (docs/hardware.md);
+/// sizes and for the Qornell box against N, with a plot of runtime per frame against N (docs/frame-sweep.md);
 /// <see cref="HardwareReport"/> composes the report.
 /// </summary>
 public static class FrameSweepExperiment

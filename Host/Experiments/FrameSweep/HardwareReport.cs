@@ -4,7 +4,7 @@ using QuantumRayTracing.Reports;
 namespace QuantumRayTracing.Estimates;
 
 /// <summary>
-/// docs/hardware.md: what whole frames cost on fault-tolerant machines. The scenes at several image
+/// docs/frame-sweep.md: what whole frames cost on fault-tolerant machines. The scenes at several image
 /// sizes on every model, the Qornell box against N at one size (with a plot), the cost per pixel
 /// against the image size, one frame per pass, and the paper's hardware run for context.
 /// </summary>

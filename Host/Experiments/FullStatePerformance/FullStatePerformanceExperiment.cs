@@ -6,8 +6,8 @@ using static QuantumRayTracing.Experiments.FullStateBenchmark;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench fullstate`: whole renders on the fullstate engine, the current engine beside the baseline it replaced, each
-/// render's time split into bridge calls and simulation, and the simulator-only floor (docs/performance-fullstate.md).
+/// `bench fullstate-performance`: whole renders on the fullstate engine, the current engine beside the baseline it replaced, each
+/// render's time split into bridge calls and simulation, and the simulator-only floor (docs/fullstate-performance.md).
 /// </summary>
 public static class FullStatePerformanceExperiment
 {

@@ -6,7 +6,7 @@ using static System.FormattableString;
 
 namespace QuantumRayTracing.Experiments;
 
-/// <summary>`bench grover`: wall time per Grover run on the full-state simulator (one bridge and all of them) and the analytic engine (docs/performance.md).</summary>
+/// <summary>`bench grover-performance`: wall time per Grover run on the full-state simulator (one bridge and all of them) and the analytic engine (docs/grover-performance.md).</summary>
 public static class GroverPerformanceExperiment
 {
     public const string Title = "Performance: Grover runs per engine";
@@ -48,7 +48,7 @@ public static class GroverPerformanceExperiment
             table.Row(Invariant($"{r.Count}"), Invariant($"{r.Iterations}"), Invariant($"{r.Batch}"), F(r.FullStateOneWorkerMs), F(r.FullStateAllWorkersMs),
                 F(r.FullStateOneWorkerMs * r.Batch), F(r.AnalyticMicroseconds), F(r.FullStateOneWorkerMs * 1000 / r.AnalyticMicroseconds) + "x");
         report.Table(table);
-        report.Text("Whole renders on the fullstate engine, with their calls, simulation and simulator-only floor: [performance-fullstate.md](performance-fullstate.md) (`qrt bench fullstate`).");
+        report.Text("Whole renders on the fullstate engine, with their calls, simulation and simulator-only floor: [fullstate-performance.md](fullstate-performance.md) (`qrt bench fullstate-performance`).");
         return report;
     }
 }

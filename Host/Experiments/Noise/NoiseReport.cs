@@ -205,7 +205,7 @@ public static class NoiseReport
             .Row("paper's table 9, ibmq_paris (transpiled)", "27", "–", "–", I(DeviceGates), "11096"));
         report.Text(Lines(
             "(Counted by the bridge's `circuit` summary, as `qrt estimate` does; the paper counts Qiskit's basis, closest to our right-hand",
-            "columns. Our qubits are the peak in use, the standard library's auxiliaries included (docs/estimates.md). Z and CZ counts vary",
+            "columns. Our qubits are the peak in use, the standard library's auxiliaries included (docs/oracle-sweep.md). Z and CZ counts vary",
             "slightly run to run with the measurement-based uncomputation.)"));
         var histograms = new TextTable("device-histograms",
             ["p per gate", .. Enumerable.Range(0, states).Select(i => $"P(|{Convert.ToString(i, 2).PadLeft((int)Math.Log2(states), '0')}⟩)"), "TVD from uniform"]);

@@ -10,7 +10,7 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench optimised`: the paper's sec. 6 on our renderer — NeighOpt by iterations (table 5), false-negative
+/// `bench optimised-tracing`: the paper's sec. 6 on our renderer — NeighOpt by iterations (table 5), false-negative
 /// estimates (table 6), scalability of the optimised renderer (table 7), randomized classical against quantum
 /// at equal Int/Ray (table 8) — and our default configuration beside the classical engine run through the same
 /// pipeline (docs/optimised-tracing.md).

@@ -5,8 +5,8 @@ using QuantumRayTracing.Reports;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `estimate sweep`: the oracle's resource estimates against the number of primitives and the coordinate bits, before and
-/// after the smaller construction, with plots (docs/estimates.md); <see cref="SweepReport"/> composes the report.
+/// `estimate oracle-sweep`: the oracle's resource estimates against the number of primitives and the coordinate bits, before and
+/// after the smaller construction, with plots (docs/oracle-sweep.md); <see cref="SweepReport"/> composes the report.
 /// </summary>
 public static class OracleSweepExperiment
 {

@@ -5,7 +5,7 @@ using QuantumRayTracing.Reports;
 namespace QuantumRayTracing.Estimates;
 
 /// <summary>
-/// docs/estimates.md: the oracle's estimates against the number of primitives and the coordinate bits,
+/// docs/oracle-sweep.md: the oracle's estimates against the number of primitives and the coordinate bits,
 /// before (baseline) and after (compact) the smaller construction, the unload trade-off, each change on
 /// its own, physical figures, and the paper's table 9 beside ours.
 /// </summary>

@@ -8,8 +8,8 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench render`: the paper's tables 2 and 3 on our renderer, the engines side by side, and the gate-level
-/// oracle against the lookup form (docs/rendering-results.md).
+/// `bench render-results`: the paper's tables 2 and 3 on our renderer, the engines side by side, and the gate-level
+/// oracle against the lookup form (docs/render-results.md).
 /// </summary>
 public static class RenderResultsExperiment
 {

@@ -4,7 +4,7 @@ using QuantumRayTracing.Scenes;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// What `bench render` measures: tables 2 and 3 at <paramref name="Size"/>², the engines side by side at
+/// What `bench render-results` measures: tables 2 and 3 at <paramref name="Size"/>², the engines side by side at
 /// <paramref name="EngineSize"/>², scenes by stem from <paramref name="Scene"/>, on <paramref name="Pool"/>'s
 /// bridges when given (a cluster) or local ones.
 /// </summary>

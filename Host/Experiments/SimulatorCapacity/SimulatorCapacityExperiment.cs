@@ -5,7 +5,7 @@ using static System.FormattableString;
 
 namespace QuantumRayTracing.Experiments;
 
-/// <summary>`bench capacity`: the simulator's memory per amplitude, the figure behind the full-state engines' --max-qubits default (docs/simulator-capacity.md).</summary>
+/// <summary>`bench simulator-capacity`: the simulator's memory per amplitude, the figure behind the full-state engines' --max-qubits default (docs/simulator-capacity.md).</summary>
 public static class SimulatorCapacityExperiment
 {
     public const string Title = "Simulator capacity: memory per amplitude";

@@ -38,7 +38,7 @@ public sealed record SoakSettings(
     /// <summary>16x16: every pass and the lattice's four levels have work, and fullstate stays near 15 s a render.</summary>
     public const int DefaultSize = 16;
 
-    /// <summary>4x4: the gate engine costs tens of milliseconds per Grover iteration at N = 64 (docs/rendering-results.md).</summary>
+    /// <summary>4x4: the gate engine costs tens of milliseconds per Grover iteration at N = 64 (docs/render-results.md).</summary>
     public const int DefaultGateSize = 4;
 
     /// <summary>

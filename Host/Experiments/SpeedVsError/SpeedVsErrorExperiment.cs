@@ -8,7 +8,7 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench pareto`: speed against error for every configuration of every engine on one scene — Int/Ray and
+/// `bench speed-vs-error`: speed against error for every configuration of every engine on one scene — Int/Ray and
 /// wall time against NRMSE and #Dpix, Pareto fronts marked — as a table and two plots (docs/speed-vs-error.md).
 /// </summary>
 public static class SpeedVsErrorExperiment

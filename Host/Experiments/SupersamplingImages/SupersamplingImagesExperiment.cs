@@ -8,7 +8,7 @@ using static QuantumRayTracing.Experiments.SupersamplingImageBenchmark;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench supersample-images`: supersampling on rendered images — the QCoin paper's fig. 1 experiment (8x8 subpixels,
+/// `bench supersampling-images`: supersampling on rendered images — the QCoin paper's fig. 1 experiment (8x8 subpixels,
 /// 240 queries, QSS at 255), the thesis's tables 4.1/4.2 (4x4 subpixels, QSS against Monte Carlo at equal queries),
 /// and whether the confidence map predicts where QSS errs (docs/supersampling-images.md, two CSVs, montages and plots).
 /// </summary>

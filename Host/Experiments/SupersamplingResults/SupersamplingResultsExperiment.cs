@@ -7,7 +7,7 @@ using Point = QuantumRayTracing.Experiments.SupersamplingBenchmark.Point;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench supersample`: error against queries for Monte Carlo, QSS, QCoin and MLAE on the analytic engine (the QCoin
+/// `bench supersampling-results`: error against queries for Monte Carlo, QSS, QCoin and MLAE on the analytic engine (the QCoin
 /// paper's figs. 7-8, with a CSV of every point and two log-log plots), and the QSS lookup table's accuracy
 /// (docs/supersampling-results.md).
 /// </summary>

@@ -4,17 +4,18 @@ using QuantumRayTracing.Experiments;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench supersample`: options → <see cref="SupersamplingResultsSettings"/> → <see cref="SupersamplingResultsExperiment"/> (docs/supersampling-results.md).</summary>
-public sealed class BenchSupersampleCommand : Command
+/// <summary>`bench supersampling-results`: options → <see cref="SupersamplingResultsSettings"/> → <see cref="SupersamplingResultsExperiment"/> (docs/supersampling-results.md).</summary>
+public sealed class BenchSupersamplingResultsCommand : Command
 {
-    public const string CommandLine = "qrt bench supersample";
+    public const string CommandLine = "qrt bench supersampling-results";
 
     private readonly Option<int> _trials = CommonOptions.Trials("Uniform random means per point.", 3000, max: 1_000_000);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/supersampling-results.md; the CSV goes beside it with the extension .csv, the plots as <name>-error-vs-queries.png and <name>-qcoin-k.png");
 
-    public BenchSupersampleCommand() : base("supersample", "Mean estimation error against queries (analytic engine) and QSS lookup-table accuracy.")
+    public BenchSupersamplingResultsCommand() : base("supersampling-results", "Mean estimation error against queries (analytic engine) and QSS lookup-table accuracy.")
     {
+        Aliases.Add("supersample"); // its earlier name: scripts that use it still work
         Options.Add(_trials);
         _report.Seed.Description = "Seed of the means and the analytic engine.";
         this.AddOptions(_report.Seed, _report.Output, _report.Csv);

@@ -6,10 +6,10 @@ using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`estimate sweep`: options → <see cref="OracleSweepSettings"/> → <see cref="OracleSweepExperiment"/> (docs/estimates.md).</summary>
-public sealed class EstimateSweepCommand : Command
+/// <summary>`estimate oracle-sweep`: options → <see cref="OracleSweepSettings"/> → <see cref="OracleSweepExperiment"/> (docs/oracle-sweep.md).</summary>
+public sealed class EstimateOracleSweepCommand : Command
 {
-    public const string CommandLine = "qrt estimate sweep";
+    public const string CommandLine = "qrt estimate oracle-sweep";
 
     private readonly Option<int[]> _primitives = CommonOptions.List("--primitives", $"Primitive counts N of the sweep over N, on a {EstimateSweep.DefaultCoordinateBits}-bit grid (space-separated).",
         EstimateSweep.Primitives.ToArray(), "N", 1, 4096);
@@ -20,12 +20,13 @@ public sealed class EstimateSweepCommand : Command
     private readonly Option<int[]> _ablation = CommonOptions.List("--ablation", "Primitive counts at which each change of the construction is also measured on its own (space-separated).",
         [4, EstimateSweep.DefaultPrimitives], "N", 1, 4096);
 
-    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("Write the Markdown report here (e.g. docs/estimates.md). It replaces only a report this command wrote before. Default: the report is printed only.");
+    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("Write the Markdown report here (e.g. docs/oracle-sweep.md). It replaces only a report this command wrote before. Default: the report is printed only.");
 
     private readonly EstimateOptions _options = new();
 
-    public EstimateSweepCommand() : base("sweep", "The oracle's estimates against the number of primitives (4..512) and the coordinate bits (2..8), before and after the compact construction, as Markdown.")
+    public EstimateOracleSweepCommand() : base("oracle-sweep", "The oracle's estimates against the number of primitives (4..512) and the coordinate bits (2..8), before and after the compact construction, as Markdown.")
     {
+        Aliases.Add("sweep"); // its earlier name: scripts that use it still work
         this.AddOptions(_primitives, _bits, _ablation, _output);
         _options.AddTo(this, withFormat: false);
         SetAction(Execute);

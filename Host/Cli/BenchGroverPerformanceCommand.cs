@@ -5,10 +5,10 @@ using QuantumRayTracing.Bridge;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench grover`: options → <see cref="GroverPerformanceSettings"/> → <see cref="GroverPerformanceExperiment"/> (docs/performance.md).</summary>
-public sealed class BenchGroverCommand : Command
+/// <summary>`bench grover-performance`: options → <see cref="GroverPerformanceSettings"/> → <see cref="GroverPerformanceExperiment"/> (docs/grover-performance.md).</summary>
+public sealed class BenchGroverPerformanceCommand : Command
 {
-    public const string CommandLine = "qrt bench grover";
+    public const string CommandLine = "qrt bench grover-performance";
 
     private readonly Option<int[]> _sizes = CommonOptions.List("--sizes", "Search sizes N (space-separated).", [8, 64, 512], "N", 1, 4096);
 
@@ -19,10 +19,11 @@ public sealed class BenchGroverCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/performance.md");
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/grover-performance.md");
 
-    public BenchGroverCommand() : base("grover", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")
+    public BenchGroverPerformanceCommand() : base("grover-performance", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")
     {
+        Aliases.Add("grover"); // its earlier name: scripts that use it still work
         this.AddOptions(_sizes, _batches);
         _report.AddTo(this, scenes: false, cluster: true);
         _batches.Validators.Add(r =>

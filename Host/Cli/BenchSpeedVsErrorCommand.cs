@@ -5,10 +5,10 @@ using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench pareto`: options → <see cref="SpeedVsErrorSettings"/> → <see cref="SpeedVsErrorExperiment"/> (docs/speed-vs-error.md and its plots).</summary>
-public sealed class BenchParetoCommand : Command
+/// <summary>`bench speed-vs-error`: options → <see cref="SpeedVsErrorSettings"/> → <see cref="SpeedVsErrorExperiment"/> (docs/speed-vs-error.md and its plots).</summary>
+public sealed class BenchSpeedVsErrorCommand : Command
 {
-    public const string CommandLine = "qrt bench pareto";
+    public const string CommandLine = "qrt bench speed-vs-error";
 
     private readonly Option<FileInfo> _scene = new("--scene")
     {
@@ -20,8 +20,9 @@ public sealed class BenchParetoCommand : Command
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/speed-vs-error.md; the plots go beside it as <name>-intray.png and <name>-walltime.png");
 
-    public BenchParetoCommand() : base("pareto", "Speed against error for every configuration of every engine (classical, randomized, analytic, fullstate), Pareto fronts marked, with PNG plots.")
+    public BenchSpeedVsErrorCommand() : base("speed-vs-error", "Speed against error for every configuration of every engine (classical, randomized, analytic, fullstate), Pareto fronts marked, with PNG plots.")
     {
+        Aliases.Add("pareto"); // its earlier name: scripts that use it still work
         this.AddOptions(_scene, _size);
         _report.AddTo(this, scenes: false, cluster: true);
         SetAction(Execute);

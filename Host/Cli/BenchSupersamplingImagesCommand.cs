@@ -4,10 +4,10 @@ using QuantumRayTracing.Experiments;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench supersample-images`: options → <see cref="SupersamplingImagesSettings"/> → <see cref="SupersamplingImagesExperiment"/> (docs/supersampling-images.md).</summary>
-public sealed class BenchSupersampleImagesCommand : Command
+/// <summary>`bench supersampling-images`: options → <see cref="SupersamplingImagesSettings"/> → <see cref="SupersamplingImagesExperiment"/> (docs/supersampling-images.md).</summary>
+public sealed class BenchSupersamplingImagesCommand : Command
 {
-    public const string CommandLine = "qrt bench supersample-images";
+    public const string CommandLine = "qrt bench supersampling-images";
 
     private readonly Option<int> _seeds = CommonOptions.SeedCount("Seeds 1..S per configuration; tables give mean ± standard deviation over them, images show seed 1.", 5, max: 100);
 
@@ -15,8 +15,9 @@ public sealed class BenchSupersampleImagesCommand : Command
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/supersampling-images.md; CSVs and PNGs go beside it as <name>.csv, <name>-confidence.csv, <name>-*.png");
 
-    public BenchSupersampleImagesCommand() : base("supersample-images", "Supersampling on rendered images: paper 003's fig. 1 (8x8 subpixels, 240 queries), thesis 004's tables 4.1/4.2 (4x4), and the confidence map against the error (analytic engine).")
+    public BenchSupersamplingImagesCommand() : base("supersampling-images", "Supersampling on rendered images: paper 003's fig. 1 (8x8 subpixels, 240 queries), thesis 004's tables 4.1/4.2 (4x4), and the confidence map against the error (analytic engine).")
     {
+        Aliases.Add("supersample-images"); // its earlier name: scripts that use it still work
         this.AddOptions(_seeds, _sizes, _report.Output, _report.Csv);
         SetAction(Execute);
     }

@@ -2,8 +2,8 @@ using QuantumRayTracing.Cli;
 
 namespace QuantumRayTracing.Tests.Cli;
 
-/// <summary>`bench supersample` checks every file its report writes before the work: one it did not write stops it at once.</summary>
-public sealed class BenchSupersampleCommandTests : IDisposable
+/// <summary>`bench supersampling-results` checks every file its report writes before the work: one it did not write stops it at once.</summary>
+public sealed class BenchSupersamplingResultsCommandTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-bench-supersample");
 
@@ -15,7 +15,7 @@ public sealed class BenchSupersampleCommandTests : IDisposable
     public void AFileItDidNotWriteBesideTheReportStopsItBeforeTheWork(string foreign)
     {
         File.WriteAllText(_scratch.File(foreign), "someone's file\n");
-        var (code, error) = ConsoleCapture.Run("bench", "supersample", "--trials", "10", "-o", _scratch.File("supersampling-results.md"));
+        var (code, error) = ConsoleCapture.Run("bench", "supersampling-results", "--trials", "10", "-o", _scratch.File("supersampling-results.md"));
         Assert.Equal(CommandLine.BadInput, code);
         // The experiment's first progress line would show the work had started (the writer refuses too, but after it).
         Assert.DoesNotContain("error against queries", error);

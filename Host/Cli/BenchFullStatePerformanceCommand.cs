@@ -5,12 +5,12 @@ using QuantumRayTracing.Bridge;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench fullstate`: options → <see cref="FullStatePerformanceSettings"/> → <see cref="FullStatePerformanceExperiment"/> (docs/performance-fullstate.md).</summary>
-public sealed class BenchFullStateCommand : Command
+/// <summary>`bench fullstate-performance`: options → <see cref="FullStatePerformanceSettings"/> → <see cref="FullStatePerformanceExperiment"/> (docs/fullstate-performance.md).</summary>
+public sealed class BenchFullStatePerformanceCommand : Command
 {
-    public const string CommandLine = "qrt bench fullstate";
+    public const string CommandLine = "qrt bench fullstate-performance";
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/performance-fullstate.md");
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/fullstate-performance.md");
 
     private readonly Option<string[]> _sceneNames = new("--scene-names")
     {
@@ -27,8 +27,9 @@ public sealed class BenchFullStateCommand : Command
         DefaultValueFactory = _ => 2L * 64 * 64 * 512,
     };
 
-    public BenchFullStateCommand() : base("fullstate", "Whole renders on the fullstate engine against its baseline: ms per ray, bridge calls, time in calls against simulation, and the simulator-only floor.")
+    public BenchFullStatePerformanceCommand() : base("fullstate-performance", "Whole renders on the fullstate engine against its baseline: ms per ray, bridge calls, time in calls against simulation, and the simulator-only floor.")
     {
+        Aliases.Add("fullstate"); // its earlier name: scripts that use it still work
         _report.AddTo(this, cluster: true);
         this.AddOptions(_sceneNames, _sizes, _baselineLimit);
         _baselineLimit.Validators.Add(r =>

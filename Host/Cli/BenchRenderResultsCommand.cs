@@ -4,19 +4,20 @@ using QuantumRayTracing.Experiments;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench render`: options → <see cref="RenderResultsSettings"/> → <see cref="RenderResultsExperiment"/> (docs/rendering-results.md).</summary>
-public sealed class BenchRenderCommand : Command
+/// <summary>`bench render-results`: options → <see cref="RenderResultsSettings"/> → <see cref="RenderResultsExperiment"/> (docs/render-results.md).</summary>
+public sealed class BenchRenderResultsCommand : Command
 {
-    public const string CommandLine = "qrt bench render";
+    public const string CommandLine = "qrt bench render-results";
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of the table 2 and 3 renders (the paper: 128).", 128);
 
     private readonly Option<int> _engineSize = CommonOptions.SquareSize("Square image size of the engine comparison (the full-state simulator is slow).", 32, "--engine-size");
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/rendering-results.md");
+    private readonly BenchReportOptions _report = new(CommandLine, "docs/render-results.md");
 
-    public BenchRenderCommand() : base("render", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
+    public BenchRenderResultsCommand() : base("render-results", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
     {
+        Aliases.Add("render"); // its earlier name: scripts that use it still work
         this.AddOptions(_size, _engineSize);
         _report.AddTo(this, cluster: true);
         SetAction(Execute);

@@ -5,10 +5,10 @@ using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`bench cluster`: options → <see cref="ClusterPerformanceSettings"/> → <see cref="ClusterPerformanceExperiment"/> (docs/cluster-performance.md).</summary>
-public sealed class BenchClusterCommand : Command
+/// <summary>`bench cluster-performance`: options → <see cref="ClusterPerformanceSettings"/> → <see cref="ClusterPerformanceExperiment"/> (docs/cluster-performance.md).</summary>
+public sealed class BenchClusterPerformanceCommand : Command
 {
-    private readonly BenchReportOptions _report = new("qrt bench cluster", "docs/cluster-performance.md");
+    private readonly BenchReportOptions _report = new("qrt bench cluster-performance", "docs/cluster-performance.md");
 
     private readonly Option<FileInfo?> _cluster = CommonOptions.Cluster("The cluster file of the running workers (docs/cluster.md). Default: none; the benchmark needs one.", required: true);
 
@@ -16,8 +16,9 @@ public sealed class BenchClusterCommand : Command
 
     private readonly Option<int> _requests = new Option<int>("--requests") { Description = "Bridge requests timed one at a time on each path.", DefaultValueFactory = _ => 200 }.Between(1, 100_000);
 
-    public BenchClusterCommand() : base("cluster", "A fullstate render and single bridge requests on local bridges against a cluster's workers.")
+    public BenchClusterPerformanceCommand() : base("cluster-performance", "A fullstate render and single bridge requests on local bridges against a cluster's workers.")
     {
+        Aliases.Add("cluster"); // its earlier name: scripts that use it still work
         this.AddOptions(_cluster, _size, _requests);
         _report.AddTo(this);
         SetAction(Execute);

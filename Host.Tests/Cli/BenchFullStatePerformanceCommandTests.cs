@@ -3,15 +3,15 @@ using QuantumRayTracing.Tests.Cluster;
 
 namespace QuantumRayTracing.Tests.Cli;
 
-/// <summary>`bench fullstate` given a `--cluster` it cannot use stops with one line and the cluster's exit code, before any work and without a report.</summary>
-public sealed class BenchFullStateCommandTests : IDisposable
+/// <summary>`bench fullstate-performance` given a `--cluster` it cannot use stops with one line and the cluster's exit code, before any work and without a report.</summary>
+public sealed class BenchFullStatePerformanceCommandTests : IDisposable
 {
     private readonly ScratchDirectory _scratch = new("qrt-bench-cluster-option");
 
     public void Dispose() => _scratch.Dispose();
 
-    private (int Code, string Error) Bench(string cluster) => ConsoleCapture.Run("bench", "fullstate", "--scenes", RepositoryPaths.Scenes, "--scene-names", "qornell-8",
-        "--sizes", "2", "--workers", "1", "--cluster", cluster, "-o", _scratch.File("performance-fullstate.md"));
+    private (int Code, string Error) Bench(string cluster) => ConsoleCapture.Run("bench", "fullstate-performance", "--scenes", RepositoryPaths.Scenes, "--scene-names", "qornell-8",
+        "--sizes", "2", "--workers", "1", "--cluster", cluster, "-o", _scratch.File("fullstate-performance.md"));
 
     [Fact]
     public void AMissingClusterFileIsBadInput()
