@@ -36,7 +36,7 @@ public sealed class QCoinEstimator : IMeanEstimator
     /// <summary>The fewest queries QCoin with <paramref name="steps"/> steps can run on: one flip per step.</summary>
     public static long MinimumQueries(int steps) => 1 + StepQueriesPerFlip(steps);
 
-    // The k with the lowest mean error over uniform random means at each budget (bench supersample, 3000 means, seed 1).
+    // The k with the lowest mean error over uniform random means at each budget (bench supersampling-results, 3000 means, seed 1).
     private static readonly (long Queries, int Steps)[] MeasuredBestSteps = [(60, 1), (120, 3), (240, 4), (480, 4), (960, 4), (1600, 5), (3200, 7)];
 
     /// <summary>
