@@ -13,7 +13,7 @@ public sealed class BenchNoiseEstimationCommand : Command
 {
     public const string CommandLine = "qrt bench noise-estimation";
 
-    private readonly Option<int> _trials = CommonOptions.Trials("Estimates per point: repeated runs at f = 0.5 (fig. 10), random pixels (fig. 12) or random means (the noise-aware comparison).", 1000, max: 100_000);
+    private readonly Option<int> _trials = CommonOptions.Trials("Estimates per point: repeated runs at f = 0.5 (fig. 10), random pixels (QSS against QCoin, MLAE and the noisy mean coin) or random means (the noise-aware comparison).", 1000, max: 100_000);
 
     private readonly Option<double> _deviceRate = new("--device-rate")
     {
@@ -29,7 +29,7 @@ public sealed class BenchNoiseEstimationCommand : Command
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/noise-estimation.md");
 
-    public BenchNoiseEstimationCommand() : base("noise-estimation", "Mean estimation under noise: the QCoin paper's fig. 10 (k against noise), fig. 12 (QSS against QCoin, MLAE and MC against the per-gate error), fig. 1 right (QCoin image under noise) and the noise-aware MLAE; -o docs/noise-estimation.md.")
+    public BenchNoiseEstimationCommand() : base("noise-estimation", "Mean estimation under noise: the QCoin paper's fig. 10 (k against noise) and fig. 1 right (QCoin image under noise), QSS against QCoin, MLAE and the noisy mean coin against the per-gate error, and the noise-aware MLAE; -o docs/noise-estimation.md.")
     {
         this.AddOptions(_trials, _deviceRate, _imageSize);
         _report.AddTo(this, scenes: false);

@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Reports;
 
 namespace QuantumRayTracing.Estimates;
@@ -145,9 +146,10 @@ public sealed record HardwareReport(
 
         report.Heading("The paper's hardware run, for context");
         report.Text($"""
-            The ray tracing paper ran its oracle search for 4 primitives on IBM's ibmq_paris (sec. 8, fig. 15): {SweepReport.PaperQubits} qubits, {SweepReport.PaperGates} gates,
-            depth {SweepReport.PaperDepth} (its table 9), without error correction; the measured histogram was close to uniform, i.e. the search found nothing
-            the noise had not erased. The same search (our compact oracle for 4 primitives, one Grover iteration) under error correction, at the
+            The ray tracing paper ran its oracle search for 4 primitives on a simulator and on IBM's ibmq_paris (sec. 8, fig. 15), without error
+            correction. Its table 9 gives the simulator's circuit as {SweepReport.PaperQubits} qubits, {N(SweepReport.PaperGates)} gates and depth {N(SweepReport.PaperDepth)}, and the circuit
+            transpiled for ibmq_paris as {NoiseReport.DeviceQubits} qubits, {N(NoiseReport.DeviceGates)} gates and depth {N(NoiseReport.DeviceDepth)}; the device's measured histogram was
+            close to uniform, i.e. the search found nothing the noise had not erased. The same search (our compact oracle for 4 primitives, one Grover iteration) under error correction, at the
             estimator's default budget of {FrameTable.Probability(QubitModel.ErrorBudget)} for the run ({PaperDevice.Subject.Label}, {PaperDevice.Logical.Qubits} logical qubits, {N(PaperDevice.Logical.Ccz)} CCZ):
             """);
         var device = new TextTable("paper-device", ["model", "physical qubits", "code distance", "runtime"]).AlignRight(1, 2, 3);

@@ -16,8 +16,8 @@ public static class NoiseReport
     /// </summary>
     public const double ModelTolerance = 0.06;
 
-    /// <summary>The paper's table 9: gates of the oracle transpiled for ibmq_paris.</summary>
-    public const int DeviceGates = 18277;
+    /// <summary>The paper's table 9: qubits, gates and depth of the oracle transpiled for ibmq_paris.</summary>
+    public const int DeviceQubits = 27, DeviceGates = 18277, DeviceDepth = 11096;
 
     public const string Title = "Hardware noise";
 
@@ -25,15 +25,21 @@ public static class NoiseReport
     public static Report Of(NoiseBenchResult result, NoiseBenchSettings settings)
     {
         var report = new Report(Title);
+        double[] shares = [.. SearchShares(result.Check).Values, .. SupersamplingShares(result.Supersampling).Values];
+        var model = DepolarizingApproximation.Default;
+        var outside = result.Check.Count(r => Math.Abs(r.Observed - r.Predicted(model)) > ModelTolerance + NoiseCheck.Z * r.StandardError(model))
+            + result.Supersampling.Count(r => Math.Abs(r.Observed - r.Predicted(model)) > ModelTolerance + NoiseCheck.Z * r.StandardError(model));
         report.Text(Lines(
             "What Pauli noise does to the quantum circuits: the analytic noise model of the searches and of the supersampling coins and",
-            "QSS readouts proven against the noisy simulator, the ray tracing paper's device experiment (sec. 8, fig. 15) reproduced on",
-            "the simulator, and what noise costs a render."));
+            $"QSS readouts, checked against the noisy simulator {(outside == 0 ? "within" : $"({outside} rows outside)")} |gap| ≤ {F(ModelTolerance, "0.00")} + z·σ at s = 2/3, the harmful share the engines use"
+                + (shares.Length == 0 ? ";" : $" (fitted per circuit shape, s ranges from {F(shares.Min(), "0.000")} to {F(shares.Max(), "0.000")});"),
+            "the ray tracing paper's device experiment (sec. 8, fig. 15) reproduced on the simulator; and what noise costs a render with",
+            "the lookup oracle, whose circuit has far fewer noise locations than the gate-level oracle a machine would run."));
         report.Text($"Measured in {F(result.Elapsed.TotalMinutes, "0.0")} min; the machine and the command that regenerates this page are named at its end.");
         if (settings.Parts.Contains("model")) Model(report, result.Check, settings.Shots);
         if (settings.Parts.Contains("supersampling")) SupersamplingCheck(report, result.Supersampling, settings.Shots);
         if (settings.Parts.Contains("device")) Device(report, result.Device, settings.DeviceShots, result.DeviceSearch!, result.DeviceOracle!, result.Machine);
-        if (settings.Parts.Contains("render")) Render(report, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize);
+        if (settings.Parts.Contains("render")) Render(report, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize, result.Check);
         return report;
     }
 
@@ -69,7 +75,7 @@ public static class NoiseReport
             $"δ = {F(ModelTolerance, "0.00")} the approximation's own tolerance. The gap column is observed − model (s = 2/3); gap/σ shows how far past",
             "sampling error it is."));
         var check = new TextTable("model-check", ["oracle", "N", "t", "r", "p", "L", "observed", "model, s = 2/3", "gap", "gap/σ", "within δ + zσ", "model, fitted s"]);
-        var shapes = rows.GroupBy(r => (r.Oracle, r.Count)).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
+        var shapes = SearchShares(rows);
         foreach (var r in rows)
         {
             var predicted = r.Predicted(model);
@@ -99,9 +105,7 @@ public static class NoiseReport
         var fits = new TextTable("model-fit", ["oracle", "N", "fitted s", "L per iteration", "F at p = 1e-3", "F at p = 1e-2"]);
         foreach (var ((oracle, count), s) in shapes)
         {
-            var sample = rows.First(r => r.Oracle == oracle && r.Count == count && r.Iterations > 0);
-            var outside = NoiseLocations.PrepareAndMeasure(count);
-            var perIteration = (sample.Locations - outside) / sample.Iterations;
+            var perIteration = PerIteration(rows, oracle, count);
             var approximation = new DepolarizingApproximation(s);
             fits.Row(oracle, I(count), F(s, "0.000"), F(perIteration, "0"), F(approximation.Fidelity(NoiseModel.Depolarizing(1e-3), perIteration), "0.000"),
                 F(approximation.Fidelity(NoiseModel.Depolarizing(1e-2), perIteration), "0.000"));
@@ -112,6 +116,21 @@ public static class NoiseReport
             .ToArray();
         report.Plot("model-check", NoisePlots.LogX("Observed - model P(marked), depolarizing Pauli noise p per gate (s = 2/3)", "per-gate error p", "observed - model", series, 0, "model"),
             "Gap between the noisy simulator and the depolarizing approximation against the per-gate error");
+    }
+
+    /// <summary>The harmful share s fitted per search circuit shape (oracle, N).</summary>
+    private static Dictionary<(string Oracle, int Count), double> SearchShares(IReadOnlyList<NoiseCheckRow> rows) =>
+        rows.GroupBy(r => (r.Oracle, r.Count)).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
+
+    /// <summary>The harmful share s fitted per coin or QSS shape; the direct coin's model has none to fit (it is exact).</summary>
+    private static Dictionary<string, double> SupersamplingShares(IReadOnlyList<SupersamplingCheckRow> rows) =>
+        rows.Where(r => r.Case.Kind != CoinKind.Direct).GroupBy(r => r.Case.Shape).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
+
+    /// <summary>Noise locations of one Grover iteration of a search shape, from its first row with an iteration.</summary>
+    private static double PerIteration(IReadOnlyList<NoiseCheckRow> rows, string oracle, int count)
+    {
+        var sample = rows.First(r => r.Oracle == oracle && r.Count == count && r.Iterations > 0);
+        return (sample.Locations - NoiseLocations.PrepareAndMeasure(count)) / sample.Iterations;
     }
 
     public static void SupersamplingCheck(Report report, IReadOnlyList<SupersamplingCheckRow> rows, int shots)
@@ -139,8 +158,7 @@ public static class NoiseReport
             "the approximation's own tolerance, the same as for the searches. The ideal column is the noiseless probability, which the",
             "simulator leaves far behind."));
         var check = new TextTable("supersampling-check", ["circuit", "N", "m or t", "f", "p", "L", "ideal", "observed", "model, s = 2/3 (direct: exact)", "σ", "gap", "gap/σ", "within δ + zσ", "model, fitted s"]);
-        // The direct coin's model has no harmful share to fit (it is exact).
-        var shapes = rows.Where(r => r.Case.Kind != CoinKind.Direct).GroupBy(r => r.Case.Shape).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
+        var shapes = SupersamplingShares(rows);
         foreach (var r in rows)
         {
             var c = r.Case;
@@ -202,11 +220,13 @@ public static class NoiseReport
             .Row("the search run (prepare, 1 iteration, measure), ours", I(search.Qubits), I(search.Native.GateCount), I(search.Native.Depth), I(search.QiskitCcx.GateCount), I(search.QiskitCcx.Depth))
             .Row("the oracle Int_r once (paper's table 9 circuit), ours", I(oracle.Qubits), I(oracle.Native.GateCount), I(oracle.Native.Depth), I(oracle.QiskitCcx.GateCount), I(oracle.QiskitCcx.Depth))
             .Row("paper's table 9, simulator", I(SweepReport.PaperQubits), "–", "–", I(SweepReport.PaperGates), I(SweepReport.PaperDepth))
-            .Row("paper's table 9, ibmq_paris (transpiled)", "27", "–", "–", I(DeviceGates), "11096"));
+            .Row("paper's table 9, ibmq_paris (transpiled)", I(DeviceQubits), "–", "–", I(DeviceGates), I(DeviceDepth)));
+        var extra = search.Qubits - DeviceQubits;
         report.Text(Lines(
             "(Counted by the bridge's `circuit` summary, as `qrt estimate` does; the paper counts Qiskit's basis, closest to our right-hand",
             "columns. Our qubits are the peak in use, the standard library's auxiliaries included (docs/oracle-sweep.md). Z and CZ counts vary",
-            "slightly run to run with the measurement-based uncomputation.)"));
+            "slightly run to run with the measurement-based uncomputation.)",
+            $"Our search run uses {I(search.Qubits)} qubits, " + (extra > 0 ? $"{(extra == 1 ? "one" : I(extra))} more than ibmq_paris has ({I(DeviceQubits)})." : $"within ibmq_paris's {I(DeviceQubits)}.")));
         var histograms = new TextTable("device-histograms",
             ["p per gate", .. Enumerable.Range(0, states).Select(i => $"P(|{Convert.ToString(i, 2).PadLeft((int)Math.Log2(states), '0')}⟩)"), "TVD from uniform"]);
         foreach (var run in runs)
@@ -233,21 +253,30 @@ public static class NoiseReport
             $"- TVD ≤ 0.1: p ≈ {(tenth is { } b ? Rate(b) : "not reached in the rates measured")} per gate;",
             $"- the search run has {search.Native.GateCount} gates and depth {search.Native.Depth} in the QDK's gates ({search.QiskitCcx.GateCount} and {search.QiskitCcx.Depth} with CCX as Qiskit's 15),",
             $"  so at those rates a run meets about p · (noise locations, {F(NoiseLocationsOf(search), "0")}) ≈ {(flat is { } c ? F(c * NoiseLocationsOf(search), "0.#") : "–")} and {(tenth is { } d ? F(d * NoiseLocationsOf(search), "0.#") : "–")} Pauli errors.",
-            $"  The device ran a transpiled circuit of {DeviceGates} gates and depth 11096 (table 9), {F(ratio, "0")} times our search's gate count in the",
+            $"  The device ran a transpiled circuit of {DeviceGates} gates and depth {DeviceDepth} (table 9), {F(ratio, "0")} times our search's gate count in the",
             $"  same basis (CCX as Qiskit's 15): if errors grow with the gate count, the device's histogram turns flat at about 1/{F(ratio, "0")} of the",
             "  per-gate error above. (Rates interpolated log-linearly between the measured ones.)"));
     }
 
-    public static void Render(Report report, IReadOnlyList<NoisyRenderBenchmark.Sweep> sweeps, int size, IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> confirmations, int confirmSize)
+    /// <summary>
+    /// Rendering under noise, with the lookup oracle's noise locations; <paramref name="check"/>, the search model check's rows,
+    /// gives both oracles' locations per iteration to compare (none: not quoted).
+    /// </summary>
+    public static void Render(Report report, IReadOnlyList<NoisyRenderBenchmark.Sweep> sweeps, int size, IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> confirmations, int confirmSize,
+        IReadOnlyList<NoiseCheckRow> check)
     {
         var model = DepolarizingApproximation.Default;
-        report.Heading("Rendering under noise");
+        report.Heading("Rendering under noise, with the lookup oracle");
         var pipeline = NoisyRenderBenchmark.Defaults(size);
         report.Text(Lines(
             $"The default pipeline of `render` (neighbours, exact termination, a lattice of {pipeline.LatticeLevels} levels from the image size, agreed-miss {F(pipeline.AgreedMiss, "0.###")}, up to {pipeline.Iterations} rounds,",
             $"and the misses the accuracy budget asks of rays no lattice neighbour vouches for) at {size}x{size} on the",
             $"analytic engine under the global depolarizing approximation of depolarizing Pauli noise p per gate and qubit (harmful share {F(model.HarmfulShare, "0.###")}),",
-            "seed 1. Int/Ray in the conservative count (r + 1 per Grover run, every classical test counted); NRMSE against the classical",
+            "seed 1. The analytic engine counts the noise locations of the lookup oracle, an oracle built from intersection answers",
+            "computed classically beforehand" + (OracleSizes(check) is { } sizes ? $": {sizes}." : "."),
+            "A machine would run the gate-level oracle, so every threshold and result in this section belongs to the lookup oracle;",
+            "on the gate-level circuit the thresholds would be far lower.",
+            "Int/Ray in the conservative count (r + 1 per Grover run, every classical test counted); NRMSE against the classical",
             "render of the same options (RMS of 8-bit channel differences over the reference's range); #Dpix pixels whose 8-bit colour differs.",
             "QSearch verifies every candidate, so noise never makes a false hit: it lowers the success probability of each Grover run,",
             "which costs queries, and it makes the termination rule and the lattice's cheap confirmations (which assume the ideal miss",
@@ -279,17 +308,20 @@ public static class NoiseReport
             var b = sweep.Crossing(q => sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is { } r ? q.Measurement.Error.Nrmse - r : double.NaN);
             var highest = Rate(sweep.Quantum.Max(q => q.PerGate));
             report.Text(Lines(
+                "With the lookup oracle's noise locations:",
                 "- (a) quantum loses to classical brute force in Int/Ray " + (a is { } x ? $"at p ≈ {Rate(x)} per gate;" : $"at no rate up to p = {highest} (its Int/Ray stays below {F(classicalPerRay, "0")});"),
-                "- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y ? $"at p ≈ {Rate(y)} per gate." : $"at no rate up to p = {highest}.")));
+                "- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y ? $"at p ≈ {Rate(y)} per gate." : $"at no rate up to p = {highest}."),
+                "",
+                "On the gate-level circuit quantum would lose at far lower rates."));
             report.Plot($"render-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: NRMSE against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "NRMSE (%)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Error.Nrmse * 100)).ToArray()),
                  ("randomized at equal Int/Ray", sweep.Quantum.Where(q => q.PerGate > 0 && sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is not null)
                     .Select(q => (q.PerGate, sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative)!.Value * 100)).ToArray())]),
-                $"{sweep.Scene}: NRMSE against the per-gate error");
+                $"{sweep.Scene}: NRMSE against the per-gate error, lookup oracle");
             report.Plot($"int-per-ray-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: Int/Ray against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "Int/Ray (conservative)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Result.Total.PerRayConservative)).ToArray())],
                 classicalPerRay, "classical brute force"),
-                $"{sweep.Scene}: Int/Ray against the per-gate error");
+                $"{sweep.Scene}: Int/Ray against the per-gate error, lookup oracle");
         }
         if (confirmations.Count > 0)
         {
@@ -304,6 +336,19 @@ public static class NoiseReport
                     F(c.FullState.WallTime.TotalSeconds, "0") + " s");
             report.Table(table);
         }
+    }
+
+    /// <summary>
+    /// The two oracles' noise locations per Grover iteration from the model check: the lookup oracle's at its largest N, the
+    /// gate-level oracle's at its largest; null without rows of both.
+    /// </summary>
+    private static string? OracleSizes(IReadOnlyList<NoiseCheckRow> check)
+    {
+        var lookup = check.Where(r => r.Oracle == "lookup" && r.Iterations > 0).Select(r => r.Count).DefaultIfEmpty(0).Max();
+        var gate = check.Where(r => r.Oracle == "gate" && r.Iterations > 0).Select(r => r.Count).DefaultIfEmpty(0).Max();
+        if (lookup == 0 || gate == 0) return null;
+        return $"{F(PerIteration(check, "lookup", lookup), "0")} locations per Grover iteration at N = {I(lookup)} (the fitted-s table above), where the gate-level oracle has " +
+            $"{F(PerIteration(check, "gate", gate), "0")} already at N = {I(gate)}, and more at larger N";
     }
 
     private static double NoiseLocationsOf(CircuitCounts counts) => NoiseLocations.FromCounts(counts.Native.Gates, counts.Native.Measurements);

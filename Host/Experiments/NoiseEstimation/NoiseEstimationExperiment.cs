@@ -7,7 +7,7 @@ using QuantumRayTracing.Supersampling;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// `bench noise-estimation`: the QCoin paper's device experiments (fig. 10, fig. 12, fig. 1 right) and the noise-aware
+/// `bench noise-estimation`: the QCoin paper's device experiments (fig. 10, fig. 1 right), QSS against QCoin, MLAE and the noisy mean coin, and the noise-aware
 /// MLAE, all on the analytic supersampling engine under its global depolarizing model (seeded, so a run is reproducible).
 /// Measures only; <see cref="NoiseEstimationReport"/> composes the report.
 /// </summary>
@@ -43,7 +43,7 @@ public static class NoiseEstimationExperiment
         var streams = new Streams(settings.Seed);
         progress("fig. 10: QCoin at f = 0.5 against k, direct and full coin");
         var steps = Steps(settings, streams);
-        progress("fig. 12: MC, QSS, QCoin, MLAE at equal queries against the per-gate error");
+        progress("QSS against QCoin, MLAE and the noisy mean coin at equal queries against the per-gate error");
         var nisq = Nisq(settings, streams);
         progress("fig. 1: the Qornell box at 8x8 subpixels, 240 queries, under noise");
         var input = new SubpixelImage(SupersamplingImageBenchmark.RenderQornell(settings.ImageSize, 8), 8);
@@ -114,7 +114,7 @@ public static class NoiseEstimationExperiment
         return points;
     }
 
-    /// <summary>The estimators of the fig. 12 comparison at QSS's budget for <paramref name="counterBits"/>, 2^(t+1) − 1 queries.</summary>
+    /// <summary>The estimators of the comparison under noise at QSS's budget for <paramref name="counterBits"/>, 2^(t+1) − 1 queries.</summary>
     public static IEnumerable<(string Method, IMeanEstimator Estimator)> NisqEstimators(int counterBits)
     {
         var queries = QssRequest.QueriesPerRun(counterBits);

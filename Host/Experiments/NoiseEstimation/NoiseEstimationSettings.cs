@@ -16,13 +16,13 @@ public sealed record NoiseEstimationSettings(int Trials, double DeviceRate, int 
     /// <summary>Query budgets of fig. 10.</summary>
     public static readonly long[] StepBudgets = [100, 300, 1000, 3000, 10000];
 
-    /// <summary>Per-gate error rates of the fig. 12 comparison.</summary>
+    /// <summary>Per-gate error rates of the comparison of QSS against QCoin, MLAE and the noisy mean coin.</summary>
     public static readonly double[] NisqRates = [0, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2];
 
-    /// <summary>QSS counter bits of the fig. 12 comparison; each sets the equal query budget 2^(t+1) − 1.</summary>
+    /// <summary>QSS counter bits of the comparison of QSS against QCoin, MLAE and the noisy mean coin; each sets the equal query budget 2^(t+1) − 1.</summary>
     public static readonly int[] NisqCounterBits = [2, 3, 4, 5, 6];
 
-    /// <summary>Subpixels per pixel in the fig. 12 comparison (4x4, the thesis's setting).</summary>
+    /// <summary>Subpixels per pixel in the comparison of QSS against QCoin, MLAE and the noisy mean coin (4x4, the thesis's setting).</summary>
     public const int NisqSubpixels = 16;
 
     /// <summary>Decays γ per Grover operator of the noise-aware comparison (F = e^(−γ)); each is reached by the per-gate error that gives it on the direct coin.</summary>
