@@ -84,22 +84,6 @@ public sealed class AccuracyBudgetTests
         Assert.Equal(AccuracyBudget.MaxRequiredMisses, AccuracyBudget.RequiredMisses(0.9, 512, 512, 0));
     }
 
-    [Fact]
-    public void ExpectedWrongPixelsFromFindsAndMissRates()
-    {
-        // One Grover run with r = 2 over N = 64: its worst miss for t ≤ 8 is what the budget charges each find with.
-        var schedule = QSearchSchedule.Fixed(64, [2]);
-        using var search = new QuantumHitSearch(new QuantumRayTracing.Engines.AnalyticEngine(new QuantumRayTracing.Randomness.SeededRandom(1)), new QuantumRayTracing.Randomness.SeededRandom(2), new QSearchOptions());
-        var worst = Enumerable.Range(1, RenderOptions.ConfirmationMaxT).Max(t => FalseNegativeRate.QSearchExact(schedule, t));
-        Assert.Equal(worst, AccuracyBudget.WorstMiss(search, 64, schedule), 12);
-        var pass = new PassMetrics("p", 100, 1, default, 0, TimeSpan.Zero) { Tallies = [new SearchTally(schedule, 100, 10)] };
-        // As the cheap confirmation: s = 1; as a full search with 2 required misses: s = 2.
-        Assert.Equal(10 * worst / (1 - worst), AccuracyBudget.From([pass], search, 64, schedule, 3, 100).ExpectedWrongPixels, 9);
-        Assert.Equal(10 * worst * worst / (1 - worst * worst), AccuracyBudget.From([pass], search, 64, cheap: null, 2, 100).ExpectedWrongPixels, 9);
-        using var classical = new ClassicalHitSearch();
-        Assert.Equal(0, AccuracyBudget.From([pass], classical, 64, null, 1, 100).ExpectedWrongPixels);
-    }
-
     private static (long Wrong, long Pixels) WrongPixels(AccuracyConfiguration configuration, int size)
     {
         var seeds = Enumerable.Range(1, Plan.Single(p => p.Size == size).Seeds).Select(s => (ulong)s).ToArray();
