@@ -67,10 +67,22 @@ public static class BudgetRounds
     private static int SearchesToShare(double q, double share, double miss) =>
         q <= share ? 0 : miss <= 0 ? 1 : miss >= 1 ? int.MaxValue / 2 : (int)Math.Ceiling(Math.Log(share / q) / Math.Log(miss));
 
-    /// <summary>The schedule that lowers a ray's odds of being wrong most per expected query: −ln(worst miss) / cost of an empty search.</summary>
+    /// <summary>The miss bounds of the planned confirmation lists a round may use besides the full search and the lattice's cheap one.</summary>
+    public static readonly double[] PlannedMisses = [0.5, 0.3, 0.2, 0.1, 0.05];
+
+    /// <summary>
+    /// The schedule that lowers a ray's odds of being wrong most per expected query, −ln(worst miss) / cost of an
+    /// empty search, among the full search, the lattice's cheap confirmation and the planned lists of
+    /// <see cref="PlannedMisses"/>: a confirmation mostly finds nothing, so its empty cost is what it costs.
+    /// </summary>
     public static QSearchSchedule? Cheapest(IHitSearch search, int count, QSearchSchedule? full, QSearchSchedule? cheap)
     {
         double Gain(QSearchSchedule? s) => -Math.Log(Math.Max(1e-12, Rendering.AccuracyBudget.WorstMiss(search, count, s))) / search.EmptySearchCost(count, s);
-        return cheap is not null && Gain(cheap) > Gain(full) ? cheap : full;
+        var best = full;
+        var bestGain = Gain(full);
+        IEnumerable<QSearchSchedule?> planned = PlannedMisses.Select(m => ConfirmationPlanner.Cheapest(count, Rendering.RenderOptions.ConfirmationMaxT, m));
+        foreach (var candidate in planned.Prepend(cheap).OfType<QSearchSchedule>())
+            if (Gain(candidate) > bestGain) (best, bestGain) = (candidate, Gain(candidate));
+        return best;
     }
 }

@@ -3,10 +3,12 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Passes;
 
 /// <summary>
-/// Never more than brute force: before a round, a ray whose remaining quantum work (the empty searches the stop
-/// rule still requires of it, at the engine's expected cost of an empty search) is expected to cost more than the
+/// Never more than brute force: before a round, a ray whose remaining quantum work is expected to cost more than the
 /// N tests that settle it is settled classically: it tests every primitive, counts N in #C_Int and its answer is
-/// certain. Engines that cannot miss are never settled: their search already is the classical answer.
+/// certain. The remaining work is the empty searches the stop rule still requires of it and, for a closest-hit ray
+/// whose last search found something (or that has none yet), the search that may find a closer one first, each at
+/// the engine's expected cost of an empty search (a search that finds stops sooner). Engines that cannot miss are
+/// never settled: their search already is the classical answer.
 /// </summary>
 public static class ClassicalSettle
 {
@@ -17,8 +19,9 @@ public static class ClassicalSettle
     /// <param name="schedule">The schedule of ray i's search in a round.</param>
     /// <param name="misses">Ray i's consecutive empty searches so far.</param>
     /// <param name="vouched">Whether ray i's lattice neighbours vouch for it (one search may then end it).</param>
+    /// <param name="findEnds">Whether a find ends the ray (visibility) rather than start a search for a closer hit.</param>
     public static Func<int, int, bool>? Rule(PassOptions options, IHitSearch search, int count, Func<QSearchSchedule?, double> worstMiss,
-        Func<int, int, QSearchSchedule?> schedule, Func<int, int> misses, Func<int, bool> vouched)
+        Func<int, int, QSearchSchedule?> schedule, Func<int, int> misses, Func<int, bool> vouched, bool findEnds)
     {
         if (!options.Settle) return null;
         return (round, i) =>
@@ -26,7 +29,23 @@ public static class ClassicalSettle
             var plan = schedule(round, i);
             if (worstMiss(plan) <= 0) return false;
             var required = vouched(i) ? 1 : options.Stop?.RequiredMisses ?? options.Iterations - round;
-            return Math.Max(1, required - misses(i)) * search.EmptySearchCost(count, plan) > count;
+            var searches = Math.Max(1, required - misses(i)) + (!findEnds && misses(i) == 0 ? 1 : 0);
+            return searches * search.EmptySearchCost(count, plan) > count;
         };
+    }
+
+    /// <summary>
+    /// Whether even the cheapest ray of a pass would be settled before its first search: one confirmation with the
+    /// lattice's cheap schedule where neighbours vouch (and, for a closest-hit ray, the search that finds its hit), else
+    /// the full search. The whole pass is then settled outright, without the lattice's neighbour tests first.
+    /// </summary>
+    public static bool SettlesEveryRay(PassOptions options, IHitSearch search, int count, Func<QSearchSchedule?, double> worstMiss, bool findEnds)
+    {
+        if (!options.Settle || worstMiss(options.Schedule) <= 0) return false;
+        var cheapest = options.Lattice?.Agreed is { } agreed
+            ? Math.Min(search.EmptySearchCost(count, agreed), search.EmptySearchCost(count, options.Schedule))
+            : search.EmptySearchCost(count, options.Schedule);
+        var searches = options.Lattice is null ? Math.Max(1, options.Stop?.RequiredMisses ?? options.Iterations) : 1;
+        return (searches + (findEnds ? 0 : 1)) * cheapest > count;
     }
 }

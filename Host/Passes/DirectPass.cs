@@ -39,10 +39,12 @@ public static class DirectPass
         static HitWindow Window(int i, RayTable table) => table.FullRange;
         Func<int, int, QSearchSchedule?> schedule = (_, _) => options.Schedule;
         var settle = ClassicalSettle.Rule(options, search, geometry.Count, worstMiss, (round, i) => schedule(round, i), i => misses[i],
-            i => vouched?[i] == true);
+            i => vouched?[i] == true, findEnds: true);
 
         PassMetrics metrics;
-        if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, worstMiss, findEnds: true))
+            metrics = IteratedSearch.Run(name, search, geometry, shadowRays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
+        else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
             metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress, gather,
                 settled: i => occluders[i] is not null, schedule: schedule, ledger: ledger, settle: settle);
         else

@@ -41,10 +41,12 @@ public static class TracePass
             : null;
         Func<int, int, QSearchSchedule?> schedule = (_, _) => options.Schedule;
         var settle = ClassicalSettle.Rule(options, search, geometry.Count, worstMiss, (round, i) => schedule(round, i), i => misses[i],
-            i => vouched?[i] == true);
+            i => vouched?[i] == true, findEnds: false);
 
         PassMetrics metrics;
-        if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, worstMiss, findEnds: false))
+            metrics = IteratedSearch.Run(name, search, geometry, rays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
+        else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
             metrics = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
                 schedule: schedule, ledger: ledger, settle: settle);
         else
