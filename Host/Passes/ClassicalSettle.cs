@@ -37,15 +37,27 @@ public static class ClassicalSettle
     /// <summary>
     /// Whether even the cheapest ray of a pass would be settled before its first search: one confirmation with the
     /// lattice's cheap schedule where neighbours vouch (and, for a closest-hit ray, the search that finds its hit), else
-    /// the full search. The whole pass is then settled outright, without the lattice's neighbour tests first.
+    /// the full search; or, with an allowance, when bringing a ray from even odds of being wrong to its share of the
+    /// allowance costs more than N at the best rate a confirmation lowers those odds (an engine whose searches miss
+    /// often). The whole pass is then settled outright, without the lattice's neighbour tests first.
     /// </summary>
-    public static bool SettlesEveryRay(PassOptions options, IHitSearch search, int count, Func<QSearchSchedule?, double> worstMiss, bool findEnds)
+    /// <param name="options">The pass's options: its lattice, stop rule, schedule and allowance.</param>
+    /// <param name="search">The engine.</param>
+    /// <param name="count">N, the tests that settle a ray.</param>
+    /// <param name="rays">The pass's rays, among which its allowance is shared.</param>
+    /// <param name="worstMiss">A schedule's worst miss: an engine that cannot miss is never settled.</param>
+    /// <param name="findEnds">Whether a find ends a ray (visibility) rather than start a search for a closer hit.</param>
+    public static bool SettlesEveryRay(PassOptions options, IHitSearch search, int count, int rays, Func<QSearchSchedule?, double> worstMiss, bool findEnds)
     {
         if (!options.Settle || worstMiss(options.Schedule) <= 0) return false;
         var cheapest = options.Lattice?.Agreed is { } agreed
             ? Math.Min(search.EmptySearchCost(count, agreed), search.EmptySearchCost(count, options.Schedule))
             : search.EmptySearchCost(count, options.Schedule);
         var searches = options.Lattice is null ? Math.Max(1, options.Stop?.RequiredMisses ?? options.Iterations) : 1;
-        return (searches + (findEnds ? 0 : 1)) * cheapest > count;
+        if ((searches + (findEnds ? 0 : 1)) * cheapest > count) return true;
+        if (options.Allowance is not { } allowance || rays == 0 || allowance / rays >= 0.5) return false;
+        var best = BudgetRounds.Cheapest(search, count, options.Schedule, options.Lattice?.Agreed, 2 * allowance / rays);
+        var miss = worstMiss(best);
+        return miss >= 1 || Math.Log(0.5 * rays / allowance) / -Math.Log(miss) * search.EmptySearchCost(count, best) > count;
     }
 }

@@ -42,7 +42,7 @@ public static class DirectPass
             i => vouched?[i] == true, findEnds: true);
 
         PassMetrics metrics;
-        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, worstMiss, findEnds: true))
+        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, shadowRays.Count, worstMiss, findEnds: true))
             metrics = IteratedSearch.Run(name, search, geometry, shadowRays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
         else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
             metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress, gather,

@@ -44,7 +44,7 @@ public static class TracePass
             i => vouched?[i] == true, findEnds: false);
 
         PassMetrics metrics;
-        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, worstMiss, findEnds: false))
+        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, rays.Count, worstMiss, findEnds: false))
             metrics = IteratedSearch.Run(name, search, geometry, rays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
         else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
             metrics = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
