@@ -12,6 +12,9 @@ namespace QuantumRayTracing.Passes;
 /// </summary>
 public static class ClassicalSettle
 {
+    // The reduction of a ray's odds of being wrong that budget rounds typically ask for.
+    private const double Tenfold = 0.1;
+
     /// <param name="options">The pass's options: the rule applies when <see cref="PassOptions.Settle"/> is set.</param>
     /// <param name="search">The engine, for the expected cost of an empty search.</param>
     /// <param name="count">N, the tests that settle a ray.</param>
@@ -37,9 +40,9 @@ public static class ClassicalSettle
     /// <summary>
     /// Whether even the cheapest ray of a pass would be settled before its first search: one confirmation with the
     /// lattice's cheap schedule where neighbours vouch (and, for a closest-hit ray, the search that finds its hit), else
-    /// the full search; or, with an allowance, when bringing a ray from even odds of being wrong to its share of the
-    /// allowance costs more than N at the best rate a confirmation lowers those odds (an engine whose searches miss
-    /// often). The whole pass is then settled outright, without the lattice's neighbour tests first.
+    /// the full search; or, with an allowance, when lowering a ray's odds of being wrong tenfold, at the best rate a
+    /// confirmation lowers them, costs more than N (an engine whose searches miss often, as the randomized one's
+    /// floor(sqrt N) tests do). The whole pass is then settled outright, without the lattice's neighbour tests first.
     /// </summary>
     /// <param name="options">The pass's options: its lattice, stop rule, schedule and allowance.</param>
     /// <param name="search">The engine.</param>
@@ -55,9 +58,9 @@ public static class ClassicalSettle
             : search.EmptySearchCost(count, options.Schedule);
         var searches = options.Lattice is null ? Math.Max(1, options.Stop?.RequiredMisses ?? options.Iterations) : 1;
         if ((searches + (findEnds ? 0 : 1)) * cheapest > count) return true;
-        if (options.Allowance is not { } allowance || rays == 0 || allowance / rays >= 0.5) return false;
-        var best = BudgetRounds.Cheapest(search, count, options.Schedule, options.Lattice?.Agreed, 2 * allowance / rays);
+        if (options.Allowance is null) return false;
+        var best = BudgetRounds.Cheapest(search, count, options.Schedule, options.Lattice?.Agreed, Tenfold);
         var miss = worstMiss(best);
-        return miss >= 1 || Math.Log(0.5 * rays / allowance) / -Math.Log(miss) * search.EmptySearchCost(count, best) > count;
+        return miss >= 1 || Math.Log(Tenfold) / Math.Log(miss) * search.EmptySearchCost(count, best) > count;
     }
 }
