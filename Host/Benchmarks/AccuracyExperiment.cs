@@ -102,9 +102,11 @@ public static class AccuracyExperiment
         report.Heading("The ways to keep the budget, measured");
         report.Text($"""
             Every kind but the 4,000-rectangle scenes, {alternativeSeeds.Length} seeds per kind and size; wrong pixels summed, Int/Ray (conservative) over all rays.
-            Each keeps the budget by its rounds; they differ in what the passes do before the rounds. *Rounds alone*: one required miss (the
-            paper's stop rule), so the rounds find where more search is needed; *--agreed-miss 0.2*: a tighter cheap confirmation where lattice
-            neighbours agree; *one lattice level more*: fewer rays searched in full. The cheapest row at most sizes should be the default.
+            Each keeps the budget by its rounds; they differ in what the passes do before the rounds. The default stops a ray after one empty
+            search (the paper's rule) and lets the rounds find where more search is needed; *2 required misses*: every ray its neighbours do not
+            vouch for searched until two empty searches first; *--agreed-miss 0.2*: a tighter cheap confirmation where lattice neighbours agree;
+            *one lattice level more*: fewer rays searched in full. docs/rendering.md weighs these rows and the Qornell box
+            for the default's choice.
             """);
         var alternatives = AccuracyBenchmark.Alternatives;
         var measured = alternativeSizes.ToDictionary(size => size, size =>

@@ -8,8 +8,8 @@ namespace QuantumRayTracing.Passes;
 /// Holds a pass to its share of the accuracy budget: while the rays' expected wrong (<see cref="RayLedger"/>)
 /// exceeds the allowance, a round searches once more the fewest rays, most likely wrong first, whose
 /// confirmation would bring it within: rays on the cheap path, rays whose trailing misses say little, rays
-/// cut off by the round limit. Each round uses the schedule that brings the expectation within the allowance for the
-/// fewest expected queries (the engine's full search, the lattice's cheap confirmation or a planned list). A ray whose remaining confirmations
+/// cut off by the round limit. Each round uses the schedule that lowers a ray's odds of being wrong most per query
+/// (the engine's full search, the lattice's cheap confirmation or a planned list). A ray whose remaining confirmations
 /// are expected to cost more than the N tests that would settle it is settled classically instead.
 /// </summary>
 public static class BudgetRounds
@@ -40,7 +40,7 @@ public static class BudgetRounds
             var expected = Enumerable.Range(0, rays.Count).Select(ledger.Expected).ToArray();
             var rest = expected.Sum();
             if (rest <= allowance) break;
-            var schedule = Cheapest(search, count, full, cheap, allowance / rest);
+            var schedule = Cheapest(search, count, full, cheap);
             var miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
             var cost = search.EmptySearchCost(count, schedule);
             var selected = new HashSet<int>();
@@ -71,29 +71,19 @@ public static class BudgetRounds
     public static readonly double[] PlannedMisses = [0.5, 0.3, 0.2, 0.1, 0.05];
 
     /// <summary>
-    /// The schedule that brings the rays' expected wrong down by <paramref name="factor"/> for the fewest expected
-    /// queries, among the full search, the lattice's cheap confirmation and the planned lists of
-    /// <see cref="PlannedMisses"/>: a schedule whose worst miss is m needs ceil(ln factor / ln m) confirmations of a
-    /// ray, each costing what an empty search costs (a confirmation mostly finds nothing). Ties go to the larger
-    /// reduction per query, −ln m / cost.
+    /// The schedule that lowers a ray's odds of being wrong most per expected query, −ln(worst miss) / cost of an empty
+    /// search, among the full search, the lattice's cheap confirmation and the planned lists of <see cref="PlannedMisses"/>:
+    /// a confirmation mostly finds nothing, so its empty cost is what it costs. (Choosing instead the list that just
+    /// reaches the allowance in one round saved queries but, being weak, left more wrong pixels than the model expected.)
     /// </summary>
-    public static QSearchSchedule? Cheapest(IHitSearch search, int count, QSearchSchedule? full, QSearchSchedule? cheap, double factor = 1e-3)
+    public static QSearchSchedule? Cheapest(IHitSearch search, int count, QSearchSchedule? full, QSearchSchedule? cheap)
     {
-        (double Cost, double Gain) Price(QSearchSchedule? s)
-        {
-            var miss = Math.Max(1e-12, Rendering.AccuracyBudget.WorstMiss(search, count, s));
-            var cost = search.EmptySearchCost(count, s);
-            var searches = miss >= 1 ? double.PositiveInfinity : Math.Max(1, Math.Ceiling(Math.Log(factor) / Math.Log(miss) - 1e-9));
-            return (searches * cost, -Math.Log(miss) / cost);
-        }
+        double Gain(QSearchSchedule? s) => -Math.Log(Math.Max(1e-12, Rendering.AccuracyBudget.WorstMiss(search, count, s))) / search.EmptySearchCost(count, s);
         var best = full;
-        var bestPrice = Price(full);
+        var bestGain = Gain(full);
         IEnumerable<QSearchSchedule?> planned = PlannedMisses.Select(m => ConfirmationPlanner.Cheapest(count, Rendering.RenderOptions.ConfirmationMaxT, m));
         foreach (var candidate in planned.Prepend(cheap).OfType<QSearchSchedule>())
-        {
-            var price = Price(candidate);
-            if (price.Cost < bestPrice.Cost || (price.Cost == bestPrice.Cost && price.Gain > bestPrice.Gain)) (best, bestPrice) = (candidate, price);
-        }
+            if (Gain(candidate) > bestGain) (best, bestGain) = (candidate, Gain(candidate));
         return best;
     }
 }

@@ -5,7 +5,8 @@ namespace QuantumRayTracing.Passes;
 /// <summary>
 /// Never more than brute force: before a round, a ray whose remaining quantum work is expected to cost more than the
 /// N tests that settle it is settled classically: it tests every primitive, counts N in #C_Int and its answer is
-/// certain. The remaining work is the empty searches the stop rule still requires of it and, for a closest-hit ray
+/// certain. The remaining work is the empty searches the stop rule or the budget still asks of it (for a ray nobody
+/// vouches for, the misses that would keep the coarsest lattice within the budget) and, for a closest-hit ray
 /// whose last search found something (or that has none yet), the search that may find a closer one first, each at
 /// the engine's expected cost of an empty search (a search that finds stops sooner). Engines that cannot miss are
 /// never settled: their search already is the classical answer.
@@ -31,7 +32,7 @@ public static class ClassicalSettle
         {
             var plan = schedule(round, i);
             if (worstMiss(plan) <= 0) return false;
-            var required = vouched(i) ? 1 : options.Stop?.RequiredMisses ?? options.Iterations - round;
+            var required = vouched(i) ? 1 : options.Stop?.BudgetMisses ?? options.Iterations - round;
             var searches = Math.Max(1, required - misses(i)) + (!findEnds && misses(i) == 0 ? 1 : 0);
             return searches * search.EmptySearchCost(count, plan) > count;
         };
@@ -56,10 +57,10 @@ public static class ClassicalSettle
         var cheapest = options.Lattice?.Agreed is { } agreed
             ? Math.Min(search.EmptySearchCost(count, agreed), search.EmptySearchCost(count, options.Schedule))
             : search.EmptySearchCost(count, options.Schedule);
-        var searches = options.Lattice is null ? Math.Max(1, options.Stop?.RequiredMisses ?? options.Iterations) : 1;
+        var searches = options.Lattice is null ? Math.Max(1, options.Stop?.BudgetMisses ?? options.Iterations) : 1;
         if ((searches + (findEnds ? 0 : 1)) * cheapest > count) return true;
         if (options.Allowance is null) return false;
-        var best = BudgetRounds.Cheapest(search, count, options.Schedule, options.Lattice?.Agreed, Tenfold);
+        var best = BudgetRounds.Cheapest(search, count, options.Schedule, options.Lattice?.Agreed);
         var miss = worstMiss(best);
         return miss >= 1 || Math.Log(Tenfold) / Math.Log(miss) * search.EmptySearchCost(count, best) > count;
     }

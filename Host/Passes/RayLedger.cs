@@ -9,9 +9,9 @@ namespace QuantumRayTracing.Passes;
 /// m for t = 1..<see cref="Rendering.RenderOptions.ConfirmationMaxT"/>, so an episode that had something to find
 /// ends wrong with probability at most W = ∏ m. With π the share of episodes that have something to find,
 /// estimated per path (rays first searched with the lattice's cheap confirmation, and all others) from how
-/// often that path's searches found something, a ray is wrong with probability π W / (1 − π + π W), the
-/// posterior given its trailing misses. Summed over a path before any budget round this equals the path's
-/// finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
+/// often that path's searches found something (with half a find more, so a path that found nothing is not taken
+/// for right), a ray is wrong with probability π W / (1 − π + π W), the posterior given its trailing misses.
+/// Summed over a path before any budget round this is about the path's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
 /// A certain answer (a classical test of every primitive) is never wrong.
 /// </summary>
 public sealed class RayLedger
@@ -98,7 +98,9 @@ public sealed class RayLedger
             var completed = open.Where(i => _trailing[i] < 1).ToArray();
             var episodes = _found[path] + open.Length;
             var w = completed.Length == 0 ? 0 : completed.Average(i => _trailing[i]);
-            _prior[path] = episodes == 0 ? 0 : Math.Min(PriorCap, _found[path] / (episodes * (1 - w)));
+            // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a path whose searches found
+            // nothing has not shown that its rays are right, only that few of them are wrong.
+            _prior[path] = open.Length == 0 ? 0 : Math.Min(PriorCap, (_found[path] + 0.5) / ((episodes + 1) * (1 - w)));
         }
         _frozen = true;
     }

@@ -197,8 +197,10 @@ public static class SceneRenderer
             passes.Add(calibration);
         }
         var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper, planned);
-        var required = options.RequiredMisses ?? AccuracyBudget.RequiredMisses(
-            AccuracyBudget.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
-        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop), required);
+        // With a budget its rounds search more where the expectation asks, cheaper than a fixed guard on every ray
+        // (docs/rendering.md): the paper's one miss. Without one, the guard derived from the budget's target.
+        var guard = AccuracyBudget.RequiredMisses(AccuracyBudget.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
+        var required = options.RequiredMisses ?? (options.Budget is not null ? 1 : guard);
+        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop), required, options.Budget is not null ? guard : null);
     }
 }
