@@ -33,8 +33,8 @@ public sealed partial class JsonOutputTests : IDisposable
     public void RenderRecordsEveryPrintedFigure()
     {
         var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-        // The randomized engine misses hits in a single pass, so the error figures are not all zero.
-        var (output, json) = Run("render", scene, "--engine", "randomized", "--size", "16", "--seed", "5", "--passes", "1", "-o", "r.png");
+        // The randomized engine misses hits in a single pass without the budget, so the error figures are not all zero.
+        var (output, json) = Run("render", scene, "--engine", "randomized", "--size", "16", "--seed", "5", "--passes", "1", "--budget", "0", "-o", "r.png");
         AssertRunFields(json, "render", "randomized", 5);
         Assert.Equal("16", (string?)json["options"]!["size"]);
         Assert.Equal(scene, (string?)json["options"]!["scene"]);
@@ -66,6 +66,7 @@ public sealed partial class JsonOutputTests : IDisposable
             AssertPrinted(table["Int/Ray, conservative"][k], (double)pass["perRayConservative"]!);
             AssertPrinted(table["Int/Ray, paper"][k], (double)pass["perRayPaper"]!);
             Assert.Equal(Long(table["#Cpix (neighbours)"][k]), (long)pass["updatedPixels"]!);
+            Assert.Equal(Long(table["settled classically"][k]), (long)pass["settledRays"]!);
             Assert.Equal(Long(table["table rows (eval-rpc)"][k]), (long)pass["tableRows"]!);
             AssertPrinted(table["wall time"][k].Replace(" s", "", StringComparison.Ordinal), (double)pass["elapsed"]!);
         }

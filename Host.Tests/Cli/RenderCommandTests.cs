@@ -61,10 +61,10 @@ public sealed class RenderCommandTests : IDisposable
     [Fact]
     public void ReferenceAndDifferenceImagesOfAQuantumRender()
     {
-        // One pass and one shadow round on the analytic engine, without the neighbour tricks, leave wrong pixels to mark.
+        // One pass and one shadow round on the analytic engine, without the neighbour tricks or the budget, leave wrong pixels to mark.
         var output = _scratch.File("q.png");
         Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "analytic", "--seed", "3", "--size", "12", "--passes", "1", "--shadow-passes", "1",
-            "--neighbours", "false", "--shadow-neighbours", "false", "--stop", "off", "--lattice", "0", "--reference", "-o", output]));
+            "--neighbours", "false", "--shadow-neighbours", "false", "--stop", "off", "--lattice", "0", "--budget", "0", "--reference", "-o", output]));
         var image = ImageReader.Read(output);
         var reference = ImageReader.Read(_scratch.File("q-reference.png"));
         var difference = ImageReader.Read(_scratch.File("q-difference.png"));

@@ -30,6 +30,26 @@ public static class StatisticalBounds
         return (low, high);
     }
 
+    /// <summary>
+    /// The one-sided Clopper–Pearson upper confidence limit of a binomial share from <paramref name="k"/> successes in
+    /// <paramref name="n"/> trials: the true share exceeds it with probability at most <paramref name="alpha"/>.
+    /// </summary>
+    public static double ClopperPearsonUpper(long k, long n, double alpha)
+    {
+        if (k >= n) return 1;
+        return Beta.InvCDF(k + 1, n - k, 1 - alpha);
+    }
+
+    /// <summary>The smallest count c with P(X &gt; c) ≤ <paramref name="alpha"/> for X ~ Poisson(<paramref name="mean"/>).</summary>
+    public static int PoissonUpper(double mean, double alpha)
+    {
+        if (mean <= 0) return 0;
+        var poisson = new Poisson(mean);
+        var c = (int)Math.Floor(mean);
+        while (1 - poisson.CumulativeDistribution(c) > alpha) c++;
+        return c;
+    }
+
     public static void AssertBinomial(int observed, double p, int n, string what)
     {
         var (low, high) = BinomialInterval(p, n);

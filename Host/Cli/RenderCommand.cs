@@ -39,6 +39,7 @@ public sealed class RenderCommand : Command
         Arguments.Add(_scene);
         this.AddOptions(_output, _size, _reference, _referenceSamples);
         _render.AddTo(this);
+        Options.Add(_render.Budget);
         _engine.AddTo(this);
         _qsearch.AddTo(this);
         _json.AddTo(this);
@@ -69,7 +70,8 @@ public sealed class RenderCommand : Command
         var kind = parse.GetValue(_engine.Engine);
         var stem = sceneFile is null ? DefaultScene.Stem : Path.GetFileNameWithoutExtension(sceneFile.Name);
         var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
-        return new RenderRunSettings(scene, _render.Get(parse, width, height, parse.GetValue(_engine.Seed)), kind, _qsearch.Get(parse),
+        var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
+        return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
             parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse));
     }

@@ -67,6 +67,13 @@ public sealed class RenderOptionSet
         DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
     };
 
+    /// <summary>`render`'s accuracy budget; commands that price or plan a render rather than run it leave it out.</summary>
+    public readonly Option<double> Budget = new("--budget")
+    {
+        Description = "Accuracy budget: the share of pixels the render may leave wrong in expectation. The primary, specular and shadow passes search more where the expectation comes from until it is within, and settle classically a ray whose remaining quantum work would cost more than N tests. 0: no budget, the searches run as configured.",
+        DefaultValueFactory = _ => AccuracyBudget.Target,
+    };
+
     public readonly Option<int> AreaSamples = new Option<int>("--area-samples")
     {
         Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
@@ -84,6 +91,10 @@ public sealed class RenderOptionSet
         PlannedMiss.Validators.Add(r =>
         {
             if (r.TryGetValue<double?>(out var given) && given is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
+        });
+        Budget.Validators.Add(r =>
+        {
+            if (r.TryGetValue<double>(out var b) && !(b >= 0 && b < 1)) r.AddError($"--budget must lie in [0, 1), got {b}");
         });
         AgreedMiss.Validators.Add(r =>
         {
@@ -103,4 +114,7 @@ public sealed class RenderOptionSet
         parse.GetValue(TieBreak), parse.GetValue(Neighbours), parse.GetValue(ShadowNeighbours), parse.GetValue(Stop), seed,
         parse.GetValue(Lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(AgreedMiss), parse.GetValue(PlannedMiss),
         parse.GetValue(AreaSamples), parse.GetValue(Vpl), RequiredMisses: null);
+
+    /// <summary>The accuracy budget `render` holds (its own option, not in <see cref="All"/>): null for --budget 0.</summary>
+    public double? BudgetShare(ParseResult parse) => parse.GetValue(Budget) is > 0 and var budget ? budget : null;
 }

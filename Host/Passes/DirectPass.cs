@@ -11,6 +11,7 @@ namespace QuantumRayTracing.Passes;
 /// occluded, once an engine's answer is certain, or when the stop rule ends it after a miss. The paper
 /// uses two rounds: the second catches most of QSearch's false negatives. With a lattice plan the
 /// lattice rays go first and the others test their lattice neighbours' occluders before searching.
+/// With an allowance, budget rounds follow until the rays' expected wrong is within it (<see cref="BudgetRounds"/>).
 /// </summary>
 public static class DirectPass
 {
@@ -23,9 +24,12 @@ public static class DirectPass
         var occluders = new int?[shadowRays.Count];
         bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[shadowRays.Count];
+        var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
+        var ledger = new RayLedger(shadowRays.Count, worstMiss, options.Lattice?.Agreed, findEnds: true);
+        void Apply(int i, RayTable table, HitOutcome outcome) => occluders[i] ??= outcome.Primitive;
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
-            occluders[i] ??= outcome.Primitive;
+            Apply(i, table, outcome);
             misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
             return occluders[i] is not null || outcome.Certain || options.Stop?.Continue(misses[i], vouched?[i] == true) == false;
         }
@@ -33,25 +37,37 @@ public static class DirectPass
             ? () => NeighbourGathering.ForOcclusion(geometry, shadowRays, occluders, neighbours)
             : null;
         static HitWindow Window(int i, RayTable table) => table.FullRange;
+        Func<int, int, QSearchSchedule?> schedule = (_, _) => options.Schedule;
+        var settle = ClassicalSettle.Rule(options, search, geometry.Count, worstMiss, (round, i) => schedule(round, i), i => misses[i],
+            i => vouched?[i] == true, findEnds: true);
 
-        if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+        PassMetrics metrics;
+        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, shadowRays.Count, worstMiss, findEnds: true))
+            metrics = IteratedSearch.Run(name, search, geometry, shadowRays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
+        else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+            metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress, gather,
+                settled: i => occluders[i] is not null, schedule: schedule, ledger: ledger, settle: settle);
+        else
         {
-            var metrics = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, progress, gather,
-                settled: i => occluders[i] is not null, schedule: (_, _) => options.Schedule);
-            return ([.. occluders.Select(o => o is not null)], metrics);
+            schedule = (round, i) => round == 0 && vouched![i] ? lattice.Agreed : options.Schedule;
+            metrics = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
+            {
+                vouched = agreed;
+                var inLevel = levelRays.ToHashSet();
+                var (tests, updated) = level == lattice.Levels ? (0L, 0L)
+                    : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
+                var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
+                    level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i), schedule: schedule,
+                    ledger: ledger, settle: settle);
+                return (searched, tests, updated);
+            });
         }
-
-        var phased = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
-        {
-            vouched = agreed;
-            var inLevel = levelRays.ToHashSet();
-            var (tests, updated) = level == lattice.Levels ? (0L, 0L)
-                : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
-            var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
-                level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i),
-                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : options.Schedule);
-            return (searched, tests, updated);
-        });
-        return ([.. occluders.Select(o => o is not null)], phased);
+        // An occluder a neighbour's ray lent is verified: the ray is not wrong, whatever its searches missed.
+        for (var i = 0; i < shadowRays.Count; i++)
+            if (occluders[i] is not null) ledger.MarkCertain(i);
+        if (options.Allowance is { } allowance
+            && BudgetRounds.Run(name, search, geometry, shadowRays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
+            metrics = PassMetrics.Phases(metrics, rounds, 0, 0);
+        return ([.. occluders.Select(o => o is not null)], metrics with { ExpectedWrong = ledger.ExpectedTotal });
     }
 }

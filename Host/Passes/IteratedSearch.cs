@@ -28,11 +28,13 @@ public static class IteratedSearch
     /// <param name="afterRound">Runs after each round (neighbour gathering); returns its classical tests and the rays it changed.</param>
     /// <param name="settled">Rays the pass has finished by other means (a neighbour's occluder), skipped like finished ones.</param>
     /// <param name="schedule">QSearch's schedule for (round, ray), or null for the engine's own.</param>
+    /// <param name="ledger">Records every search, for the pass's expected wrong rays.</param>
+    /// <param name="settle">Whether ray (round, ray) is settled classically this round instead: N tests, a certain answer.</param>
     public static PassMetrics Run(
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, int iterations,
         Func<int, RayTable, HitWindow> window, Func<int, RayTable, HitOutcome, bool> observe, IRenderProgress? progress,
         Func<(long Tests, long Updated)>? afterRound = null, Func<int, bool>? settled = null,
-        Func<int, int, QSearchSchedule?>? schedule = null)
+        Func<int, int, QSearchSchedule?>? schedule = null, RayLedger? ledger = null, Func<int, int, bool>? settle = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
         var clock = Stopwatch.StartNew();
@@ -40,13 +42,13 @@ public static class IteratedSearch
         var kept = new RayTable?[rays.Count];
         var cost = default(SearchCost);
         long tableRows = 0, updated = 0;
-        var tallies = new Dictionary<QSearchSchedule, (long Searches, long Found)>();
-        (long Searches, long Found) engineOwn = default;
+        long settledRays = 0;
         var round = 0;
         for (; round < iterations; round++)
         {
             var active = Enumerable.Range(0, rays.Count).Where(i => !finished[i] && settled?.Invoke(i) != true).ToArray();
             if (active.Length == 0) break;
+            var settledThisRound = 0;
             for (var start = 0; start < active.Length; start += BlockSize)
             {
                 var block = active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
@@ -54,31 +56,43 @@ public static class IteratedSearch
                 Parallel.For(0, block.Length, k => tables[k] = kept[block[k]] ?? RayTable.Build(geometry, rays[block[k]]));
                 tableRows += (long)block.Count(i => kept[i] is null) * geometry.Count;
                 var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]), schedule?.Invoke(round, ray))).ToArray();
-                var outcomes = search.Run(queries);
+                var classically = settle is null ? [] : Enumerable.Range(0, block.Length).Where(k => settle(round, block[k])).ToArray();
+                settledRays += classically.Length;
+                settledThisRound += classically.Length;
+                var outcomes = Outcomes(search, queries, classically);
                 for (var k = 0; k < block.Length; k++)
                 {
                     cost += outcomes[k].Cost;
-                    if (!outcomes[k].Certain)
-                    {
-                        var found = outcomes[k].Primitive is null ? 0 : 1;
-                        if (queries[k].Schedule is { } own)
-                            tallies[own] = (tallies.GetValueOrDefault(own).Searches + 1, tallies.GetValueOrDefault(own).Found + found);
-                        else engineOwn = (engineOwn.Searches + 1, engineOwn.Found + found);
-                    }
+                    ledger?.Record(block[k], queries[k].Schedule, outcomes[k]);
                     finished[block[k]] = observe(block[k], tables[k], outcomes[k]);
                     kept[block[k]] = finished[block[k]] ? null : tables[k].Compact();
                 }
                 progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
             }
-            if (afterRound is null) continue;
+            // Gathering cannot improve answers settled classically: a round that settled every ray it searched skips it.
+            if (afterRound is null || settledThisRound == active.Length) continue;
             var (tests, changed) = afterRound();
             cost += new SearchCost(0, 0, tests, 0);
             updated += changed;
         }
-        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated)
-        {
-            Tallies = [.. tallies.Select(t => new SearchTally(t.Key, t.Value.Searches, t.Value.Found)),
-                .. engineOwn.Searches > 0 ? [new SearchTally(null, engineOwn.Searches, engineOwn.Found)] : Array.Empty<SearchTally>()],
-        };
+        return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated) { SettledRays = settledRays };
     }
+
+    // The engine answers every query but the ones settled classically, which test every primitive (the classical
+    // engine's search, whatever the engine: the same N tests brute force would make).
+    private static HitOutcome[] Outcomes(IHitSearch search, HitQuery[] queries, int[] classically)
+    {
+        if (classically.Length == 0) return [.. search.Run(queries)];
+        var isClassical = new bool[queries.Length];
+        foreach (var k in classically) isClassical[k] = true;
+        var quantum = Enumerable.Range(0, queries.Length).Where(k => !isClassical[k]).ToArray();
+        var outcomes = new HitOutcome[queries.Length];
+        var fromEngine = quantum.Length == 0 ? [] : search.Run([.. quantum.Select(k => queries[k])]);
+        for (var j = 0; j < quantum.Length; j++) outcomes[quantum[j]] = fromEngine[j];
+        var settled = Classical.Run([.. classically.Select(k => queries[k])]);
+        for (var j = 0; j < classically.Length; j++) outcomes[classically[j]] = settled[j];
+        return outcomes;
+    }
+
+    private static readonly ClassicalHitSearch Classical = new();
 }

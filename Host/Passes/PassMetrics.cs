@@ -9,8 +9,11 @@ namespace QuantumRayTracing.Passes;
 /// </summary>
 public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchCost Cost, long TableRows, TimeSpan Elapsed, long UpdatedPixels = 0)
 {
-    /// <summary>The pass's searches by schedule, for the expected share of wrong pixels (see <see cref="SearchTally"/>).</summary>
-    public IReadOnlyList<SearchTally> Tallies { get; init; } = [];
+    /// <summary>Rays settled classically (N tests each, in #C_Int) because their remaining quantum work was expected to cost more.</summary>
+    public long SettledRays { get; init; }
+
+    /// <summary>The rays the pass is expected to leave wrong (<see cref="RayLedger"/>).</summary>
+    public double ExpectedWrong { get; init; }
 
     /// <summary>#Int = #Eval + #C_Int, in the conservative query count.</summary>
     public long IntersectionsConservative => Cost.QueriesConservative + Cost.ClassicalTests;
@@ -31,7 +34,8 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
         first.Cost + second.Cost + new SearchCost(0, 0, tests, 0), first.TableRows + second.TableRows,
         first.Elapsed + second.Elapsed, first.UpdatedPixels + second.UpdatedPixels + updated)
     {
-        Tallies = SearchTally.Join(first.Tallies.Concat(second.Tallies)),
+        SettledRays = first.SettledRays + second.SettledRays,
+        ExpectedWrong = second.ExpectedWrong,
     };
 
     /// <summary>The metrics of several passes together; #It is the largest of theirs.</summary>
@@ -44,6 +48,7 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
         TimeSpan.FromTicks(passes.Sum(p => p.Elapsed.Ticks)),
         passes.Sum(p => p.UpdatedPixels))
     {
-        Tallies = SearchTally.Join(passes.SelectMany(p => p.Tallies)),
+        SettledRays = passes.Sum(p => p.SettledRays),
+        ExpectedWrong = passes.Sum(p => p.ExpectedWrong),
     };
 }

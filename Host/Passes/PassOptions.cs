@@ -8,7 +8,9 @@ namespace QuantumRayTracing.Passes;
 /// set, the layout neighbour gathering uses after each round; <see cref="Stop"/>, when set, the sec. 6.2
 /// termination criterion deciding after each empty search whether a ray is searched again;
 /// <see cref="Lattice"/>, with a layout, traces the coarse lattice of pixels first (see <see cref="LatticePlan"/>);
-/// <see cref="Schedule"/>, when set, replaces the engine's QSearch schedule for every search not given a cheaper one.
+/// <see cref="Schedule"/>, when set, replaces the engine's QSearch schedule for every search not given a cheaper one;
+/// <see cref="Allowance"/>, when set, the wrong rays the pass may leave in expectation, kept by <see cref="BudgetRounds"/>;
+/// <see cref="Settle"/>: rays whose remaining quantum work would cost more than N tests are settled classically (<see cref="ClassicalSettle"/>).
 /// </summary>
 public sealed record PassOptions(
     int Iterations,
@@ -16,7 +18,9 @@ public sealed record PassOptions(
     PixelLayout? Neighbours = null,
     StopRule? Stop = null,
     LatticePlan? Lattice = null,
-    QSearchSchedule? Schedule = null);
+    QSearchSchedule? Schedule = null,
+    double? Allowance = null,
+    bool Settle = false);
 
 /// <summary>
 /// Lattice-first tracing over <see cref="Levels"/> levels: the rays whose pixel coordinates are both

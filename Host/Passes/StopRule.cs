@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Passes;
 /// predicts the result, the search alone must keep the chance of a missed closer hit within the
 /// accuracy budget.
 /// </summary>
-public sealed class StopRule(double missProbability, SeededRandom random, int requiredMisses = 1)
+public sealed class StopRule(double missProbability, SeededRandom random, int requiredMisses = 1, int? budgetMisses = null)
 {
     public double MissProbability { get; } = missProbability is >= 0 and <= 1
         ? missProbability
@@ -19,6 +19,12 @@ public sealed class StopRule(double missProbability, SeededRandom random, int re
 
     /// <summary>Consecutive empty searches a ray not vouched for gets before the probabilistic rule applies (at least 1).</summary>
     public int RequiredMisses { get; } = Math.Max(1, requiredMisses);
+
+    /// <summary>
+    /// The consecutive empty searches an accuracy budget is expected to ask of a ray nobody vouches for, the stop rule's
+    /// or the budget rounds' (at least <see cref="RequiredMisses"/>): what the classical settle weighs against N.
+    /// </summary>
+    public int BudgetMisses { get; } = Math.Max(Math.Max(1, requiredMisses), budgetMisses ?? 1);
 
     /// <summary>
     /// Whether a ray with <paramref name="misses"/> consecutive empty searches is traced again;

@@ -11,6 +11,7 @@ namespace QuantumRayTracing.Passes;
 /// primitives. A ray is finished when the engine's answer is certain (the classical engines test every
 /// primitive, so the classical reference costs one round) or when the stop rule ends it after a miss.
 /// With a lattice plan the lattice rays go first and the others start from their lattice neighbours' hits.
+/// With an allowance, budget rounds follow until the rays' expected wrong is within it (<see cref="BudgetRounds"/>).
 /// </summary>
 public static class TracePass
 {
@@ -21,33 +22,50 @@ public static class TracePass
         var hits = new Hit?[rays.Count];
         bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[rays.Count];
+        var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
+        var ledger = new RayLedger(rays.Count, worstMiss, options.Lattice?.Agreed, findEnds: false);
         HitWindow Window(int i, RayTable table) =>
             Hit.Beyond(rays[i], hits[i], table.Count, options.TieBreak);
-        bool Observe(int i, RayTable table, HitOutcome outcome)
+        void Apply(int i, RayTable table, HitOutcome outcome)
         {
             if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);
+        }
+        bool Observe(int i, RayTable table, HitOutcome outcome)
+        {
+            Apply(i, table, outcome);
             misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
             return outcome.Certain || options.Stop?.Continue(misses[i], vouched?[i] == true) == false;
         }
         Func<(long, long)>? gather = options.Neighbours is { } neighbours
             ? () => NeighbourGathering.ForClosest(geometry, rays, hits, neighbours, options.TieBreak)
             : null;
+        Func<int, int, QSearchSchedule?> schedule = (_, _) => options.Schedule;
+        var settle = ClassicalSettle.Rule(options, search, geometry.Count, worstMiss, (round, i) => schedule(round, i), i => misses[i],
+            i => vouched?[i] == true, findEnds: false);
 
-        if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
-            return (hits, IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
-                schedule: (_, _) => options.Schedule));
-
-        var metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
+        PassMetrics metrics;
+        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, rays.Count, worstMiss, findEnds: false))
+            metrics = IteratedSearch.Run(name, search, geometry, rays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
+        else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
+            metrics = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
+                schedule: schedule, ledger: ledger, settle: settle);
+        else
         {
-            vouched = agreed;
-            var inLevel = levelRays.ToHashSet();
-            var (tests, updated) = level == lattice.Levels ? (0L, 0L)
-                : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
-            var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
-                level == 0 ? gather : null, settled: i => !inLevel.Contains(i),
-                schedule: (round, i) => round == 0 && agreed[i] ? lattice.Agreed : options.Schedule);
-            return (searched, tests, updated);
-        });
-        return (hits, metrics);
+            schedule = (round, i) => round == 0 && vouched![i] ? lattice.Agreed : options.Schedule;
+            metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
+            {
+                vouched = agreed;
+                var inLevel = levelRays.ToHashSet();
+                var (tests, updated) = level == lattice.Levels ? (0L, 0L)
+                    : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
+                var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
+                    level == 0 ? gather : null, settled: i => !inLevel.Contains(i), schedule: schedule, ledger: ledger, settle: settle);
+                return (searched, tests, updated);
+            });
+        }
+        if (options.Allowance is { } allowance
+            && BudgetRounds.Run(name, search, geometry, rays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
+            metrics = PassMetrics.Phases(metrics, rounds, 0, 0);
+        return (hits, metrics with { ExpectedWrong = ledger.ExpectedTotal });
     }
 }

@@ -4,41 +4,33 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Rendering;
 
 /// <summary>
-/// The accuracy budget and the expected number of wrong pixels a render's configuration allows,
-/// estimated from the miss rates of its search paths and how often each path found something. A ray
-/// that still has a closer primitive to find is in an "episode" that ends either with a find or with
-/// the ray stopped, wrong. On a path whose schedule misses with probability m (its worst exact miss for
-/// t = 1..<see cref="RenderOptions.ConfirmationMaxT"/>, the t real scenes have) and which stops a ray after
-/// s consecutive empty searches, an episode ends wrong with probability m^s, so each search that found
-/// something stands for m^s / (1 − m^s) wrong ends. Two paths: the cheap confirmation of rays whose
-/// lattice neighbours agree (s = 1), and the full search everywhere else (s = the stop rule's required
-/// misses). It is an expectation, not a count, and errs high: every wrong ray is taken for a wrong
-/// pixel, and neither neighbour gathering nor the extra rounds the stop rule may grant repair anything.
+/// The accuracy budget and the expected number of wrong pixels a render leaves: the sum over its primary, specular
+/// and shadow passes of each ray's probability of being wrong (<see cref="RayLedger"/>: from the worst miss rates of
+/// its trailing empty searches and how often its path's searches found something). It is an expectation, not a
+/// count, and errs high: every wrong ray is taken for a wrong pixel, and neighbour gathering repairs nothing. With a
+/// budget the passes hold it (<see cref="BudgetRounds"/>): the primary pass may spend half, the specular pass a third of
+/// what is left, the shadow pass the rest. Sampled light (area lights, VPLs) is not held to it: its Monte Carlo
+/// estimate is compared with the converged reference instead.
 /// </summary>
-public sealed record AccuracyBudget(double ExpectedWrongPixels, long Pixels)
+/// <param name="ExpectedWrongPixels">The expected wrong pixels.</param>
+/// <param name="Pixels">The image's pixels.</param>
+/// <param name="Share">The budget the render was held to (a share of pixels), or null when it had none.</param>
+public sealed record AccuracyBudget(double ExpectedWrongPixels, long Pixels, double? Share = null)
 {
     /// <summary>The share of pixels the default pipeline keeps wrong, in expectation, at any size and scene.</summary>
     public const double Target = 0.001;
 
     public double ExpectedShare => Pixels == 0 ? 0 : ExpectedWrongPixels / Pixels;
 
-    /// <param name="passes">The render's passes, with their searches tallied by schedule.</param>
-    /// <param name="search">The engine, for its schedules' exact miss rates (0 for the classical engines).</param>
-    /// <param name="count">N, the scene's primitives.</param>
-    /// <param name="cheap">The cheap confirmation's schedule, or null without a lattice.</param>
-    /// <param name="requiredMisses">The stop rule's required misses for rays not vouched for (1 without termination).</param>
-    /// <param name="pixels">The image's pixels.</param>
-    public static AccuracyBudget From(IEnumerable<PassMetrics> passes, IHitSearch search, int count, QSearchSchedule? cheap, int requiredMisses, long pixels)
-    {
-        var expected = 0.0;
-        foreach (var tally in SearchTally.Join(passes.SelectMany(p => p.Tallies)))
-        {
-            var s = tally.Schedule is not null && tally.Schedule == cheap ? 1 : requiredMisses;
-            var wrongEnd = Math.Pow(WorstMiss(search, count, tally.Schedule), s);
-            expected += wrongEnd >= 1 ? tally.Searches : tally.Found * wrongEnd / (1 - wrongEnd);
-        }
-        return new AccuracyBudget(expected, pixels);
-    }
+    /// <summary>The wrong pixels the budget allows, in expectation.</summary>
+    public double Allowed => (Share ?? 0) * Pixels;
+
+    /// <summary>Held to a budget and still above it: its passes ran out of budget rounds (<see cref="BudgetRounds.MaxRounds"/>).</summary>
+    public bool Exceeded => Share is not null && ExpectedWrongPixels > Allowed * (1 + 1e-9);
+
+    /// <summary>The expectation over the budgeted passes' metrics.</summary>
+    public static AccuracyBudget From(IEnumerable<PassMetrics> budgeted, long pixels, double? share) =>
+        new(budgeted.Sum(p => p.ExpectedWrong), pixels, share);
 
     /// <summary>
     /// The consecutive empty searches a ray with no agreeing lattice neighbours needs before the stop rule

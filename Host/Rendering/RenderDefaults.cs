@@ -39,7 +39,8 @@ public static class RenderDefaults
     /// <summary>The options `render` uses with no options given, at a size.</summary>
     public static RenderOptions CommandLine(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
         Neighbours: Neighbours, ShadowNeighbours: ShadowNeighbours, Stop: Stop,
-        LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss, RequiredMisses: null);
+        LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss, RequiredMisses: null,
+        Budget: AccuracyBudget.Target);
 
     /// <summary>Shadow rays per surface point and area light: the paper's 32 (sec. 7, fig. 13).</summary>
     public const int AreaSamples = 32;
@@ -52,7 +53,7 @@ public static class RenderDefaults
 
     /// <summary>The classical render of the same image: strict ties, no pipeline tricks (it needs none: its answers are certain).</summary>
     public static RenderOptions Reference(RenderOptions options) =>
-        options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off, LatticeLevels = 0 };
+        options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off, LatticeLevels = 0, Budget = null };
 
     /// <summary>
     /// The classical reference with <paramref name="samples"/> area samples and, when the render has

@@ -13,8 +13,10 @@ namespace QuantumRayTracing.Rendering;
 /// 1..<see cref="ConfirmationMaxT"/> hits. <see cref="AreaSamples"/> is S, the shadow rays per surface point
 /// and area light; <see cref="Vpl"/> the virtual point lights per surface point for single-bounce indirect light (0: none).
 /// <see cref="RequiredMisses"/>: the consecutive empty searches a ray its lattice neighbours do not vouch for needs before
-/// the stop rule may end it (1: the paper's rule); null derives it from the accuracy budget (<see cref="AccuracyBudget.RequiredMisses"/>),
-/// as the default pipeline does.
+/// the stop rule may end it (1: the paper's rule); null leaves it to the budget: 1 when <see cref="Budget"/> holds the render (its
+/// rounds search more where needed), else derived from the budget's target (<see cref="AccuracyBudget.RequiredMisses"/>). <see cref="Budget"/>: the share of pixels the render may leave wrong in expectation,
+/// held by budget rounds in the primary, specular and shadow passes, with rays settled classically where that is cheaper
+/// (<see cref="AccuracyBudget"/>); null for none (the searches run as configured, nothing more).
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -31,7 +33,8 @@ public sealed record RenderOptions(
     double? PlannedMiss = null,
     int AreaSamples = RenderDefaults.AreaSamples,
     int Vpl = RenderDefaults.Vpl,
-    int? RequiredMisses = 1)
+    int? RequiredMisses = 1,
+    double? Budget = null)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;

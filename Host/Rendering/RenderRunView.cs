@@ -40,7 +40,11 @@ public static class RenderRunView
         var sameSamples = settings.SamplesLight ? " with the same samples (search error alone)" : "";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
-        AnsiConsole.WriteLine($"wrong pixels: expected {figures.Budget.ExpectedWrongPixels:0.0} ({figures.Budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); budget {AccuracyBudget.Target:P1}");
+        var budget = figures.Budget;
+        AnsiConsole.WriteLine($"wrong pixels: expected {budget.ExpectedWrongPixels:0.0} ({budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); "
+            + (budget.Share is { } share ? $"budget {share:P1}" : "no budget (its searches run as configured)"));
+        if (budget.Exceeded)
+            AnsiConsole.WriteLine($"over budget: the expected wrong pixels stay above {budget.Allowed:0.0} after {BudgetRounds.MaxRounds} budget rounds per pass");
         AnsiConsole.WriteLine(!noise.IsNoiseless
             ? "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)"
             : "(expected: an expectation from each search path's miss rate and finds)");
@@ -70,6 +74,7 @@ public static class RenderRunView
         Row("Int/Ray, conservative", p => p.PerRayConservative.ToString("0.00", CultureInfo.InvariantCulture));
         Row("Int/Ray, paper", p => p.PerRayPaper.ToString("0.00", CultureInfo.InvariantCulture));
         Row("#Cpix (neighbours)", p => N(p.UpdatedPixels));
+        Row("settled classically", p => N(p.SettledRays));
         Row("table rows (eval-rpc)", p => N(p.TableRows));
         Row("wall time", p => $"{p.Elapsed.TotalSeconds:0.00} s");
         table.Caption($"classical reference: {N(classical.Rays)} rays, Int/Ray {classical.PerRayConservative:0.00}");

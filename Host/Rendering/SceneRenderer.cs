@@ -26,15 +26,20 @@ public static class SceneRenderer
         var cameraRays = CameraRays.For(scene.Camera, options.Width, options.Height);
         var plan = PlanPasses(scene, search, options, cameraRays, passes, progress);
         var radiance = new Vec3[cameraRays.Length];
-        var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes);
-        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes);
-        var visible = TraceShadowRays(plan, points, passes);
+        var allowed = (options.Budget ?? 0) * cameraRays.Length;
+        var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
+        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, (allowed - Spent(passes)) / 3);
+        var visible = TraceShadowRays(plan, points, passes, allowed - Spent(passes));
+        var budgeted = passes.ToArray();
         var extra = DirectionalLight(scene, points, visible);
         AddAreaLight(plan, points, extra, passes);
         AddIndirectLight(plan, points, extra, passes);
         Shade(scene, points, visible, extra, radiance);
-        return Result(plan, radiance, passes, cameraRays.Length);
+        return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, cameraRays.Length, options.Budget));
     }
+
+    // The expected wrong rays of the passes so far: the budget left is what they did not spend.
+    private static double Spent(List<PassMetrics> passes) => passes.Sum(p => p.ExpectedWrong);
 
     // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
     private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, Ray[] cameraRays, List<PassMetrics> passes, IRenderProgress? progress)
@@ -52,9 +57,11 @@ public static class SceneRenderer
 
     // Camera rays to their closest hits. Each hit is a surface point carrying 1 − mirror of its pixel; a mirror's
     // reflection, queued for the specular pass, carries the mirror share. A ray that meets an area light first shows the light.
-    private static (List<SurfacePoint> Points, List<SpecularRayWorkItem> Specular) TracePrimaryRays(PassPlan plan, Ray[] cameraRays, Vec3[] radiance, List<PassMetrics> passes)
+    private static (List<SurfacePoint> Points, List<SpecularRayWorkItem> Specular) TracePrimaryRays(PassPlan plan, Ray[] cameraRays, Vec3[] radiance, List<PassMetrics> passes,
+        double allowance)
     {
-        var (hits, metrics) = TracePass.Run("primary", plan.Search, plan.Geometry, cameraRays, plan.Trace(Enumerable.Range(0, cameraRays.Length).ToArray()), plan.Progress);
+        var (hits, metrics) = TracePass.Run("primary", plan.Search, plan.Geometry, cameraRays,
+            plan.Trace(Enumerable.Range(0, cameraRays.Length).ToArray(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
         var points = new List<SurfacePoint>();
         var specular = new List<SpecularRayWorkItem>();
@@ -75,11 +82,12 @@ public static class SceneRenderer
     }
 
     // Mirror reflections to their closest hits: one bounce, so a mirror seen in a mirror shows only its diffuse share.
-    private static SurfacePoints TraceSpecularRays(PassPlan plan, List<SurfacePoint> points, List<SpecularRayWorkItem> queue, Vec3[] radiance, List<PassMetrics> passes)
+    private static SurfacePoints TraceSpecularRays(PassPlan plan, List<SurfacePoint> points, List<SpecularRayWorkItem> queue, Vec3[] radiance, List<PassMetrics> passes,
+        double allowance)
     {
         var primaryCount = points.Count;
         var rays = queue.Select(w => w.Ray).ToArray();
-        var (hits, metrics) = TracePass.Run("specular", plan.Search, plan.Geometry, rays, plan.Trace(queue.Select(w => w.Pixel).ToArray()), plan.Progress);
+        var (hits, metrics) = TracePass.Run("specular", plan.Search, plan.Geometry, rays, plan.Trace(queue.Select(w => w.Pixel).ToArray(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
         for (var k = 0; k < queue.Count; k++)
         {
@@ -101,7 +109,7 @@ public static class SceneRenderer
         scene.AreaLights.Count > 0 ? Emitters.Seen(ray, hit?.Distance ?? double.PositiveInfinity, scene.AreaLights) : null;
 
     // One shadow ray per surface point and point or directional light in front of it; visible[point, light] after the pass.
-    private static bool[,] TraceShadowRays(PassPlan plan, SurfacePoints points, List<PassMetrics> passes)
+    private static bool[,] TraceShadowRays(PassPlan plan, SurfacePoints points, List<PassMetrics> passes, double allowance)
     {
         var scene = plan.Scene;
         var pointLights = scene.Lights.Count;
@@ -116,7 +124,7 @@ public static class SceneRenderer
                 if (ray is not null) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1), ray));
             }
         var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, queue.Select(w => w.Ray).ToList(),
-            plan.Shadow(queue.Select(w => w.Pixel).ToList(), queue.Select(w => w.Channel).ToList()), plan.Progress);
+            plan.Shadow(queue.Select(w => w.Pixel).ToList(), queue.Select(w => w.Channel).ToList(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
         var visible = new bool[points.Count, lightCount];
         for (var i = 0; i < queue.Count; i++) visible[queue[i].Point, queue[i].Light] = !occluded[i];
@@ -162,7 +170,7 @@ public static class SceneRenderer
         }
     }
 
-    private static RenderResult Result(PassPlan plan, Vec3[] radiance, List<PassMetrics> passes, int cameraRays)
+    private static RenderResult Result(PassPlan plan, Vec3[] radiance, List<PassMetrics> passes, AccuracyBudget budget)
     {
         var options = plan.Options;
         var image = RgbImage.FromLinear(options.Width, options.Height, (x, y) =>
@@ -173,7 +181,7 @@ public static class SceneRenderer
         return new RenderResult(image, passes)
         {
             Radiance = radiance,
-            Budget = AccuracyBudget.From(passes, plan.Search, plan.Geometry.Count, plan.Lattice?.Agreed, plan.Stop?.RequiredMisses ?? 1, cameraRays),
+            Budget = budget,
         };
     }
 
@@ -189,8 +197,10 @@ public static class SceneRenderer
             passes.Add(calibration);
         }
         var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper, planned);
-        var required = options.RequiredMisses ?? AccuracyBudget.RequiredMisses(
-            AccuracyBudget.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
-        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop), required);
+        // With a budget its rounds search more where the expectation asks, cheaper than a fixed guard on every ray
+        // (docs/rendering.md): the paper's one miss. Without one, the guard derived from the budget's target.
+        var guard = AccuracyBudget.RequiredMisses(AccuracyBudget.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
+        var required = options.RequiredMisses ?? (options.Budget is not null ? 1 : guard);
+        return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop), required, options.Budget is not null ? guard : null);
     }
 }

@@ -25,5 +25,8 @@ public sealed class ClassicalHitSearch : IHitSearch
     /// <summary>None: every primitive is tested.</summary>
     public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) => 0;
 
+    /// <summary>N: every primitive is tested.</summary>
+    public double EmptySearchCost(int count, QSearchSchedule? schedule = null) => count;
+
     public void Dispose() { }
 }

@@ -21,4 +21,11 @@ public interface IHitSearch : IDisposable
     /// when set, is the QSearch schedule the searches use instead of the engine's own.
     /// </summary>
     double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null);
+
+    /// <summary>
+    /// The expected #Int (conservative count) of one search over <paramref name="count"/> primitives that finds
+    /// nothing: what a further confirming search costs at most, for the classical settle (docs/conventions.md).
+    /// <paramref name="schedule"/>, when set, is the QSearch schedule used instead of the engine's own.
+    /// </summary>
+    double EmptySearchCost(int count, QSearchSchedule? schedule = null);
 }

@@ -36,6 +36,8 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
             ? FalseNegativeRate.Eq10AtBound(Schedule(count), pt)
             : FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt);
 
+    public double EmptySearchCost(int count, QSearchSchedule? schedule = null) => SearchCost.ExpectedEmpty(schedule ?? Schedule(count));
+
     private QSearchSchedule Schedule(int count)
     {
         if (!_schedules.TryGetValue(count, out var schedule))

@@ -48,5 +48,8 @@ public sealed class RandomizedHitSearch(SeededRandom random) : IHitSearch
         FalseNegativeRate.Randomized(count, SampleSize(count),
             paperFormula ? FalseNegativeRate.Uniform(count, Math.Max(1, count - SampleSize(count))) : pt);
 
+    /// <summary>floor(sqrt N) tests, found or not.</summary>
+    public double EmptySearchCost(int count, QSearchSchedule? schedule = null) => SampleSize(count);
+
     public void Dispose() { }
 }

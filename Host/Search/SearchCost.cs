@@ -16,4 +16,12 @@ public readonly record struct SearchCost(long QueriesConservative, long QueriesP
     public static SearchCost operator +(SearchCost a, SearchCost b) =>
         new(a.QueriesConservative + b.QueriesConservative, a.QueriesPaper + b.QueriesPaper,
             a.ClassicalTests + b.ClassicalTests, a.GroverRuns + b.GroverRuns);
+
+    /// <summary>
+    /// The expected #Int (conservative) of a QSearch that finds nothing: every run of the schedule, each with its
+    /// classical test; Algorithm 1 adds the initial sample (a test, no query) and draws r uniformly on 1..M_l.
+    /// </summary>
+    public static double ExpectedEmpty(QSearchSchedule schedule) => schedule.IsFixed
+        ? schedule.Bounds.Sum(r => r + 2.0)
+        : 1 + schedule.Bounds.Sum(m => (m + 1) / 2.0 + 2);
 }

@@ -219,6 +219,8 @@ public sealed class SoakTests : IDisposable
 
         public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) => 0.5;
 
+        public double EmptySearchCost(int count, QSearchSchedule? schedule = null) => inner.EmptySearchCost(count, schedule);
+
         public void Dispose() => inner.Dispose();
     }
 }

@@ -79,6 +79,24 @@ public static class RandomScene
         return SceneLoader.Parse(builder.ToJson(), $"random-{kind.ToString().ToLowerInvariant()}-{seed}");
     }
 
+    /// <summary>
+    /// <paramref name="count"/> rectangles of random orientation, place and size (the scattered kind at any N), for how
+    /// costs grow with N; the same count and seed give the same scene.
+    /// </summary>
+    public static Scene Scattered(int count, ulong seed)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(count, 1);
+        var random = new SeededRandom(seed).Fork(RandomStreams.Scenario).Fork(1000 + (ulong)count);
+        var builder = new SceneBuilder($"{count} random rectangles, seed {seed}", integerBits: 5)
+            .Material("c0", 0.8, 0.3, 0.2)
+            .Material("c1", 0.3, 0.7, 0.3)
+            .Material("c2", 0.25, 0.35, 0.8)
+            .Camera([16, 16, 1], [16, 16, 31], 60)
+            .Light(8 + random.NextInt(0, 16), 8 + random.NextInt(0, 16), 3, 400);
+        for (var k = 0; k < count; k++) Any(builder, random, $"c{random.NextInt(0, 2)}", 1);
+        return SceneLoader.Parse(builder.ToJson(), $"random-{count}-{seed}");
+    }
+
     // One rectangle: two in three face the camera, the rest face ±x or ±y; corners on a grid of 1/steps.
     private static void Any(SceneBuilder builder, SeededRandom random, string colour, int steps)
     {

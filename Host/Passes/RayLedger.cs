@@ -1,0 +1,128 @@
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Passes;
+
+/// <summary>
+/// One pass's record of every ray's searches, for the expected number of rays it leaves wrong. A ray is in an
+/// "episode" until a search finds something (a closer hit; for a shadow ray, an occluder, which ends it); the
+/// last episode ends with the ray's trailing empty searches, each missing with at most its schedule's worst miss
+/// m for t = 1..<see cref="Rendering.RenderOptions.ConfirmationMaxT"/>, so an episode that had something to find
+/// ends wrong with probability at most W = ∏ m. With π the share of episodes that have something to find,
+/// estimated per path (rays first searched with the lattice's cheap confirmation, and all others) from how
+/// often that path's searches found something (with half a find more, so a path that found nothing is not taken
+/// for right), a ray is wrong with probability π W / (1 − π + π W), the posterior given its trailing misses.
+/// Summed over a path before any budget round this is about the path's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
+/// A certain answer (a classical test of every primitive) is never wrong.
+/// </summary>
+public sealed class RayLedger
+{
+    /// <summary>The largest share of episodes taken to have something left: below 1, so trailing misses always count.</summary>
+    public const double PriorCap = 0.99;
+
+    private const int Unsearched = 0, CheapPath = 1, FullPath = 2;
+
+    private readonly double[] _trailing;
+    private readonly int[] _path;
+    private readonly bool[] _done;
+    private readonly long[] _found = new long[3];
+    private readonly double[] _prior = new double[3];
+    private readonly Func<QSearchSchedule?, double> _worstMiss;
+    private readonly QSearchSchedule? _cheap;
+    private readonly bool _findEnds;
+    private bool _frozen;
+
+    /// <param name="rays">The pass's rays.</param>
+    /// <param name="worstMiss">A schedule's worst miss for t ≤ 8 (null: the engine's own schedule).</param>
+    /// <param name="cheap">The lattice's cheap confirmation, whose rays form their own path, or null.</param>
+    /// <param name="findEnds">Whether a find settles the ray (visibility) rather than start a search for a closer one.</param>
+    public RayLedger(int rays, Func<QSearchSchedule?, double> worstMiss, QSearchSchedule? cheap, bool findEnds)
+    {
+        _trailing = Enumerable.Repeat(1.0, rays).ToArray();
+        _path = new int[rays];
+        _done = new bool[rays];
+        _worstMiss = worstMiss;
+        _cheap = cheap;
+        _findEnds = findEnds;
+    }
+
+    /// <summary>A ledger whose worst misses are the engine's, for N = <paramref name="count"/>, computed once per schedule.</summary>
+    public static RayLedger For(int rays, IHitSearch search, int count, QSearchSchedule? cheap, bool findEnds) =>
+        new(rays, WorstMisses(search, count), cheap, findEnds);
+
+    /// <summary>A schedule's worst miss for t ≤ 8 (null: the engine's own), computed once per schedule.</summary>
+    public static Func<QSearchSchedule?, double> WorstMisses(IHitSearch search, int count)
+    {
+        var known = new Dictionary<QSearchSchedule, double>();
+        double? own = null;
+        return schedule =>
+        {
+            if (schedule is null) return own ??= Rendering.AccuracyBudget.WorstMiss(search, count, null);
+            if (!known.TryGetValue(schedule, out var miss)) known[schedule] = miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
+            return miss;
+        };
+    }
+
+    public int Rays => _trailing.Length;
+
+    /// <summary>Takes one search of <paramref name="ray"/> with <paramref name="schedule"/> and its outcome.</summary>
+    public void Record(int ray, QSearchSchedule? schedule, HitOutcome outcome)
+    {
+        if (_path[ray] == Unsearched) _path[ray] = _cheap is not null && schedule == _cheap ? CheapPath : FullPath;
+        if (outcome.Certain)
+        {
+            _done[ray] = true;
+            return;
+        }
+        if (outcome.Primitive is not null)
+        {
+            if (!_frozen) _found[_path[ray]]++;
+            if (_findEnds) _done[ray] = true;
+            else _trailing[ray] = 1;
+        }
+        else _trailing[ray] *= _worstMiss(schedule);
+    }
+
+    /// <summary>Marks <paramref name="ray"/>'s answer as certain: found by a classical test (a neighbour's occluder), never wrong.</summary>
+    public void MarkCertain(int ray) => _done[ray] = true;
+
+    /// <summary>
+    /// Fixes each path's π from the searches so far (the pass's own rounds): later searches (budget rounds) only
+    /// lower the rays' trailing W, they do not change how likely a ray was to have something left.
+    /// </summary>
+    public void Freeze()
+    {
+        if (_frozen) return;
+        foreach (var path in new[] { CheapPath, FullPath })
+        {
+            var open = Enumerable.Range(0, Rays).Where(i => _path[i] == path && !_done[i]).ToArray();
+            var completed = open.Where(i => _trailing[i] < 1).ToArray();
+            var episodes = _found[path] + open.Length;
+            var w = completed.Length == 0 ? 0 : completed.Average(i => _trailing[i]);
+            // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a path whose searches found
+            // nothing has not shown that its rays are right, only that few of them are wrong.
+            _prior[path] = open.Length == 0 ? 0 : Math.Min(PriorCap, (_found[path] + 0.5) / ((episodes + 1) * (1 - w)));
+        }
+        _frozen = true;
+    }
+
+    /// <summary>The probability ray <paramref name="ray"/> is wrong (<see cref="Freeze"/> first).</summary>
+    public double Expected(int ray)
+    {
+        if (!_frozen) throw new InvalidOperationException("freeze the ledger first");
+        if (_path[ray] == Unsearched || _done[ray]) return 0;
+        var (pi, w) = (_prior[_path[ray]], _trailing[ray]);
+        return pi * w / (1 - pi + pi * w);
+    }
+
+    /// <summary>The expected wrong rays of the pass.</summary>
+    public double ExpectedTotal
+    {
+        get
+        {
+            Freeze();
+            var sum = 0.0;
+            for (var i = 0; i < Rays; i++) sum += Expected(i);
+            return sum;
+        }
+    }
+}
