@@ -10,7 +10,7 @@ using QuantumRayTracing.Search;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>
-/// Renders every scene on every engine with every seed through `render`'s default pipeline and checks
+/// Renders every scene on every engine with every seed through `render`'s default pipeline (without the accuracy budget) and checks
 /// each render: it finishes without an exception; its radiance is finite and its PNG decodes back to its
 /// pixels; on the classical engine it equals the classical reference, on the quantum engines it stays
 /// within <see cref="DifferentPixelBound"/> of it; on the seedable engines (analytic, classical,

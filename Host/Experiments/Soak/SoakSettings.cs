@@ -12,7 +12,8 @@ namespace QuantumRayTracing.Experiments;
 /// kept to a bounded time: the gate engine by <see cref="GateBudget"/>, and in the short form (<see
 /// cref="SimulatorsOnSmallestSceneOnly"/>) both of them only on the scene with the fewest primitives. The two
 /// run on <see cref="Pool"/>'s bridges when given (a cluster), else on <see cref="Workers"/> local ones.
-/// Everything else is `render`'s default pipeline (<see cref="RenderDefaults"/>).
+/// Everything else is `render`'s default pipeline (<see cref="RenderDefaults"/>) without the accuracy budget, which settles every ray of
+/// renders this small classically and would leave a seed nothing to change.
 /// </summary>
 public sealed record SoakSettings(
     IReadOnlyList<EngineKind> Engines,
@@ -71,7 +72,7 @@ public sealed record SoakSettings(
     /// <summary>The square image size <paramref name="kind"/> renders at.</summary>
     public int SizeFor(EngineKind kind) => kind.SimulatesOracleGates ? GateSize : Size;
 
-    /// <summary>`render`'s default pipeline at <paramref name="size"/> with <paramref name="seed"/>, as `render --seed` sets it.</summary>
+    /// <summary>`render`'s default pipeline without the accuracy budget at <paramref name="size"/> with <paramref name="seed"/>, as `render --seed --budget 0` sets it.</summary>
     public RenderOptions Options(int size, ulong seed) => new(size, size, Iterations, ShadowIterations, TieBreak.Strict,
         RenderDefaults.Neighbours, RenderDefaults.ShadowNeighbours, RenderDefaults.Stop, seed,
         RenderDefaults.LatticeLevelsFor(size, size), RenderDefaults.AgreedMiss, RenderDefaults.PlannedMiss, AreaSamples, Vpl, RequiredMisses: null);
