@@ -48,7 +48,7 @@ internal sealed record Outcome(int Code, string Output, string Error, Exception?
     public string AssertBadInput(string file, string element, string problem, string? outputDirectory)
     {
         Assert.True(Escaped is null, $"escaped as {Escaped?.GetType().Name}: {Escaped?.Message}");
-        Assert.Equal(CommandLine.BadInput, Code);
+        Assert.Equal(ExitCodes.BadInput, Code);
         var line = AssertOneLine(Error);
         Assert.StartsWith($"error: {file}: {element}", line);
         Assert.Contains(problem, line);
@@ -90,7 +90,7 @@ internal sealed record Outcome(int Code, string Output, string Error, Exception?
     public string AssertBadInput(string subject, string problem)
     {
         Assert.True(Escaped is null, $"escaped as {Escaped?.GetType().Name}: {Escaped?.Message}");
-        Assert.Equal(CommandLine.BadInput, Code);
+        Assert.Equal(ExitCodes.BadInput, Code);
         var line = AssertOneLine(Error);
         Assert.StartsWith("error: ", line);
         Assert.Contains(subject, line);

@@ -18,7 +18,7 @@ public sealed class BenchFullStatePerformanceCommandTests : IDisposable
     {
         var missing = _scratch.File("no-such-cluster.json");
         var (code, error) = Bench(missing);
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.StartsWith($"error: {missing}: cannot read the cluster file", error.Trim());
         Assert.Single(error.Trim().Split('\n'));
         Assert.Equal([], _scratch.FileNames());
@@ -29,7 +29,7 @@ public sealed class BenchFullStatePerformanceCommandTests : IDisposable
     {
         using var cluster = new TestCluster(5); // the file only: no worker started
         var (code, error) = Bench(cluster.ConfigPath);
-        Assert.Equal(CommandLine.QuantumFailure, code);
+        Assert.Equal(ExitCodes.QuantumFailure, code);
         var lines = error.Trim().Split('\n');
         Assert.StartsWith($"error: {cluster.ConfigPath}: no worker of cluster", lines[0]);
         // One line of error; only the hint where to find the details may follow.

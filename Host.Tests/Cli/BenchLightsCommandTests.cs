@@ -34,7 +34,7 @@ public sealed class BenchLightsCommandTests : IDisposable
     {
         var foreign = Path.Combine(_scratch.Path, "lights-area-quantum.png");
         File.WriteAllText(foreign, "someone else's");
-        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(Run("lights.md")).Code);
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(Run("lights.md")).Code);
         Assert.Equal("someone else's", File.ReadAllText(foreign));
         Assert.False(File.Exists(Path.Combine(_scratch.Path, "lights.md")));
     }

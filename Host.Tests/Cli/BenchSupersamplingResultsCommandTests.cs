@@ -16,7 +16,7 @@ public sealed class BenchSupersamplingResultsCommandTests : IDisposable
     {
         File.WriteAllText(_scratch.File(foreign), "someone's file\n");
         var (code, error) = ConsoleCapture.Run("bench", "supersampling-results", "--trials", "10", "-o", _scratch.File("supersampling-results.md"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         // The experiment's first progress line would show the work had started (the writer refuses too, but after it).
         Assert.DoesNotContain("error against queries", error);
         Assert.Contains(foreign, error);

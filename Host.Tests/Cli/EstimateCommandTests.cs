@@ -113,7 +113,7 @@ public sealed class EstimateCommandTests : IDisposable
 
         var notes = Path.ChangeExtension(Path.Combine(_scratch.Path, "notes"), "md");
         File.WriteAllText(notes, "# my notes\n");
-        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run([.. frame, "-o", notes]).Code);
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run([.. frame, "-o", notes]).Code);
         Assert.Equal("# my notes\n", File.ReadAllText(notes));
     }
 
@@ -173,7 +173,7 @@ public sealed class EstimateCommandTests : IDisposable
     {
         var output = Path.ChangeExtension(Path.Combine(_scratch.Path, "notes"), "md");
         File.WriteAllText(output, "# my notes\n");
-        Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]).Code);
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "--bits", "2", "--no-circuit", "-o", output]).Code);
         Assert.Equal("# my notes\n", File.ReadAllText(output));
     }
 }

@@ -21,7 +21,7 @@ public sealed class FailureReportTests : IDisposable
 
         var (code, _, error) = QrtProcess.Run(node, _scratch.Path, Search);
 
-        Assert.Equal(CommandLine.QuantumFailure, code);
+        Assert.Equal(ExitCodes.QuantumFailure, code);
         var lines = Lines(error);
         Assert.StartsWith("error: could not start Node.js", lines[0]);
         Assert.Contains(BridgeOptions.NodeVariable, lines[0]);
@@ -29,7 +29,7 @@ public sealed class FailureReportTests : IDisposable
         Assert.Equal(2, lines.Length);
 
         var verbose = QrtProcess.Run(node, _scratch.Path, [.. Search, "--verbose"]);
-        Assert.Equal(CommandLine.QuantumFailure, verbose.Code);
+        Assert.Equal(ExitCodes.QuantumFailure, verbose.Code);
         Assert.Contains("   at QuantumRayTracing.Bridge.QSharpBridge", verbose.Error);
     }
 
@@ -40,7 +40,7 @@ public sealed class FailureReportTests : IDisposable
 
         var (code, _, error) = QrtProcess.Run(node, _scratch.Path, Search);
 
-        Assert.Equal(CommandLine.QuantumFailure, code);
+        Assert.Equal(ExitCodes.QuantumFailure, code);
         var lines = Lines(error);
         Assert.StartsWith("error: the Node process running the Q# simulator crashed twice", lines[0]);
         Assert.Equal(2, lines.Length);
@@ -66,7 +66,7 @@ public sealed class FailureReportTests : IDisposable
 
         var (code, _, error) = QrtProcess.Run(node, _scratch.Path, Search);
 
-        Assert.Equal(CommandLine.QuantumFailure, code);
+        Assert.Equal(ExitCodes.QuantumFailure, code);
         var lines = Lines(error);
         Assert.Equal("error: Q# failed at src/Search/MeasureGroverSearch.qs:30:13: Error: program failed: simulated failure", lines[0]);
         Assert.Equal(2, lines.Length);
@@ -83,17 +83,17 @@ public sealed class FailureReportTests : IDisposable
         var node = new Dictionary<string, string> { [BridgeOptions.NodeVariable] = _scratch.File("no-such-node") };
 
         var search = QrtProcess.Run(node, _scratch.Path, "search", "-n", "64", "--engine", "fullstate", "--max-qubits", "6");
-        Assert.Equal(CommandLine.BadInput, search.Code);
+        Assert.Equal(ExitCodes.BadInput, search.Code);
         Assert.Equal("error: a search over N = 64 indices needs 10 qubits (2^6 amplitudes, about 5.0 KiB of simulator memory per worker), more than the limit of 6 (--max-qubits; the default is the widest state this machine holds: a WebAssembly heap of at most 4 GiB per worker)",
             Lines(search.Error).Single());
 
         var render = QrtProcess.Run(node, _scratch.Path, "render", "--engine", "fullstate", "--size", "4", "--max-qubits", "9", "-o", "out.png");
-        Assert.Equal(CommandLine.BadInput, render.Code);
+        Assert.Equal(ExitCodes.BadInput, render.Code);
         Assert.Contains("needs 10 qubits", Lines(render.Error).Single());
         Assert.Empty(Directory.EnumerateFileSystemEntries(_scratch.Path));
 
         var supersample = QrtProcess.Run(node, _scratch.Path, "supersample", "--engine", "fullstate", "--size", "2", "--max-qubits", "8", "-o", "out.png");
-        Assert.Equal(CommandLine.BadInput, supersample.Code);
+        Assert.Equal(ExitCodes.BadInput, supersample.Code);
         Assert.Contains("a QSS readout with 4 counter bits over 16 subpixels needs 9 qubits", Lines(supersample.Error).Single());
         Assert.Empty(Directory.EnumerateFileSystemEntries(_scratch.Path));
     }

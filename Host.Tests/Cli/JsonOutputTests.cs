@@ -229,13 +229,13 @@ public sealed partial class JsonOutputTests : IDisposable
     {
         File.WriteAllText(_scratch.File("run.json"), """{"mine": true}""");
         var (code, _, error) = QrtProcess.Run(NoEnvironment, _scratch.Path, "render", "--size", "4", "-o", "r.png", "--json", "run.json");
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.StartsWith("error: run.json: exists and was not written by this program", error, StringComparison.Ordinal);
         Assert.Equal("""{"mine": true}""", File.ReadAllText(_scratch.File("run.json")));
         Assert.Equal(["run.json"], _scratch.FileNames());
 
         var (same, _, sameError) = QrtProcess.Run(NoEnvironment, _scratch.Path, "render", "--size", "4", "-o", "r.json", "--json", "r.json");
-        Assert.Equal(CommandLine.BadInput, same);
+        Assert.Equal(ExitCodes.BadInput, same);
         Assert.Contains("r.json", sameError, StringComparison.Ordinal);
         Assert.Equal(["run.json"], _scratch.FileNames());
     }

@@ -106,7 +106,7 @@ public sealed class RenderCommandTests : IDisposable
     public void MissingDirectoryIsRefusedBeforeRendering()
     {
         var output = Path.Combine(_scratch.Path, "missing", "x.png");
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
         Assert.False(Directory.Exists(Path.Combine(_scratch.Path, "missing")));
         Assert.Empty(_scratch.FileNames());
     }
@@ -118,7 +118,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var output = _scratch.File("x.png");
         File.WriteAllBytes(output, content);
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
         Assert.Equal(content, File.ReadAllBytes(output));
         Assert.Equal(["x.png"], _scratch.FileNames());
     }
@@ -128,7 +128,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var difference = _scratch.File("x-difference.png");
         File.WriteAllText(difference, "someone else's");
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
         Assert.Equal("someone else's", File.ReadAllText(difference));
         Assert.Equal(["x-difference.png"], _scratch.FileNames());
     }
@@ -139,7 +139,7 @@ public sealed class RenderCommandTests : IDisposable
         var scene = _scratch.File("scene.json");
         File.Copy(Scene, scene);
         var before = File.ReadAllBytes(scene);
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "-o", scene]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "-o", scene]));
         Assert.Equal(before, File.ReadAllBytes(scene));
         Assert.Equal(["scene.json"], _scratch.FileNames());
     }
@@ -169,14 +169,14 @@ public sealed class RenderCommandTests : IDisposable
         var scene = _scratch.File("bad.json");
         File.WriteAllText(scene, File.ReadAllText(Scene).Replace("\"max\": [16, 0, 30]", "\"max\": [40, 0, 30]"));
         Assert.NotEqual(File.ReadAllText(Scene), File.ReadAllText(scene));
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
         Assert.Equal(["bad.json"], _scratch.FileNames());
     }
 
     [Fact]
     public void MissingSceneExitsWithTwo()
     {
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", _scratch.File("nowhere.json"), "-e", "classical", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", _scratch.File("nowhere.json"), "-e", "classical", "-o", _scratch.File("x.png")]));
         Assert.Empty(_scratch.FileNames());
     }
 }

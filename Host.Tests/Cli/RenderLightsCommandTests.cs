@@ -56,7 +56,7 @@ public sealed class RenderLightsCommandTests : IDisposable
         var scene = _scratch.File("bad.json");
         File.WriteAllText(scene, File.ReadAllText(AreaScene).Replace("\"radiance\": [6, 6, 6]", "\"radiance\": [6, -6, 6]"));
         Assert.NotEqual(File.ReadAllText(AreaScene), File.ReadAllText(scene));
-        Assert.Equal(CommandLine.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "4", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "4", "-o", _scratch.File("x.png")]));
         Assert.Equal(["bad.json"], _scratch.FileNames());
     }
 }

@@ -199,7 +199,7 @@ public sealed class SupersampleCommandTests : IDisposable
     {
         var input = WriteImage("in.png", 6, 8, (_, _) => (1, 2, 3));
         var (code, error) = Run("supersample", "--image", input, "--subpixels", "4", "-o", _scratch.File("out.png"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Equal($"error: {input}: 6x8 is not a multiple of --subpixels 4 on both sides (4x4 subpixels per output pixel); crop it to 4x8", error.Trim());
         Assert.Equal(["in.png"], _scratch.FileNames());
     }
@@ -210,7 +210,7 @@ public sealed class SupersampleCommandTests : IDisposable
         var input = _scratch.File("bad.png");
         File.WriteAllText(input, "not an image");
         var (code, error) = Run("supersample", "--image", input, "-o", _scratch.File("out.png"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Single(error.Trim().Split('\n'));
         Assert.StartsWith($"error: {input}: not an image file this program reads", error);
         Assert.Equal(["bad.png"], _scratch.FileNames());
@@ -220,7 +220,7 @@ public sealed class SupersampleCommandTests : IDisposable
     public void MissingImageExitsWithTwo()
     {
         var (code, error) = Run("supersample", "--image", _scratch.File("nowhere.png"), "-o", _scratch.File("out.png"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Contains("nowhere.png: no such file", error);
         Assert.Empty(_scratch.FileNames());
     }
@@ -269,7 +269,7 @@ public sealed class SupersampleCommandTests : IDisposable
     {
         var input = WriteImage("in.png", 4, 4, (x, y) => ((byte)x, (byte)y, 0));
         var before = File.ReadAllBytes(input);
-        Assert.Equal(CommandLine.BadInput, Run("supersample", "--image", input, "--subpixels", "2", "-o", input).Code);
+        Assert.Equal(ExitCodes.BadInput, Run("supersample", "--image", input, "--subpixels", "2", "-o", input).Code);
         Assert.Equal(before, File.ReadAllBytes(input));
         Assert.Equal(["in.png"], _scratch.FileNames());
     }
@@ -280,7 +280,7 @@ public sealed class SupersampleCommandTests : IDisposable
         var input = WriteImage("in.png", 4, 4, (x, y) => ((byte)x, (byte)y, 0));
         File.WriteAllText(_scratch.File("out-confidence.png"), "someone else's");
         var (code, error) = Run("supersample", "--image", input, "--subpixels", "2", "-o", _scratch.File("out.png"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Contains("out-confidence.png: exists and was not written by this program", error);
         Assert.Equal("someone else's", File.ReadAllText(_scratch.File("out-confidence.png")));
         Assert.Equal(["in.png", "out-confidence.png"], _scratch.FileNames());
@@ -291,7 +291,7 @@ public sealed class SupersampleCommandTests : IDisposable
     {
         var input = WriteImage("in.png", 17, 16, (_, _) => (5, 5, 5));
         var (code, error) = Run("supersample", "--image", input, "--subpixels", "1", "-e", "fullstate", "-o", _scratch.File("out.png"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Contains($"at most {SupersampleRunSettings.MaxFullStatePixels} output pixels", error);
         Assert.Contains("this input has 272", error);
         Assert.Equal(["in.png"], _scratch.FileNames());
@@ -301,7 +301,7 @@ public sealed class SupersampleCommandTests : IDisposable
     public void SceneRenderAboveTheLargestSideIsRefused()
     {
         var (code, error) = Run("supersample", "--scene", Scene, "--size", "8000", "--subpixels", "2", "-o", _scratch.File("out.png"));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Contains("16000x16000 render", error);
         Assert.Empty(_scratch.FileNames());
     }

@@ -91,7 +91,7 @@ public sealed class ClusterFaultTests
     {
         using var cluster = new TestCluster(5); // the file only: no worker started
         var (code, error) = ConsoleCapture.Run("search", "-n", "8", "-s", "2", "--cluster", cluster.ConfigPath);
-        Assert.Equal(CommandLine.QuantumFailure, code);
+        Assert.Equal(ExitCodes.QuantumFailure, code);
         var first = error.Split('\n')[0];
         Assert.StartsWith($"error: {cluster.ConfigPath}: no worker of cluster", first);
         Assert.Contains("qrt worker --cluster", first);
@@ -103,7 +103,7 @@ public sealed class ClusterFaultTests
         using var cluster = new TestCluster(5);
         File.WriteAllText(cluster.ConfigPath, """{ "clustering": "mesh" }""");
         var (code, error) = ConsoleCapture.Run("search", "-n", "8", "-s", "2", "--cluster", cluster.ConfigPath);
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.Equal($"error: {cluster.ConfigPath}: field 'clustering' is 'mesh'; choose localhost or redis", error.Trim());
     }
 }

@@ -75,7 +75,7 @@ public sealed class QubitGuardTests
         {
             var output = Path.Combine(scratch, "gate.png");
             var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-            Assert.Equal(CommandLine.BadInput, ConsoleCapture.Run(["render", scene, "--engine", "gate", "--size", "2", "--max-qubits", "20", "-o", output]).Code);
+            Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", scene, "--engine", "gate", "--size", "2", "--max-qubits", "20", "-o", output]).Code);
             Assert.Empty(Directory.GetFiles(scratch));
         }
         finally

@@ -9,12 +9,6 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public static class CommandLine
 {
-    /// <summary>Shorthands for the exit codes callers compare most often.</summary>
-    public const int BadInput = ExitCodes.BadInput;
-
-    /// <inheritdoc cref="BadInput"/>
-    public const int QuantumFailure = ExitCodes.QuantumFailure;
-
     /// <summary>Shows stack traces, the bridge's output and the Q# call stack of a failure.</summary>
     public static readonly Option<bool> Verbose = new("--verbose")
     {

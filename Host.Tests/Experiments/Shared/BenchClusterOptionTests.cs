@@ -40,7 +40,7 @@ public sealed class BenchClusterOptionTests(OneWorkerCluster worker) : IClassFix
     {
         var missing = _scratch.File("no-such-cluster.json");
         var (code, error) = ConsoleCapture.Run(Bench(bench, missing));
-        Assert.Equal(CommandLine.BadInput, code);
+        Assert.Equal(ExitCodes.BadInput, code);
         Assert.StartsWith($"error: {missing}: ", error.Trim());
         Assert.DoesNotContain('\n', error.Trim());
         Assert.Equal([], _scratch.FileNames());
@@ -51,7 +51,7 @@ public sealed class BenchClusterOptionTests(OneWorkerCluster worker) : IClassFix
     {
         using var empty = new TestCluster(10);
         var (code, error) = ConsoleCapture.Run(Bench("grover", empty.ConfigPath));
-        Assert.Equal(CommandLine.QuantumFailure, code);
+        Assert.Equal(ExitCodes.QuantumFailure, code);
         // The error's one line, then the hint every Q# failure gets.
         var lines = error.Trim().Split('\n');
         Assert.Equal(2, lines.Length);

@@ -57,7 +57,7 @@ public static class SoakReport
         var report = new Report(Title);
         report.Text($"""
             Every scene file rendered on {string.Join(", ", settings.Engines.Select(EngineFactory.Name))} with seeds {string.Join(" and ", settings.Seeds)}
-            through `render`'s default pipeline without its accuracy budget (at these sizes the budget settles every ray classically, and a seed would have nothing left to change) at {settings.Size}x{settings.Size} pixels (the gate engine at {settings.GateSize}x{settings.GateSize}), {settings.Iterations} TracePass and {settings.ShadowIterations} DirectPass rounds,
+            through `render`'s default pipeline without its accuracy budget (on the smallest scenes, such as qornell-8, the budget settles every ray classically, and a seed would have nothing left to change) at {settings.Size}x{settings.Size} pixels (the gate engine at {settings.GateSize}x{settings.GateSize}), {settings.Iterations} TracePass and {settings.ShadowIterations} DirectPass rounds,
             {settings.AreaSamples} area samples and {settings.Vpl} VPLs per point. Each render is checked: no exception; finite radiance and a PNG that
             decodes to its pixels; the classical engine equal to the classical reference, the quantum engines (analytic, fullstate,
             gate) at most the #Dpix bound from it (the {1 - DifferentPixelBound.FalseFailure:0.######} quantile of Binomial(pixels, {DifferentPixelBound.Rate})); the seedable engines

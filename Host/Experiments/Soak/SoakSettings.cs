@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Experiments;
 /// cref="SimulatorsOnSmallestSceneOnly"/>) both of them only on the scene with the fewest primitives. The two
 /// run on <see cref="Pool"/>'s bridges when given (a cluster), else on <see cref="Workers"/> local ones.
 /// Everything else is `render`'s default pipeline (<see cref="RenderDefaults"/>) without the accuracy budget, which settles every ray of
-/// renders this small classically and would leave a seed nothing to change.
+/// the smallest scenes classically and would leave a seed nothing to change.
 /// </summary>
 public sealed record SoakSettings(
     IReadOnlyList<EngineKind> Engines,
@@ -73,7 +73,8 @@ public sealed record SoakSettings(
     public int SizeFor(EngineKind kind) => kind.SimulatesOracleGates ? GateSize : Size;
 
     /// <summary>`render`'s default pipeline without the accuracy budget at <paramref name="size"/> with <paramref name="seed"/>, as `render --seed --budget 0` sets it.</summary>
-    public RenderOptions Options(int size, ulong seed) => new(size, size, Iterations, ShadowIterations, TieBreak.Strict,
-        RenderDefaults.Neighbours, RenderDefaults.ShadowNeighbours, RenderDefaults.Stop, seed,
-        RenderDefaults.LatticeLevelsFor(size, size), RenderDefaults.AgreedMiss, RenderDefaults.PlannedMiss, AreaSamples, Vpl, RequiredMisses: null);
+    public RenderOptions Options(int size, ulong seed) => RenderDefaults.CommandLine(size, size, seed) with
+    {
+        Iterations = Iterations, ShadowIterations = ShadowIterations, AreaSamples = AreaSamples, Vpl = Vpl, Budget = null,
+    };
 }
