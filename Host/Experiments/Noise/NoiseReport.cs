@@ -209,7 +209,7 @@ public static class NoiseReport
     {
         var states = runs[0].Histogram.Length;
         var floor = UniformSamplingFloor(states, shots);
-        report.Heading("The paper's device experiment (sec. 8, fig. 15) under Pauli noise");
+        report.Heading("The ray tracing paper's device experiment (sec. 8) on the simulator under Pauli noise, beside its fig. 15");
         report.Text(Lines(
             "The paper ran the 4-primitive oracle search on ibmq_paris (27 qubits, quantum volume 32) and on a simulator, 1024 shots each, and",
             "found the device's histogram \"approach an uniform distribution over all possible states\". Ours: `DeviceExperimentScene`, four",

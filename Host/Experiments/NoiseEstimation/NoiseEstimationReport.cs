@@ -64,7 +64,7 @@ public static class NoiseEstimationReport
         var last = NoiseEstimationSettings.StepBudgets[^1];
         var direct = CoinNoiseLocations.GroverOperator(CoinKind.Direct, [0.5]);
         var full = CoinNoiseLocations.GroverOperator(CoinKind.Shifted, FullCoinValues.Select(v => v - 0.25).ToArray());
-        report.Heading("Fig. 10: QCoin at f = ½ against the number of steps k");
+        report.Heading("QCoin at f = ½ against the number of steps k under Pauli noise (our counterpart of the QCoin paper's fig. 10, not a reproduction)");
         report.Text($"""
             QCoin (Algorithm 1) at f = 0.50 with k = 1..7 shift-and-scale steps (step i flips its coin after 2^(i−1) Grover operators, so
             k = 5 reaches 16) and k = 0 (MC: the coin's unamplified flips, under the same noise), {settings.Trials} runs per point, on two coins: the paper's hardware coin, one qubit
@@ -237,7 +237,7 @@ public static class NoiseEstimationReport
     private static void Image(Report report, Result result, NoiseEstimationSettings settings)
     {
         var input = result.ImageInput;
-        report.Heading("Fig. 1 (right): QCoin supersampling under noise");
+        report.Heading("QCoin supersampling under Pauli noise (our counterpart of the QCoin paper's fig. 1 right, a device image)");
         report.Text($"""
             The built-in Qornell box rendered classically at {input.Image.Width}x{input.Image.Height}, each {input.Width}x{input.Height} output pixel the
             mean of 8x8 = 64 subpixels per channel, 240 queries per pixel and channel, QCoin with k = 3 (the paper's fig. 1 choice). The
