@@ -17,6 +17,7 @@
 //   {"id":3,"method":"estimate","expr":"Ns.Op(8)","params":[{}]} -> {"id":3,"ok":true,"result":[<estimator result per params item>]}
 //   {"id":4,"method":"circuit","expr":"Ns.Op(8)","maxOperations":1000000}
 //                                                             -> {"id":4,"ok":true,"result":<circuit summary, see circuit-summary.mjs>}
+//     optional "exposure":true adds the noise exposure of every location (noise-exposure.mjs)
 // A failure replies {"id":N,"ok":false,"error":{"kind":"qsharp"|"request","message":"...","location":"file:line:col","stack":"..."}}.
 // Requests are answered one at a time, in order; simulation runs synchronously inside WebAssembly,
 // so the host enforces time limits by killing this process.
@@ -221,7 +222,7 @@ async function answer(compiler, program, versions, request) {
       } catch (e) {
         return { error: thrownError(e) };
       }
-      const summary = summariseCircuit(group);
+      const summary = summariseCircuit(group, request.exposure === true);
       if (summary.operations > limit) {
         return { error: { kind: "qsharp", message: `the circuit has more than ${limit} operations (maxOperations); ask for a smaller circuit or raise the limit` } };
       }

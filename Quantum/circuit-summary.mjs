@@ -9,6 +9,11 @@
 //
 // The same summary is also given with each CCX replaced by Qiskit's 15-gate definition of ccx
 // (2 H, 6 CX, 4 T and 3 T†), the basis in which Qiskit counts a Toffoli circuit's gates and depth.
+//
+// On request, the native circuit's noise exposure (noise-exposure.mjs): per gate kind, the noise locations at which
+// no Pauli error, only X and Y, or every Pauli can harm the run.
+
+import { noiseExposure } from "./noise-exposure.mjs";
 
 /** Qiskit's CCXGate definition on controls a, b and target c, as [gate, qubits] pairs. */
 function qiskitCcx(a, b, c) {
@@ -25,7 +30,7 @@ function describe(op) {
   const controls = (op.controls ?? []).filter((r) => r.result === undefined).map((r) => r.qubit);
   const targets = op.targets.map((r) => r.qubit);
   const kind = "C".repeat(controls.length) + op.gate + (op.isAdjoint ? "†" : "");
-  return { kind, qubits: [...controls, ...targets], controls, targets, conditional: op.isConditional === true };
+  return { kind, gate: op.gate, qubits: [...controls, ...targets], controls, targets, conditional: op.isConditional === true };
 }
 
 class Tally {
@@ -58,24 +63,30 @@ class Tally {
 
 /**
  * Summarises circuit.circuits[0]: qubits, gates by kind, measurements, resets and depth in the QDK's
- * gate set ("native") and with CCX expanded as Qiskit defines it ("qiskitCcx").
+ * gate set ("native") and with CCX expanded as Qiskit defines it ("qiskitCcx"); with `withExposure` also the noise
+ * exposure ("exposure", noise-exposure.mjs), which takes far longer than the rest.
  */
-export function summariseCircuit(group) {
+export function summariseCircuit(group, withExposure = false) {
   const circuit = group.circuits[0];
   const native = new Tally();
   const expanded = new Tally();
   let operations = 0;
   let conditional = 0;
+  const described = [];
   for (const column of circuit.componentGrid) {
     for (const op of column.components) {
       if (op.children && op.children.length > 0) throw new Error("expected a flat circuit (groupByScope false)");
       operations++;
       const d = describe(op);
+      described.push(d);
       if (d.conditional) conditional++;
       native.add(d.kind, d.qubits, d);
       if (d.kind === "CCX") for (const [gate, qubits] of qiskitCcx(d.controls[0], d.controls[1], d.targets[0])) expanded.add(gate, qubits);
       else expanded.add(d.kind, d.qubits, d);
     }
   }
-  return { qubits: circuit.qubits.length, operations, conditional, native: native.result(), qiskitCcx: expanded.result() };
+  return {
+    qubits: circuit.qubits.length, operations, conditional, native: native.result(), qiskitCcx: expanded.result(),
+    ...(withExposure ? { exposure: noiseExposure(described) } : {}),
+  };
 }

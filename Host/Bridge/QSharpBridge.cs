@@ -62,11 +62,13 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     /// <summary>
     /// The circuit the QDK extracts from a Q# expression (getCircuit, by simulating it once), summarised
     /// by the bridge: qubits, gates by kind, measurements, resets and depth (Quantum/circuit-summary.mjs).
-    /// A circuit of more than <paramref name="maxOperations"/> operations is refused, not truncated.
+    /// A circuit of more than <paramref name="maxOperations"/> operations is refused, not truncated. With
+    /// <paramref name="exposure"/> the summary also holds the noise exposure of every location (Quantum/noise-exposure.mjs).
     /// </summary>
-    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null)
+    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null, bool exposure = false)
     {
         var request = new JsonObject { ["method"] = "circuit", ["expr"] = expression };
+        if (exposure) request["exposure"] = true;
         if (maxOperations is { } limit) request["maxOperations"] = limit;
         return Send(request, timeout).AsObject();
     }

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Noise;
 
 namespace QuantumRayTracing.Cli;
 
@@ -41,16 +42,22 @@ public sealed class BenchNoiseCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
+    private readonly Option<FileInfo> _exposureTable = new("--exposure-table")
+    {
+        Description = "Where the exposure part writes the gate-level oracle's traced noise exposure per circuit shape (the table the analytic engine reads, built in).",
+        DefaultValueFactory = _ => new FileInfo("Host/Noise/gate-level-exposure.json"),
+    };
+
     private readonly Option<string[]> _parts = new("--parts")
     {
-        Description = "Which parts to run and report: model (the approximation against the simulator), supersampling (the same for the coins and QSS readouts), device (fig. 15), render (rendering under noise).",
+        Description = "Which parts to run and report: exposure (the gate-level oracle's noise exposure, traced for every scene of the scene directory up to N = 64), model (the approximation against the simulator), supersampling (the same for the coins and QSS readouts), device (fig. 15), render (rendering under noise).",
         DefaultValueFactory = _ => NoiseBenchSettings.AllParts,
         AllowMultipleArgumentsPerToken = true,
     };
 
     public BenchNoiseCommand() : base("noise", "Hardware noise: the analytic noise model against the noisy simulator, the paper's device experiment (fig. 15), rendering under noise; -o docs/noise.md.")
     {
-        this.AddOptions(_shots, _deviceShots, _size, _confirmSize, _confirmRates, _parts);
+        this.AddOptions(_shots, _deviceShots, _size, _confirmSize, _confirmRates, _parts, _exposureTable);
         _report.AddTo(this, seed: false, cluster: true);
         _confirmRates.Validators.Add(r =>
         {
@@ -72,11 +79,17 @@ public sealed class BenchNoiseCommand : Command
         var scenes = parts.Contains("render")
             ? NoiseBenchSettings.RenderScenes.Select(n => (n, _report.Load(parse, n))).ToArray()
             : [];
+        var exposureScenes = parts.Contains("exposure")
+            ? parse.GetValue(_report.SceneDirectory)!.GetFiles("*.json").OrderBy(f => f.Name, StringComparer.Ordinal)
+                .Select(f => (Path.GetFileNameWithoutExtension(f.Name), Scenes.SceneLoader.Load(f.FullName)))
+                .Where(s => s.Item2.Rectangles.Count <= NoiseBenchSettings.MaxExposurePrimitives).ToArray()
+            : [];
         var settings = new NoiseBenchSettings(parts, parse.GetValue(_shots), parse.GetValue(_deviceShots), scenes, parse.GetValue(_size),
-            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers));
+            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers), ExposureScenes: exposureScenes);
         writer.EnsureWritable(settings.PlotNames());
         using var cluster = _report.StartBridges(parse);
-        var (report, machine) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);
+        var (report, machine, exposures) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);
+        if (exposures.Count > 0) File.WriteAllText(parse.GetValue(_exposureTable)!.FullName, GateLevelExposureTable.ToJson(exposures.Select(e => (e.Key, e.Exposure))).ToJsonString(new() { WriteIndented = true }) + "\n");
         writer.Write(report, ReportFooter.Lines(machine, cluster));
         return ExitCodes.Success;
     }

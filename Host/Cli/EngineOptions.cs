@@ -43,6 +43,13 @@ public sealed class EngineOptions
         HelpName = "P|px,py,pz",
     };
 
+    public readonly Option<string> NoiseOracleOption = new("--noise-oracle")
+    {
+        Description = "Whose circuit the analytic engine's noise model counts: gate-level (default; the oracle a machine would run, which computes every intersection in gates: the circuit `qrt estimate` prices) or lookup (an oracle over intersection answers computed classically beforehand, which leaves out the cost and the noise of computing them).",
+        HelpName = "gate-level|lookup",
+        DefaultValueFactory = _ => NoiseOracle.GateLevel.Name(),
+    };
+
     public readonly Option<double> QubitLoss = new("--qubit-loss")
     {
         Description = "Probability that an operation loses a qubit it touches, in [0, 1); a lost qubit reads Zero. Fullstate engines only. Default 0.",
@@ -75,6 +82,11 @@ public sealed class EngineOptions
             if (!_accepted.Contains(kind))
                 result.AddError($"--engine {EngineFactory.Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(EngineFactory.Name))}");
         });
+        NoiseOracleOption.Validators.Add(result =>
+        {
+            if (result.TryGetValue<string>(out var text) && NoiseOracles.Parse(text ?? "") is null)
+                result.AddError($"--noise-oracle: '{text}' is neither gate-level nor lookup");
+        });
         Noise.Validators.Add(result =>
         {
             if (result.TryGetValue<string?>(out var text) && text is not null && NoiseModel.ParsePauli(text, out var problem) is null)
@@ -85,6 +97,19 @@ public sealed class EngineOptions
             if (result.TryGetValue<double>(out var loss) && NoiseModel.LossProblem(loss) is { } problem)
                 result.AddError($"--qubit-loss: {problem}");
         });
+    }
+
+    /// <summary>
+    /// Whose circuit the analytic engine's noise model counts. Given explicitly to another engine it is a usage error: the
+    /// fullstate engine runs the lookup oracle and the gate engine the gate-level one.
+    /// </summary>
+    public NoiseOracle GetNoiseOracle(ParseResult parse)
+    {
+        var oracle = NoiseOracles.Parse(parse.GetValue(NoiseOracleOption) ?? "") ?? NoiseOracle.GateLevel;
+        var given = parse.GetResult(NoiseOracleOption) is { Implicit: false };
+        if (given && !parse.GetValue(Engine).ApproximatesNoise)
+            throw new UserError($"--noise-oracle: only the analytic engine models the oracle's noise; the fullstate engine runs the lookup oracle and the gate engine the gate-level one");
+        return oracle;
     }
 
     /// <summary>The noise model a parse result asks for (validated at parse time).</summary>

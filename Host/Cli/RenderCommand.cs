@@ -41,6 +41,7 @@ public sealed class RenderCommand : Command
         _render.AddTo(this);
         Options.Add(_render.Budget);
         _engine.AddTo(this);
+        Options.Add(_engine.NoiseOracleOption);
         _qsearch.AddTo(this);
         _json.AddTo(this);
         SetAction(Execute);
@@ -59,7 +60,7 @@ public sealed class RenderCommand : Command
         RenderRunView.PrintPlan(settings, RenderPlan.Of(settings));
         var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress());
         RenderRunView.Print(settings, run);
-        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.NoiseDescription);
         return ExitCodes.Success;
     }
 
@@ -73,6 +74,6 @@ public sealed class RenderCommand : Command
         var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
         return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
             parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
-            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse));
+            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), NoiseOracle: _engine.GetNoiseOracle(parse));
     }
 }

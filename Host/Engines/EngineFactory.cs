@@ -19,9 +19,10 @@ public static class EngineFactory
     /// The ray search of <paramref name="kind"/>: QSearch over its Grover engine, or a classical search. The
     /// noise model is the caller's to check (<see cref="CheckNoise"/>), once per run.
     /// </summary>
-    public static IHitSearch CreateSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null) =>
+    public static IHitSearch CreateSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null,
+        DepolarizingApproximation? approximation = null) =>
         kind.SearchesWithGrover
-            ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates)
+            ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None, approximation), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates)
             : kind == EngineKind.Classical ? new ClassicalHitSearch() : new RandomizedHitSearch(root.Fork(RandomStreams.Engine));
 
     /// <summary>
@@ -35,17 +36,34 @@ public static class EngineFactory
         return Grover(kind, root, workers, maxQubits, pool, noise);
     }
 
-    private static IGroverEngine Grover(EngineKind kind, SeededRandom root, int workers, int? maxQubits, BridgePool? pool, NoiseModel noise) => kind switch
+    private static IGroverEngine Grover(EngineKind kind, SeededRandom root, int workers, int? maxQubits, BridgePool? pool, NoiseModel noise, DepolarizingApproximation? approximation = null) => kind switch
     {
         EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise),
         EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null, noise: noise),
-        EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise),
+        EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise, approximation),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
     };
 
-    /// <summary>The noise model as results on <paramref name="kind"/> name it: the analytic engine adds its approximation.</summary>
-    public static string NoiseDescription(EngineKind kind, NoiseModel noise) =>
-        kind.ApproximatesNoise ? DepolarizingApproximation.Default.Description(noise) : noise.Description();
+    /// <summary>
+    /// The noise model as results on <paramref name="kind"/> name it: the analytic engine adds its approximation and the
+    /// oracle it counts (the lookup oracle's when none is given), the simulators the oracle they run.
+    /// </summary>
+    public static string NoiseDescription(EngineKind kind, NoiseModel noise, DepolarizingApproximation? approximation = null) =>
+        kind.ApproximatesNoise ? (approximation ?? DepolarizingApproximation.Default).Description(noise)
+        : noise.IsNoiseless || !kind.SearchesWithGrover ? noise.Description()
+        : $"{noise.Description()}, on the {(kind.SimulatesOracleGates ? NoiseOracle.GateLevel : NoiseOracle.Lookup).Description()}";
+
+    /// <summary>
+    /// The analytic engine's approximation for renders of <paramref name="scene"/>: over the gate-level oracle's traced
+    /// circuit of the scene's shape, or the lookup oracle's locations. A shape the table lacks is a usage error naming the option.
+    /// </summary>
+    public static DepolarizingApproximation Approximation(NoiseOracle oracle, Scenes.Scene scene)
+    {
+        if (oracle == NoiseOracle.Lookup) return DepolarizingApproximation.Default;
+        var traced = GateLevelExposureTable.For(scene) ?? throw new UserError(
+            $"--noise-oracle gate-level: the gate-level circuit of {scene.Name} ({GateLevelExposure.KeyOf(scene)}) is not among the traced shapes ({string.Join("; ", GateLevelExposureTable.Keys)}); trace it with `qrt bench noise --parts exposure`, or use --noise-oracle lookup");
+        return new DepolarizingApproximation(GateLevel: traced);
+    }
 
     /// <summary>Refuses, as a usage error naming the option, a noise model the engine cannot run.</summary>
     public static void CheckNoise(EngineKind kind, NoiseModel noise)

@@ -14,13 +14,15 @@ namespace QuantumRayTracing.Engines;
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model of the quantum engines; null for the ideal machine.</param>
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+/// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts: the gate-level oracle by default.</param>
 public sealed record EngineSetup(
     EngineKind Kind,
     QSearchOptions Search,
     int Workers = 1,
     int? MaxQubits = null,
     NoiseModel? Noise = null,
-    BridgePool? Pool = null)
+    BridgePool? Pool = null,
+    NoiseOracle NoiseOracle = NoiseOracle.GateLevel)
 {
     public EngineSetup(EngineKind kind) : this(kind, new QSearchOptions()) { }
 

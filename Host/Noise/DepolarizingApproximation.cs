@@ -11,10 +11,13 @@ namespace QuantumRayTracing.Noise;
 /// and measurement, and s the share of Pauli errors that harm the run.
 /// </summary>
 /// <param name="HarmfulShare">
-/// s: by default 2/3, as a Z error on a qubit in a basis state (every auxiliary; the gate-level oracle's flags and phase qubit) does nothing;
-/// fitted per circuit shape against the noisy simulator in docs/noise.md (<c>qrt bench noise</c>).
+/// s of the lookup oracle's closed-form locations: by default 2/3, as a Z error on a qubit in a basis state does nothing.
 /// </param>
-public sealed record DepolarizingApproximation(double HarmfulShare = DepolarizingApproximation.DefaultHarmfulShare)
+/// <param name="GateLevel">
+/// The gate-level oracle's exposure, counted location by location from its circuit (<see cref="NoiseExposure"/>);
+/// when given, a run's Φ comes from it and <paramref name="HarmfulShare"/> plays no part. Null: the lookup oracle.
+/// </param>
+public sealed record DepolarizingApproximation(double HarmfulShare = DepolarizingApproximation.DefaultHarmfulShare, GateLevelExposure? GateLevel = null)
 {
     public const double DefaultHarmfulShare = 2.0 / 3.0;
 
@@ -24,9 +27,13 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     public double Fidelity(NoiseModel noise, double locations) =>
         noise.PerGate <= 0 ? 1.0 : Math.Exp(HarmfulShare * locations * Math.Log(1 - Math.Min(noise.PerGate, 1 - 1e-12)));
 
-    /// <summary>Φ of a lookup-oracle Grover run (<see cref="NoiseLocations"/>).</summary>
+    /// <summary>The oracle whose circuit Φ counts.</summary>
+    public NoiseOracle Oracle => GateLevel is null ? NoiseOracle.Lookup : NoiseOracle.GateLevel;
+
+    /// <summary>Φ of a Grover run: the gate-level circuit's counted exposure, or the lookup oracle's locations (<see cref="NoiseLocations"/>) at share s.</summary>
     public double RunFidelity(NoiseModel noise, GroverRequest request) =>
-        Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
+        GateLevel is { } gate ? gate.RunFidelity(noise, request.Iterations)
+        : Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
 
     /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
     public static double MarkedProbability(int count, int marked, int iterations, double fidelity)
@@ -35,12 +42,14 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
         return fidelity * GroverProbability.OfMarked(count, marked, iterations) + (1 - fidelity) * marked / readable;
     }
 
-    /// <summary>P(marked) of a lookup-oracle Grover run under <paramref name="noise"/>.</summary>
+    /// <summary>P(marked) of a Grover run under <paramref name="noise"/>.</summary>
     public double MarkedProbability(NoiseModel noise, GroverRequest request) =>
         MarkedProbability(request.Marked.Count, request.Marked.MarkedCount, request.Iterations, RunFidelity(noise, request));
 
     /// <summary>How the model is named beside every result it produces.</summary>
     public string Description(NoiseModel noise) =>
         noise.IsNoiseless ? noise.Description()
-        : $"{noise.Description()}, global depolarizing approximation (harmful share {HarmfulShare:0.###} of errors)";
+        : GateLevel is { } gate
+            ? $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.GateLevel.Description()}, {gate.Shape}: harm counted per noise location"
+            : $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.Lookup.Description()}, harmful share {HarmfulShare:0.###} of errors";
 }

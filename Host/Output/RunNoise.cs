@@ -13,10 +13,13 @@ public sealed record RunNoise(string Model, IReadOnlyDictionary<string, double>?
     public static readonly RunNoise None = new("none");
 
     /// <summary>The record of <paramref name="noise"/> on the engine <paramref name="kind"/>: the one place results take it from.</summary>
-    public static RunNoise Of(EngineKind kind, NoiseModel noise)
+    /// <param name="kind">The engine.</param>
+    /// <param name="noise">The noise it ran under.</param>
+    /// <param name="description">The noise model as the run printed it; null: as the engine names it over the lookup oracle.</param>
+    public static RunNoise Of(EngineKind kind, NoiseModel noise, string? description = null)
     {
         if (noise.IsNoiseless) return None;
         var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
-        return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, EngineFactory.NoiseDescription(kind, noise));
+        return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, description ?? EngineFactory.NoiseDescription(kind, noise));
     }
 }

@@ -21,6 +21,7 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model the quantum engines run under; null for the ideal machine.</param>
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+/// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts.</param>
 public sealed record RenderRunSettings(
     Scene Scene,
     RenderOptions Options,
@@ -32,7 +33,8 @@ public sealed record RenderRunSettings(
     int? Workers = null,
     int? MaxQubits = null,
     NoiseModel? Noise = null,
-    BridgePool? Pool = null)
+    BridgePool? Pool = null,
+    NoiseOracle NoiseOracle = NoiseOracle.GateLevel)
 {
     /// <summary>Area lights or VPLs: the render samples light, and a converged reference shows its Monte Carlo noise.</summary>
     public bool SamplesLight => RenderDefaults.SamplesLight(Scene, Options);
@@ -48,7 +50,11 @@ public sealed record RenderRunSettings(
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>The engine as <see cref="Renderer"/> builds it.</summary>
-    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool);
+    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle);
+
+    /// <summary>The noise model as this run's results name it.</summary>
+    public string NoiseDescription => EngineFactory.NoiseDescription(Engine, NoiseModel,
+        Engine.ApproximatesNoise && !NoiseModel.IsNoiseless ? EngineFactory.Approximation(NoiseOracle, Scene) : null);
 
     /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>
     public IReadOnlyList<string> Files => WithReference

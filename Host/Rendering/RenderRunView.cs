@@ -23,7 +23,7 @@ public static class RenderRunView
         }
         AnsiConsole.WriteLine($"modelled per search: {plan.IndexQubits} index qubits + {plan.AuxiliaryQubits} auxiliaries, lookup table of {plan.Primitives} rows x {plan.CoordinateBits} coordinate bits per axis");
         if (settings.Engine.SearchesWithGrover)
-            AnsiConsole.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+            AnsiConsole.WriteLine($"noise model: {settings.NoiseDescription}");
         if (plan.GateRegisters is { } registers)
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
     }
@@ -34,7 +34,7 @@ public static class RenderRunView
         var (kind, noise, figures) = (settings.Engine, settings.NoiseModel, run.Figures);
         var engineName = EngineFactory.Name(kind);
         AnsiConsole.WriteLine($"{engineName} ran on {run.RanOn.Description}");
-        if (!noise.IsNoiseless) engineName = $"{engineName} under {EngineFactory.NoiseDescription(kind, noise)}";
+        if (!noise.IsNoiseless) engineName = $"{engineName} under {settings.NoiseDescription}";
         AnsiConsole.Write(MetricsTable(engineName, figures));
         var error = figures.Error;
         var sameSamples = settings.SamplesLight ? " with the same samples (search error alone)" : "";

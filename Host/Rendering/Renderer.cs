@@ -19,8 +19,9 @@ public static class Renderer
         // clusters, the qubit guard), and the budget's classical settle would take the small images they can simulate
         // off the simulator altogether.
         if (engine.Kind.RunsQSharp) options = options with { Budget = null };
+        var approximation = engine.Kind.ApproximatesNoise && !engine.NoiseModel.IsNoiseless ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
         using var search = EngineFactory.CreateSearch(engine.Kind, new SeededRandom(options.Seed), engine.Workers, engine.Search,
-            engine.MaxQubits, engine.Pool, engine.Noise);
+            engine.MaxQubits, engine.Pool, engine.Noise, approximation);
         return SceneRenderer.Render(scene, search, options, progress);
     }
 }

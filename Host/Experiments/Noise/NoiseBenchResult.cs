@@ -13,4 +13,5 @@ public sealed record NoiseBenchResult(
     CircuitCounts? DeviceSearch,
     CircuitCounts? DeviceOracle,
     IReadOnlyList<NoisyRenderBenchmark.Sweep> Sweeps,
-    IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> Confirmations);
+    IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> Confirmations,
+    IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> Exposures);

@@ -4,7 +4,7 @@ using QuantumRayTracing.Scenes;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>What `bench noise` measures.</summary>
-/// <param name="Parts">Any of "model" (the approximation against the simulator), "supersampling" (the same for the coins and QSS), "device" (fig. 15), "render" (rendering under noise).</param>
+/// <param name="Parts">Any of "exposure" (the gate-level oracle's noise exposure traced per scene shape), "model" (the approximation against the simulator), "supersampling" (the same for the coins and QSS), "device" (fig. 15), "render" (rendering under noise).</param>
 /// <param name="Shots">Runs per case of the model checks.</param>
 /// <param name="DeviceShots">Measurements per error rate of the device experiment.</param>
 /// <param name="Scenes">The scenes rendered under noise, by name.</param>
@@ -13,6 +13,7 @@ namespace QuantumRayTracing.Experiments;
 /// <param name="ConfirmRates">Per-gate error rates of the confirmation renders.</param>
 /// <param name="Workers">Node bridge processes started when <paramref name="Pool"/> is null.</param>
 /// <param name="Pool">Bridges the simulator work runs on (a cluster's), used and not stopped; null starts <paramref name="Workers"/> local ones.</param>
+/// <param name="ExposureScenes">The scenes whose gate-level circuit the exposure part traces, by name.</param>
 public sealed record NoiseBenchSettings(
     IReadOnlySet<string> Parts,
     int Shots,
@@ -22,9 +23,13 @@ public sealed record NoiseBenchSettings(
     int ConfirmSize,
     IReadOnlyList<double> ConfirmRates,
     int Workers,
-    BridgePool? Pool = null)
+    BridgePool? Pool = null,
+    IReadOnlyList<(string Name, Scene Scene)>? ExposureScenes = null)
 {
-    public static readonly string[] AllParts = ["model", "supersampling", "device", "render"];
+    public static readonly string[] AllParts = ["exposure", "model", "supersampling", "device", "render"];
+
+    /// <summary>The largest N whose gate-level circuit the exposure part traces (N = 64 takes about a minute).</summary>
+    public const int MaxExposurePrimitives = 64;
 
     /// <summary>The scenes the render part uses, from the scene directory.</summary>
     public static readonly string[] RenderScenes = ["qornell-64", "depth-complexity-64"];

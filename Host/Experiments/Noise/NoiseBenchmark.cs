@@ -28,11 +28,22 @@ public static class NoiseBenchmark
         IReadOnlyList<SupersamplingCheckRow> supersampling = [];
         IReadOnlyList<DeviceRun> device = [];
         CircuitCounts? deviceSearch = null, deviceOracle = null;
+        var exposures = new List<(string, string, GateLevelExposure)>();
         using (var local = settings.Pool is null ? new BridgePool(settings.Workers) : null)
         {
             var pool = settings.Pool ?? local!;
             var versions = pool.Bridges[0].Version();
             machine = MachineDescription.Describe(versions["qsharp"]?.GetValue<string>(), versions["node"]?.GetValue<string>());
+            if (settings.Parts.Contains("exposure"))
+            {
+                foreach (var group in (settings.ExposureScenes ?? []).GroupBy(s => GateLevelExposure.KeyOf(s.Scene)))
+                {
+                    var (name, scene) = group.First();
+                    Say($"gate-level noise exposure of {group.Key} ({name})");
+                    exposures.Add((group.Key, string.Join(", ", group.Select(g => g.Name)),
+                        GateLevelExposure.Trace(pool, GateLevelExposure.RepresentativeRay(scene), $"{name}'s circuit, {group.Key}")));
+                }
+            }
             if (settings.Parts.Contains("model"))
             {
                 Say($"model check: {CheckRequests().Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
@@ -71,7 +82,7 @@ public static class NoiseBenchmark
                 }
             }
         }
-        return new NoiseBenchResult(machine, clock.Elapsed, check, supersampling, device, deviceSearch, deviceOracle, sweeps, confirmations);
+        return new NoiseBenchResult(machine, clock.Elapsed, check, supersampling, device, deviceSearch, deviceOracle, sweeps, confirmations, exposures);
     }
 
     /// <summary>Gate counts and depth of a Q# call's circuit, as the bridge summarises it.</summary>

@@ -19,6 +19,20 @@ public interface IModelCheckRow
     double Predicted(DepolarizingApproximation approximation);
 }
 
+/// <summary>
+/// The analytic model of a search and the wrong variants it is checked against (negative controls): the ideal formula
+/// (no noise), every location harmful (s = 1), a third of them (s = 1/3), and the model without the factor of the
+/// preparation and measurement (Φ = F^r).
+/// </summary>
+public enum SearchModel
+{
+    Counted,
+    Ideal,
+    ShareOne,
+    ShareThird,
+    WithoutPreparation,
+}
+
 /// <summary>One Grover run measured many times on the noisy simulator, beside what the depolarizing approximation predicts.</summary>
 /// <param name="Oracle">"lookup" or "gate".</param>
 /// <param name="Request">The run: N, the marked set, r, and for the gate oracle the ray's input.</param>
@@ -26,7 +40,8 @@ public interface IModelCheckRow
 /// <param name="Locations">Noise locations of the whole run (preparation, r iterations, measurement).</param>
 /// <param name="Shots">Runs measured.</param>
 /// <param name="Hits">Runs that read a marked index.</param>
-public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseModel Noise, double Locations, int Shots, int Hits) : IModelCheckRow
+/// <param name="Exposure">The gate-level circuit's counted exposure; null for the lookup oracle.</param>
+public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseModel Noise, double Locations, int Shots, int Hits, GateLevelExposure? Exposure = null) : IModelCheckRow
 {
     public int Count => Request.Marked.Count;
 
@@ -36,9 +51,37 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
 
     public double Observed => (double)Hits / Shots;
 
-    /// <summary>P(marked) the approximation predicts with harmful share <paramref name="approximation"/>.</summary>
+    /// <summary>P(marked) the approximation predicts with harmful share <paramref name="approximation"/> over every location.</summary>
     public double Predicted(DepolarizingApproximation approximation) =>
         DepolarizingApproximation.MarkedProbability(Count, Marked, Iterations, approximation.Fidelity(Noise, Locations));
+
+    /// <summary>P(marked) by <paramref name="model"/>: the engines' model (the gate-level circuit's counted harm, the lookup oracle's s = 2/3) or a wrong variant.</summary>
+    public double Predicted(SearchModel model) => DepolarizingApproximation.MarkedProbability(Count, Marked, Iterations, model switch
+    {
+        SearchModel.Ideal => 1.0,
+        SearchModel.ShareOne => new DepolarizingApproximation(1).Fidelity(Noise, Locations),
+        SearchModel.ShareThird => new DepolarizingApproximation(1.0 / 3).Fidelity(Noise, Locations),
+        SearchModel.WithoutPreparation => Exposure is { } e ? Math.Pow(e.Iteration.Fidelity(Noise), Iterations)
+            : DepolarizingApproximation.Default.Fidelity(Noise, Locations - NoiseLocations.PrepareAndMeasure(Count)),
+        _ => Exposure is { } g ? g.Run(Iterations).Fidelity(Noise) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+    });
+
+    /// <summary>Binomial standard error of <see cref="Observed"/> at <paramref name="model"/>'s probability.</summary>
+    public double StandardError(SearchModel model)
+    {
+        var p = Math.Clamp(Predicted(model), 1e-9, 1 - 1e-9);
+        return Math.Sqrt(p * (1 - p) / Shots);
+    }
+
+    /// <summary>Whether the observed share lies within <paramref name="tolerance"/> + z·σ of <paramref name="model"/>.</summary>
+    public bool Accepts(SearchModel model, double tolerance, double z) => Math.Abs(Observed - Predicted(model)) <= tolerance + z * StandardError(model);
+
+    /// <summary>
+    /// Whether <paramref name="model"/> differs from the engines' model on this row by more than both acceptance regions
+    /// together, so that the check can tell them apart.
+    /// </summary>
+    public bool Separates(SearchModel model, double tolerance, double z) =>
+        Math.Abs(Predicted(model) - Predicted(SearchModel.Counted)) > 2 * tolerance + z * (StandardError(model) + StandardError(SearchModel.Counted));
 
     /// <summary>Binomial standard error of <see cref="Observed"/> at the predicted probability.</summary>
     public double StandardError(DepolarizingApproximation approximation)
@@ -59,6 +102,12 @@ public static class NoiseCheck
     public const double Z = 4.8916;
 
     /// <summary>
+    /// The search model's acceptance: |observed − model| ≤ <see cref="SearchTolerance"/> + z·σ. A stated tolerance for what
+    /// the global depolarizing form leaves out, far below the 0.06 of the supersampling circuits.
+    /// </summary>
+    public const double SearchTolerance = 0.02;
+
+    /// <summary>
     /// Runs each request <paramref name="shots"/> times under each noise model and counts marked outcomes. Gate
     /// requests (with an oracle input) run on the gate engine, their locations from the circuit the bridge extracts.
     /// </summary>
@@ -74,35 +123,27 @@ public static class NoiseCheck
                 IGroverEngine engine = request.Oracle is null ? lookup : gate;
                 var measured = engine.Measure(Enumerable.Repeat(request, shots).ToArray());
                 var hits = measured.Count(i => i < request.Marked.Count && request.Marked.Contains(i));
-                rows.Add(new NoiseCheckRow(request.Oracle is null ? "lookup" : "gate", request, noise, Locations(pool, request), shots, hits));
+                var exposure = request.Oracle is { } oracle ? Exposure(pool, oracle) : null;
+                var locations = exposure?.Run(request.Iterations).Locations
+                    ?? NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked);
+                rows.Add(new NoiseCheckRow(request.Oracle is null ? "lookup" : "gate", request, noise, locations, shots, hits, exposure));
             }
         }
         return rows;
     }
 
-    private static readonly Dictionary<string, double> GateIterationCache = [];
+    private static readonly Dictionary<string, GateLevelExposure> ExposureCache = [];
 
-    /// <summary>
-    /// Noise locations of a whole run: closed form for the lookup oracle; for the gate-level oracle the
-    /// bridge's summary of one iteration on fresh registers, cached per circuit (its Z and CZ counts vary
-    /// slightly with the measurement-based uncomputation's outcomes; the first trace is kept).
-    /// </summary>
-    public static double Locations(BridgePool pool, GroverRequest request)
+    /// <summary>The gate-level circuit's counted exposure for <paramref name="oracle"/>, traced once per circuit.</summary>
+    public static GateLevelExposure Exposure(BridgePool pool, Intersection.OracleInput oracle)
     {
-        var outside = NoiseLocations.PrepareAndMeasure(request.Marked.Count);
-        if (request.Oracle is not { } oracle) return outside + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked);
-        var expression = $"{QSharpOperations.ApplyGateGroverIterationOnNewRegisters}({GateEngine.OracleArgument(oracle)})";
-        double perIteration;
-        lock (GateIterationCache)
+        var key = GateEngine.OracleArgument(oracle);
+        lock (ExposureCache)
         {
-            if (!GateIterationCache.TryGetValue(expression, out perIteration))
-            {
-                var traced = 0.0;
-                pool.ForEach([expression], (e, bridge) => traced = NoiseLocations.FromCircuit(bridge.Circuit(e)["native"]!.AsObject()));
-                GateIterationCache[expression] = perIteration = traced;
-            }
+            if (!ExposureCache.TryGetValue(key, out var exposure))
+                ExposureCache[key] = exposure = GateLevelExposure.Trace(pool, oracle, $"N = {oracle.Table.Count}, {oracle.Table.CoordinateBits} coordinate bits");
+            return exposure;
         }
-        return outside + request.Iterations * perIteration;
     }
 
     /// <summary>
