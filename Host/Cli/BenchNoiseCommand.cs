@@ -31,14 +31,14 @@ public sealed class BenchNoiseCommand : Command
 
     private readonly Option<int> _confirmSize = new Option<int>("--confirm-size")
     {
-        Description = "Pixels per side of the renders on the noisy fullstate engine that confirm the analytic model (0 skips them).",
-        DefaultValueFactory = _ => 32,
+        Description = $"Pixels per side of the renders of {NoiseBenchSettings.ConfirmSceneName} on the noisy gate engine that confirm the analytic model (0 skips them).",
+        DefaultValueFactory = _ => 16,
     }.Between(0, 128);
 
     private readonly Option<double[]> _confirmRates = new("--confirm-rates")
     {
-        Description = "Per-gate error rates of the fullstate confirmation renders (space-separated).",
-        DefaultValueFactory = _ => [1e-4, 1e-3, 1e-2],
+        Description = "Per-gate error rates of the gate-engine confirmation renders (space-separated).",
+        DefaultValueFactory = _ => [1e-5, 1e-4, 3e-4, 1e-3],
         AllowMultipleArgumentsPerToken = true,
     };
 
@@ -85,7 +85,8 @@ public sealed class BenchNoiseCommand : Command
                 .Where(s => s.Item2.Rectangles.Count <= NoiseBenchSettings.MaxExposurePrimitives).ToArray()
             : [];
         var settings = new NoiseBenchSettings(parts, parse.GetValue(_shots), parse.GetValue(_deviceShots), scenes, parse.GetValue(_size),
-            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers), ExposureScenes: exposureScenes);
+            parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers), ExposureScenes: exposureScenes,
+            ConfirmScene: parts.Contains("render") && parse.GetValue(_confirmSize) > 0 ? (NoiseBenchSettings.ConfirmSceneName, _report.Load(parse, NoiseBenchSettings.ConfirmSceneName)) : null);
         writer.EnsureWritable(settings.PlotNames());
         using var cluster = _report.StartBridges(parse);
         var (report, machine, exposures) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);

@@ -42,7 +42,7 @@ public class NoiseBenchmarkTests
     {
         // The margin depends only on the rate here: −1 at 1e-3, +1 at 1e-1, so it crosses 0 halfway, at 1e-2.
         var points = new[] { 0, 1e-4, 1e-3, 1e-1 }.Select(p => new NoisyRenderBenchmark.Point(p, null!)).ToArray();
-        var sweep = new NoisyRenderBenchmark.Sweep("test", null!, points, []);
+        var sweep = new NoisyRenderBenchmark.Sweep("test", QuantumRayTracing.Noise.NoiseOracle.GateLevel, null!, points, []);
         Assert.Equal(1e-2, sweep.Crossing(p => p.PerGate switch { 1e-4 => double.NaN, 1e-3 => -1, _ => 1 })!.Value, 9);
         Assert.Null(sweep.Crossing(_ => -1));
         // Already lost at the lowest noisy rate: that rate.

@@ -14,7 +14,7 @@ public sealed class NoiseReportTests
     private static readonly NoiseBenchSettings ModelOnly = new(new HashSet<string> { "model" }, 1000, 16, [], 8, 0, [], 1);
 
     private static NoiseBenchResult Measured(params NoiseCheckRow[] rows) =>
-        new("a test machine", TimeSpan.FromMinutes(1.5), rows, [], [], null, null, [], []);
+        new("a test machine", TimeSpan.FromMinutes(1.5), rows, [], [], null, null, [], [], []);
 
     // N = 16, t = 1, r = 3 at p = 1e-3 over 152 noise locations: Φ = (1 − 1e-3)^(152 · 2/3) = 0.9037 and
     // sin²(7θ) = 0.9613 with sin²θ = 1/16, so the model's P(marked) = 0.9037 · 0.9613 + 0.0963 / 16 = 0.875.
@@ -28,24 +28,24 @@ public sealed class NoiseReportTests
 
         var table = report.Table("model-check");
         Assert.Equal(2, table.Rows.Count);
-        Assert.Equal(["lookup", "16", "1", "3", "1e-3", "152", "0.870", "0.875"], table.Rows[0][..8]);
+        // Harm-weighted L = 152 · 2/3 = 101.
+        Assert.Equal(["lookup", "16", "1", "3", "1e-3", "152", "101", "0.870", "0.875"], table.Rows[0][..9]);
         Assert.Equal("-0.005", table.Cell(table.Rows[0], "gap"));
         Assert.Equal("0.880", table.Cell(table.Rows[1], "observed"));
         Assert.Equal("yes", table.Cell(table.Rows[1], "within δ + zσ"));
         Assert.Equal(NoiseReport.Title, report.Title);
         Assert.Contains(report.Blocks, b => b is ReportPlot { Name: "model-check" });
-        Assert.DoesNotContain(report.Blocks.OfType<ReportText>(), t => t.Markdown.Contains("misses by more than sampling error", StringComparison.Ordinal));
+        Assert.Contains(report.Blocks.OfType<ReportText>(), t => t.Markdown.StartsWith("The model lies within δ + z·σ on all 2 rows.", StringComparison.Ordinal));
     }
 
     [Fact]
     public void ARunTheModelMissesIsNamedInTheParagraphUnderTheTable()
     {
-        // 0.700 is 0.175 below the model's 0.875, σ = sqrt(0.875 · 0.125 / 1000) = 0.0105: about 17σ, and past δ + zσ = 0.111; 0.175 − zσ = 0.123 beyond sampling error.
+        // 0.700 is 0.175 below the model's 0.875, σ = sqrt(0.875 · 0.125 / 1000) = 0.0105: about 17σ, past δ + zσ = 0.02 + 0.051.
         var report = NoiseReport.Of(Measured(Row(700)), ModelOnly);
 
         Assert.Equal("**no**", report.Table("model-check").Cell(report.Table("model-check").Rows[0], "within δ + zσ"));
-        var summary = Assert.Single(report.Blocks.OfType<ReportText>(), t => t.Markdown.StartsWith("Largest gap", StringComparison.Ordinal)).Markdown;
-        Assert.Contains("Largest gap beyond z·σ at s = 2/3: 0.123", summary, StringComparison.Ordinal);
-        Assert.Contains("lookup N = 16, t = 1, r = 3, p = 1e-3: -0.175 (-16.7σ).", summary, StringComparison.Ordinal);
+        var summary = Assert.Single(report.Blocks.OfType<ReportText>(), t => t.Markdown.StartsWith("The model misses", StringComparison.Ordinal)).Markdown;
+        Assert.Contains("The model misses on 1 of 1 rows: lookup N = 16, t = 1, r = 3, p = 1e-3: -0.175 (-16.7σ).", summary, StringComparison.Ordinal);
     }
 }

@@ -103,7 +103,7 @@ public sealed class BenchClusterOptionTests(OneWorkerCluster worker) : IClassFix
     {
         var served = worker.Served;
         var settings = new NoiseBenchSettings(new HashSet<string> { "device" }, 100, 16, [], 8, 0, [], 1, worker.Pool);
-        var (report, machine) = NoiseExperiment.Run(settings, _ => { });
+        var (report, machine, _) = NoiseExperiment.Run(settings, _ => { });
 
         Assert.True(worker.Served > served, "the device experiment's gate-level runs should have gone to the worker");
         var rows = report.Table("device-histograms").Rows;

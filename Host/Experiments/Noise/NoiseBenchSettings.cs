@@ -9,11 +9,12 @@ namespace QuantumRayTracing.Experiments;
 /// <param name="DeviceShots">Measurements per error rate of the device experiment.</param>
 /// <param name="Scenes">The scenes rendered under noise, by name.</param>
 /// <param name="Size">Pixels per side of the analytic renders.</param>
-/// <param name="ConfirmSize">Pixels per side of the fullstate confirmation renders; 0 skips them.</param>
+/// <param name="ConfirmSize">Pixels per side of the confirmation renders on the noisy gate engine; 0 skips them.</param>
 /// <param name="ConfirmRates">Per-gate error rates of the confirmation renders.</param>
 /// <param name="Workers">Node bridge processes started when <paramref name="Pool"/> is null.</param>
 /// <param name="Pool">Bridges the simulator work runs on (a cluster's), used and not stopped; null starts <paramref name="Workers"/> local ones.</param>
 /// <param name="ExposureScenes">The scenes whose gate-level circuit the exposure part traces, by name.</param>
+/// <param name="ConfirmScene">The small scene of the confirmation renders, by name.</param>
 public sealed record NoiseBenchSettings(
     IReadOnlySet<string> Parts,
     int Shots,
@@ -24,8 +25,12 @@ public sealed record NoiseBenchSettings(
     IReadOnlyList<double> ConfirmRates,
     int Workers,
     BridgePool? Pool = null,
-    IReadOnlyList<(string Name, Scene Scene)>? ExposureScenes = null)
+    IReadOnlyList<(string Name, Scene Scene)>? ExposureScenes = null,
+    (string Name, Scene Scene)? ConfirmScene = null)
 {
+    /// <summary>The scene of the confirmation renders: N = 8, small enough for the noisy gate engine.</summary>
+    public const string ConfirmSceneName = "qornell-8";
+
     public static readonly string[] AllParts = ["exposure", "model", "supersampling", "device", "render"];
 
     /// <summary>The largest N whose gate-level circuit the exposure part traces (N = 64 takes about a minute).</summary>
@@ -51,8 +56,11 @@ public sealed record NoiseBenchSettings(
         {
             foreach (var (name, _) in Scenes)
             {
-                yield return $"render-{name}";
-                yield return $"int-per-ray-{name}";
+                foreach (var oracle in new[] { "gate-level", "lookup" })
+                {
+                    yield return $"render-{name}-{oracle}";
+                    yield return $"int-per-ray-{name}-{oracle}";
+                }
             }
         }
     }

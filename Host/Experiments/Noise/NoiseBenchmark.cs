@@ -46,8 +46,10 @@ public static class NoiseBenchmark
             }
             if (settings.Parts.Contains("model"))
             {
-                Say($"model check: {CheckRequests().Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
-                check = NoiseCheck.Measure(pool, CheckRequests(), CheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots);
+                var requests = CheckRequests();
+                Say($"model check: {requests.Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
+                check = [.. NoiseCheck.Measure(pool, requests.Where(r => r.Oracle is null).ToArray(), CheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots),
+                    .. NoiseCheck.Measure(pool, requests.Where(r => r.Oracle is not null).ToArray(), GateCheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots)];
             }
             if (settings.Parts.Contains("supersampling"))
             {
@@ -68,17 +70,15 @@ public static class NoiseBenchmark
         if (settings.Parts.Contains("render"))
         {
             foreach (var (name, scene) in settings.Scenes)
-                sweeps.Add(NoisyRenderBenchmark.Run(name, scene, settings.Size, NoisyRenderBenchmark.Rates, 16, Say));
-            if (settings.ConfirmSize > 0 && settings.Scenes.Count > 0)
+                foreach (var oracle in new[] { NoiseOracle.GateLevel, NoiseOracle.Lookup })
+                    sweeps.Add(NoisyRenderBenchmark.Run(name, scene, oracle, settings.Size, NoisyRenderBenchmark.Rates, 16, Say));
+            if (settings.ConfirmSize > 0 && settings.ConfirmScene is var (small, smallScene))
             {
-                var (name, scene) = settings.Scenes[0];
-                var options = NoisyRenderBenchmark.Defaults(settings.ConfirmSize);
-                var classical = RenderMeasurement.Reference(scene, options);
                 foreach (var p in settings.ConfirmRates)
                 {
-                    Say($"{name} at {settings.ConfirmSize}x{settings.ConfirmSize}: analytic and fullstate, p = {p}");
-                    var analytic = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p)), options, classical);
-                    confirmations.Add((name, p, analytic, NoisyRenderBenchmark.FullState(scene, settings.ConfirmSize, p, settings.Workers, classical, settings.Pool)));
+                    Say($"{small} at {settings.ConfirmSize}x{settings.ConfirmSize}: analytic and gate engine, p = {p}");
+                    var (analytic, gate) = NoisyRenderBenchmark.Confirm(smallScene, settings.ConfirmSize, p, settings.Workers, settings.Pool);
+                    confirmations.Add((small, p, analytic, gate));
                 }
             }
         }
@@ -93,11 +93,14 @@ public static class NoiseBenchmark
         return counts!;
     }
 
-    /// <summary>Per-gate error rates of the model check.</summary>
+    /// <summary>Per-gate error rates of the model check on the lookup oracle.</summary>
     public static readonly double[] CheckRates = [1e-3, 3e-3, 1e-2];
 
+    /// <summary>Per-gate error rates of the model check on the gate-level oracle, whose runs are uniform past 3e-3.</summary>
+    public static readonly double[] GateCheckRates = [1e-4, 3e-4, 1e-3, 3e-3];
+
     /// <summary>
-    /// The model check's runs: the lookup oracle at N = 16 and 64 with t = 1 to 3 and r near and below
+    /// The model check's runs: the lookup oracle at N = 8, 16 and 64 with t = 1 to 3 and r near and below
     /// the optimum, and the gate-level oracle on the device experiment's ray (N = 4, r = 1) and on an
     /// 8-primitive ray (r = 1 and 2).
     /// </summary>
@@ -107,6 +110,7 @@ public static class NoiseBenchmark
         var eight = EightPrimitiveRay();
         return
         [
+            new(new MarkedSet(8, [5]), 2),
             new(new MarkedSet(16, [3]), 3),
             new(new MarkedSet(16, [3, 9]), 2),
             new(new MarkedSet(64, [17]), 2),

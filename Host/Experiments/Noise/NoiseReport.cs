@@ -25,21 +25,20 @@ public static class NoiseReport
     public static Report Of(NoiseBenchResult result, NoiseBenchSettings settings)
     {
         var report = new Report(Title);
-        double[] shares = [.. SearchShares(result.Check).Values, .. SupersamplingShares(result.Supersampling).Values];
-        var model = DepolarizingApproximation.Default;
-        var outside = result.Check.Count(r => Math.Abs(r.Observed - r.Predicted(model)) > ModelTolerance + NoiseCheck.Z * r.StandardError(model))
-            + result.Supersampling.Count(r => Math.Abs(r.Observed - r.Predicted(model)) > ModelTolerance + NoiseCheck.Z * r.StandardError(model));
+        var searchMisses = result.Check.Count(r => !r.Accepts(SearchModel.Counted, NoiseCheck.SearchTolerance, NoiseCheck.Z));
         report.Text(Lines(
-            "What Pauli noise does to the quantum circuits: the analytic noise model of the searches and of the supersampling coins and",
-            $"QSS readouts, checked against the noisy simulator {(outside == 0 ? "within" : $"({outside} rows outside)")} |gap| ≤ {F(ModelTolerance, "0.00")} + z·σ at s = 2/3, the harmful share the engines use"
-                + (shares.Length == 0 ? ";" : $" (fitted per circuit shape, s ranges from {F(shares.Min(), "0.000")} to {F(shares.Max(), "0.000")});"),
-            "the ray tracing paper's device experiment (sec. 8, fig. 15) reproduced on the simulator; and what noise costs a render with",
-            "the lookup oracle, whose circuit has far fewer noise locations than the gate-level oracle a machine would run."));
+            "What Pauli noise does to the quantum circuits: the noise locations of the gate-level oracle a machine would run, and which of",
+            "them can harm a search; the analytic noise model of the searches checked against the noisy simulator within |gap| ≤ "
+                + $"{F(NoiseCheck.SearchTolerance, "0.00")} + z·σ{(result.Check.Count == 0 ? "" : $" ({searchMisses} of {result.Check.Count} rows outside)")}, and of the",
+            $"supersampling coins and QSS readouts within {F(ModelTolerance, "0.00")} + z·σ; the ray tracing paper's device experiment (sec. 8, fig. 15)",
+            "reproduced on the simulator; and what noise costs a render on the gate-level oracle, beside the lookup oracle (intersections",
+            "computed classically beforehand), whose circuit has far fewer noise locations."));
         report.Text($"Measured in {F(result.Elapsed.TotalMinutes, "0.0")} min; the machine and the command that regenerates this page are named at its end.");
+        if (settings.Parts.Contains("exposure")) Exposure(report, result.Exposures);
         if (settings.Parts.Contains("model")) Model(report, result.Check, settings.Shots);
         if (settings.Parts.Contains("supersampling")) SupersamplingCheck(report, result.Supersampling, settings.Shots);
         if (settings.Parts.Contains("device")) Device(report, result.Device, settings.DeviceShots, result.DeviceSearch!, result.DeviceOracle!, result.Machine);
-        if (settings.Parts.Contains("render")) Render(report, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize, result.Check);
+        if (settings.Parts.Contains("render")) Render(report, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize);
         return report;
     }
 
@@ -52,9 +51,19 @@ public static class NoiseReport
 
     private static string Rate(double p) => p == 0 ? "0" : p.ToString("0.#e0", CultureInfo.InvariantCulture);
 
+    /// <summary>The wrong variants of the search model the check must reject, with their names in the tables.</summary>
+    public static readonly (SearchModel Model, string Name)[] NegativeControls =
+    [
+        (SearchModel.Ideal, "ideal formula"),
+        (SearchModel.ShareOne, "s = 1"),
+        (SearchModel.ShareThird, "s = 1/3"),
+        (SearchModel.WithoutPreparation, "without F₀"),
+    ];
+
     public static void Model(Report report, IReadOnlyList<NoiseCheckRow> rows, int shots)
     {
-        var model = DepolarizingApproximation.Default;
+        const SearchModel model = SearchModel.Counted;
+        var (tolerance, z) = (NoiseCheck.SearchTolerance, NoiseCheck.Z);
         report.Heading("The analytic noise model against the noisy simulator");
         report.Text(Lines(
             "**Noise model.** The QDK's noisy simulator (`runWithNoise`): after every gate and before every measurement, on each",
@@ -62,65 +71,64 @@ public static class NoiseReport
         report.Text(Lines(
             "**The approximation** (`DepolarizingApproximation`, used by `--engine analytic --noise p`): with probability Φ a Grover run",
             "is the ideal one, otherwise it reads a uniform index of its n-qubit register:",
-            "P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n, with Φ = (1 − p)^(s · L). L counts the run's noise locations (one per",
-            "qubit per operation: a CCX is 3, a measurement 1): for the lookup oracle in closed form (`NoiseLocations`, checked against",
-            "the circuits the QDK extracts), for the gate-level oracle from the extracted circuit of one iteration. Per iteration that",
-            "is F = (1 − p)^(s · L_iteration), the F^r of the usual depolarizing form, with the preparation and measurement as one more factor.",
-            $"s is the share of errors that harm the run: {F(model.HarmfulShare, "0.###")} by default, since a Z error on a qubit in a basis state",
-            "(every auxiliary; the gate-level oracle's flags and phase qubit) changes nothing. Where that misses, s is fitted per circuit shape below."));
+            "P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n, with Φ = F₀ · F^r: F per Grover iteration, F₀ for the preparation and",
+            "the measurement. A noise location is one qubit of one operation (a CCX is 3, a measurement 1).",
+            "- Gate-level oracle (the default, `--noise-oracle gate-level`): the harm is counted location by location from the extracted circuit",
+            "  (the rules below): Φ = Π (1 − the summed probabilities of the Paulis harmful at each location), F from one iteration",
+            "  (the circuit with two iterations less the one with one), F₀ from the circuit with none. No share is fitted.",
+            "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out):",
+            "  Φ = (1 − p)^(s · L) over its closed-form locations L (`NoiseLocations`) with s = 2/3, as before."));
+        report.Text(Lines(
+            "**Counting rule** (Quantum/noise-exposure.mjs). The circuit's state is followed classically as branches: each qubit's value as a",
+            "truth table over the qubits put into superposition (the index register), X, CX and CCX acting on the tables, diagonal gates leaving them.",
+            "At each location of qubit q:",
+            "- every Pauli is harmless when q's next operation is a reset;",
+            "- Z is harmless when q is in a computational basis state there (the same bit on every branch, so a Z only multiplies the state",
+            "  by ±1), or when the Z reaches a measurement or reset through nothing but diagonal gates and control roles; otherwise harmful;",
+            "- X is followed through the rest of the circuit as a flipped bit on every branch beside the error-free run: harmless when the",
+            "  difference is uncomputed, ends as the same flip on every branch of a qubit nothing reads, or reaches the H of a measurement-based",
+            "  uncomputation as such a flip (there it becomes a Z the measurement does not see); harmful when it changes a phase on some",
+            "  branches and not others, a measured value, or an index qubit at the diffusion's H;",
+            "- Y is harmful when X or Z is.",
+            "Every judgement errs towards harmful: the tables track the support of the state, not its amplitudes, and a harmful error is",
+            "assumed to leave the register uniformly mixed."));
         report.Text(Lines(
             $"**The check.** Each run measured {shots} times on the noisy full-state simulator (lookup oracle: fullstate engine; gate-level",
             "oracle: gate engine); the observed share of marked outcomes against the model. Acceptance: |observed − model| ≤ δ + z·σ with",
-            $"σ the binomial standard error at the model's probability, z = {F(NoiseCheck.Z, "0.00")} (two-sided false-failure 1e-6 per comparison) and",
-            $"δ = {F(ModelTolerance, "0.00")} the approximation's own tolerance. The gap column is observed − model (s = 2/3); gap/σ shows how far past",
-            "sampling error it is."));
-        var check = new TextTable("model-check", ["oracle", "N", "t", "r", "p", "L", "observed", "model, s = 2/3", "gap", "gap/σ", "within δ + zσ", "model, fitted s"]);
-        var shapes = SearchShares(rows);
+            $"δ = {F(tolerance, "0.00")} the approximation's stated tolerance, σ the binomial standard error at the model's probability and z = {F(z, "0.00")}",
+            "(two-sided false-failure 1e-6 per comparison). The negative controls, each a wrong variant, must fall outside the same region",
+            "on every row where they differ from the model by more than both regions together (bold: rejected there)."));
+        var check = new TextTable("model-check", ["oracle", "N", "t", "r", "p", "L", "harm-weighted L", "observed", "model", "gap", "gap/σ", "within δ + zσ",
+            .. NegativeControls.Select(c => c.Name)]);
         foreach (var r in rows)
         {
             var predicted = r.Predicted(model);
             var gap = r.Observed - predicted;
-            var sigma = r.StandardError(model);
-            var fitted = r.Predicted(new DepolarizingApproximation(shapes[(r.Oracle, r.Count)]));
-            check.Row(r.Oracle, I(r.Count), I(r.Marked), I(r.Iterations), Rate(r.Noise.PerGate), F(r.Locations, "0"), F(r.Observed, "0.000"), F(predicted, "0.000"),
-                F(gap, "+0.000;-0.000;0.000"), F(gap / sigma, "+0.0;-0.0;0.0"), Math.Abs(gap) <= ModelTolerance + NoiseCheck.Z * sigma ? "yes" : "**no**", F(fitted, "0.000"));
+            var harm = r.Exposure is { } e ? e.Run(r.Iterations).HarmWeight : 2.0 / 3 * r.Locations;
+            check.Row([r.Oracle, I(r.Count), I(r.Marked), I(r.Iterations), Rate(r.Noise.PerGate), F(r.Locations, "0"), F(harm, "0"), F(r.Observed, "0.000"), F(predicted, "0.000"),
+                F(gap, "+0.000;-0.000;0.000"), F(gap / r.StandardError(model), "+0.0;-0.0;0.0"), r.Accepts(model, tolerance, z) ? "yes" : "**no**",
+                .. NegativeControls.Select(c => r.Separates(c.Model, tolerance, z) && !r.Accepts(c.Model, tolerance, z) ? $"**{F(r.Predicted(c.Model), "0.000")}**" : F(r.Predicted(c.Model), "0.000"))]);
         }
         report.Table(check);
-        var worst = rows.Max(r => Math.Abs(r.Observed - r.Predicted(model)) - NoiseCheck.Z * r.StandardError(model));
-        var summary = new List<string> { $"Largest gap beyond z·σ at s = 2/3: {F(Math.Max(0, worst), "0.000")} (the tolerance δ is {F(ModelTolerance, "0.00")})." };
-        var beyond = rows.Where(r => Math.Abs(r.Observed - r.Predicted(model)) > NoiseCheck.Z * r.StandardError(model)).ToArray();
-        if (beyond.Length > 0)
-        {
-            summary.Add("Where the approximation misses by more than sampling error (|gap| > z·σ), it is the approximation's own error, and the");
-            summary.Add("fitted s of that shape below is the model to use: " + string.Join("; ", beyond.Select(r =>
+        var summary = new List<string>();
+        var misses = rows.Where(r => !r.Accepts(model, tolerance, z)).ToArray();
+        summary.Add(misses.Length == 0
+            ? $"The model lies within δ + z·σ on all {rows.Count} rows."
+            : $"The model misses on {misses.Length} of {rows.Count} rows: " + string.Join("; ", misses.Select(r =>
                 $"{r.Oracle} N = {r.Count}, t = {r.Marked}, r = {r.Iterations}, p = {Rate(r.Noise.PerGate)}: {F(r.Observed - r.Predicted(model), "+0.000;-0.000")} ({F((r.Observed - r.Predicted(model)) / r.StandardError(model), "+0.0;-0.0")}σ)")) + ".");
-            if (beyond.Any(r => r.Oracle == "gate"))
-            {
-                summary.Add("On the gate-level oracle most qubits are ancillas that sit in basis states most of the time; how many of their errors reach");
-                summary.Add("the index register depends on the circuit, which one s per circuit shape captures and one global s does not.");
-            }
+        foreach (var (control, name) in NegativeControls)
+        {
+            var separated = rows.Where(r => r.Separates(control, tolerance, z)).ToArray();
+            var rejected = separated.Count(r => !r.Accepts(control, tolerance, z));
+            summary.Add($"- {name}: differs from the model on {separated.Length} rows, rejected on {rejected} of them.");
         }
         report.Text(Lines([.. summary]));
-        report.Text("**Fitted s per circuit shape** (least squares in units of σ over the shape's rows; F per iteration = (1 − p)^(s · L_iteration)):");
-        var fits = new TextTable("model-fit", ["oracle", "N", "fitted s", "L per iteration", "F at p = 1e-3", "F at p = 1e-2"]);
-        foreach (var ((oracle, count), s) in shapes)
-        {
-            var perIteration = PerIteration(rows, oracle, count);
-            var approximation = new DepolarizingApproximation(s);
-            fits.Row(oracle, I(count), F(s, "0.000"), F(perIteration, "0"), F(approximation.Fidelity(NoiseModel.Depolarizing(1e-3), perIteration), "0.000"),
-                F(approximation.Fidelity(NoiseModel.Depolarizing(1e-2), perIteration), "0.000"));
-        }
-        report.Table(fits);
         var series = rows.GroupBy(r => $"{r.Oracle} N={r.Count} t={r.Marked} r={r.Iterations}")
             .Select(g => (g.Key, (IReadOnlyList<(double, double)>)g.Select(r => (r.Noise.PerGate, r.Observed - r.Predicted(model))).ToArray()))
             .ToArray();
-        report.Plot("model-check", NoisePlots.LogX("Observed - model P(marked), depolarizing Pauli noise p per gate (s = 2/3)", "per-gate error p", "observed - model", series, 0, "model"),
+        report.Plot("model-check", NoisePlots.LogX("Observed - model P(marked), depolarizing Pauli noise p per gate", "per-gate error p", "observed - model", series, 0, "model"),
             "Gap between the noisy simulator and the depolarizing approximation against the per-gate error");
     }
-
-    /// <summary>The harmful share s fitted per search circuit shape (oracle, N).</summary>
-    private static Dictionary<(string Oracle, int Count), double> SearchShares(IReadOnlyList<NoiseCheckRow> rows) =>
-        rows.GroupBy(r => (r.Oracle, r.Count)).ToDictionary(g => g.Key, g => NoiseCheck.FitHarmfulShare(g.ToArray()));
 
     /// <summary>The harmful share s fitted per coin or QSS shape; the direct coin's model has none to fit (it is exact).</summary>
     private static Dictionary<string, double> SupersamplingShares(IReadOnlyList<SupersamplingCheckRow> rows) =>
@@ -259,35 +267,35 @@ public static class NoiseReport
     }
 
     /// <summary>
-    /// Rendering under noise, with the lookup oracle's noise locations; <paramref name="check"/>, the search model check's rows,
-    /// gives both oracles' locations per iteration to compare (none: not quoted).
+    /// Rendering under noise on the gate-level oracle's model and beside it the lookup oracle's, the thresholds of each, and the
+    /// confirmations on the noisy gate engine.
     /// </summary>
-    public static void Render(Report report, IReadOnlyList<NoisyRenderBenchmark.Sweep> sweeps, int size, IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> confirmations, int confirmSize,
-        IReadOnlyList<NoiseCheckRow> check)
+    public static void Render(Report report, IReadOnlyList<NoisyRenderBenchmark.Sweep> sweeps, int size, IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> confirmations, int confirmSize)
     {
-        var model = DepolarizingApproximation.Default;
-        report.Heading("Rendering under noise, with the lookup oracle");
+        report.Heading("Rendering under noise");
         var pipeline = NoisyRenderBenchmark.Defaults(size);
         report.Text(Lines(
             $"The default pipeline of `render` (neighbours, exact termination, a lattice of {pipeline.LatticeLevels} levels from the image size, agreed-miss {F(pipeline.AgreedMiss, "0.###")}, up to {pipeline.Iterations} rounds,",
-            $"and the misses the accuracy budget asks of rays no lattice neighbour vouches for) at {size}x{size} on the",
-            $"analytic engine under the global depolarizing approximation of depolarizing Pauli noise p per gate and qubit (harmful share {F(model.HarmfulShare, "0.###")}),",
-            "seed 1. The analytic engine counts the noise locations of the lookup oracle, an oracle built from intersection answers",
-            "computed classically beforehand" + (OracleSizes(check) is { } sizes ? $": {sizes}." : "."),
-            "A machine would run the gate-level oracle, so every threshold and result in this section belongs to the lookup oracle;",
-            "on the gate-level circuit the thresholds would be far lower.",
+            $"and the misses the accuracy budget asks of rays no lattice neighbour vouches for) at {size}x{size} on the analytic engine under",
+            "the global depolarizing approximation of depolarizing Pauli noise p per gate and qubit, seed 1, once for each oracle's circuit:",
+            "- **gate-level oracle** (`--noise-oracle gate-level`, the default): the circuit a machine would run and `qrt estimate` prices, its harm",
+            "  counted location by location (the exposure table above; scenes of the same N and coordinate bits share one traced circuit);",
+            "- **lookup oracle** (`--noise-oracle lookup`): an oracle over intersection answers computed classically beforehand, which leaves out",
+            "  the cost and the noise of computing them; s = 2/3 over its closed-form locations.",
             "Int/Ray in the conservative count (r + 1 per Grover run, every classical test counted); NRMSE against the classical",
             "render of the same options (RMS of 8-bit channel differences over the reference's range); #Dpix pixels whose 8-bit colour differs.",
             "QSearch verifies every candidate, so noise never makes a false hit: it lowers the success probability of each Grover run,",
             "which costs queries, and it makes the termination rule and the lattice's cheap confirmations (which assume the ideal miss",
             "rates) stop searches that would have hit, which costs pixels. Wall time: the fastest of three identical renders (same seed)."));
+        var thresholds = new TextTable("thresholds", ["scene", "oracle", "(a) loses to brute force in Int/Ray at p ≈", "(b) loses to the randomized renderer at equal Int/Ray at p ≈"]);
         foreach (var sweep in sweeps)
         {
             var classicalPerRay = sweep.Classical.Result.Total.PerRayConservative;
             var ideal = sweep.Quantum.First(q => q.PerGate == 0).Measurement;
-            report.Heading(sweep.Scene, 3);
-            report.Text($"Classical brute force: Int/Ray {F(classicalPerRay, "0.00")}.");
-            var quantum = new TextTable($"render-{sweep.Scene}", ["p per gate", "Int/Ray", "NRMSE", "#Dpix", "randomized NRMSE at equal Int/Ray", "wall time", "vs noiseless"]);
+            var oracle = sweep.Oracle.Name();
+            report.Heading($"{sweep.Scene}, {oracle} oracle", 3);
+            report.Text($"Classical brute force: Int/Ray {F(classicalPerRay, "0.00")}. Noise model: the {sweep.Oracle.Description()}.");
+            var quantum = new TextTable($"render-{sweep.Scene}-{oracle}", ["p per gate", "Int/Ray", "NRMSE", "#Dpix", "randomized NRMSE at equal Int/Ray", "wall time", "vs noiseless"]);
             foreach (var q in sweep.Quantum)
             {
                 var m = q.Measurement;
@@ -296,40 +304,51 @@ public static class NoiseReport
                     randomized is { } r ? F(r * 100, "0.00") + " %" : "outside its range", F(m.WallTime.TotalSeconds, "0.00") + " s", F(m.WallTime / ideal.WallTime, "0.0") + "x");
             }
             report.Table(quantum);
-            report.Text(Lines(
-                "The randomized renderer (floor(sqrt N) random primitives per ray and pass; the same pipeline without the termination rule,",
-                "which would stop its rays after a miss or two and cap its Int/Ray below the quantum one) at 1 … " + sweep.Randomized.Count + " passes; its NRMSE at the",
-                "quantum Int/Ray above is interpolated linearly between these:"));
-            var randomizedTable = new TextTable($"randomized-{sweep.Scene}", ["passes", "Int/Ray", "NRMSE", "#Dpix"]);
-            foreach (var (passes, m) in sweep.Randomized)
-                randomizedTable.Row(I(passes), F(m.Result.Total.PerRayConservative, "0.00"), F(m.Error.Nrmse * 100, "0.00") + " %", I(m.Error.DifferentPixels));
-            report.Table(randomizedTable);
             var a = sweep.Crossing(q => q.Measurement.Result.Total.PerRayConservative - classicalPerRay);
             var b = sweep.Crossing(q => sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is { } r ? q.Measurement.Error.Nrmse - r : double.NaN);
             var highest = Rate(sweep.Quantum.Max(q => q.PerGate));
+            var aText = a is { } x ? Rate(x) : $"none up to {highest}";
+            var bText = b is { } y ? Rate(y) : $"none up to {highest}";
+            thresholds.Row(sweep.Scene, oracle, aText, bText);
             report.Text(Lines(
-                "With the lookup oracle's noise locations:",
-                "- (a) quantum loses to classical brute force in Int/Ray " + (a is { } x ? $"at p ≈ {Rate(x)} per gate;" : $"at no rate up to p = {highest} (its Int/Ray stays below {F(classicalPerRay, "0")});"),
-                "- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y ? $"at p ≈ {Rate(y)} per gate." : $"at no rate up to p = {highest}."),
-                "",
-                "On the gate-level circuit quantum would lose at far lower rates."));
-            report.Plot($"render-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: NRMSE against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "NRMSE (%)",
+                $"With the {oracle} oracle's noise model:",
+                "- (a) quantum loses to classical brute force in Int/Ray " + (a is { } x2 ? $"at p ≈ {Rate(x2)} per gate;" : $"at no rate up to p = {highest} (its Int/Ray stays below {F(classicalPerRay, "0")});"),
+                "- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y2 ? $"at p ≈ {Rate(y2)} per gate." : $"at no rate up to p = {highest}.")));
+            if (sweep.Oracle == NoiseOracle.GateLevel)
+            {
+                report.Text(Lines(
+                    "The randomized renderer (floor(sqrt N) random primitives per ray and pass; the same pipeline without the termination rule,",
+                    "which would stop its rays after a miss or two and cap its Int/Ray below the quantum one) at 1 … " + sweep.Randomized.Count + " passes; its NRMSE at the",
+                    "quantum Int/Ray above is interpolated linearly between these (the same renders serve both oracles):"));
+                var randomizedTable = new TextTable($"randomized-{sweep.Scene}", ["passes", "Int/Ray", "NRMSE", "#Dpix"]);
+                foreach (var (passes, m) in sweep.Randomized)
+                    randomizedTable.Row(I(passes), F(m.Result.Total.PerRayConservative, "0.00"), F(m.Error.Nrmse * 100, "0.00") + " %", I(m.Error.DifferentPixels));
+                report.Table(randomizedTable);
+            }
+            report.Plot($"render-{sweep.Scene}-{oracle}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}, {oracle} oracle: NRMSE against per-gate error (analytic)", "per-gate error p", "NRMSE (%)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Error.Nrmse * 100)).ToArray()),
                  ("randomized at equal Int/Ray", sweep.Quantum.Where(q => q.PerGate > 0 && sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is not null)
                     .Select(q => (q.PerGate, sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative)!.Value * 100)).ToArray())]),
-                $"{sweep.Scene}: NRMSE against the per-gate error, lookup oracle");
-            report.Plot($"int-per-ray-{sweep.Scene}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}: Int/Ray against per-gate error (analytic, depolarizing approximation)", "per-gate error p", "Int/Ray (conservative)",
+                $"{sweep.Scene}: NRMSE against the per-gate error, {oracle} oracle");
+            report.Plot($"int-per-ray-{sweep.Scene}-{oracle}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}, {oracle} oracle: Int/Ray against per-gate error (analytic)", "per-gate error p", "Int/Ray (conservative)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Result.Total.PerRayConservative)).ToArray())],
                 classicalPerRay, "classical brute force"),
-                $"{sweep.Scene}: Int/Ray against the per-gate error, lookup oracle");
+                $"{sweep.Scene}: Int/Ray against the per-gate error, {oracle} oracle");
+        }
+        if (sweeps.Count > 0)
+        {
+            report.Heading("Thresholds", 3);
+            report.Text($"Where quantum rendering loses, {size}x{size}, default pipeline, per oracle (log-linear between the measured rates):");
+            report.Table(thresholds);
         }
         if (confirmations.Count > 0)
         {
-            report.Heading($"The analytic model against the noisy fullstate engine, {confirmSize}x{confirmSize}", 3);
+            report.Heading($"The analytic model against the noisy gate engine, {confirmSize}x{confirmSize}", 3);
             report.Text(Lines(
-                "The same pipeline rendered by the noisy full-state simulator (lookup oracle, `--engine fullstate --noise p`), whose outcomes cannot",
-                "be seeded, beside the analytic engine under the approximation: one render each, so differences of a few pixels are sampling."));
-            var table = new TextTable("confirmations", ["scene", "p per gate", "analytic Int/Ray", "fullstate Int/Ray", "analytic NRMSE", "fullstate NRMSE", "analytic #Dpix", "fullstate #Dpix", "fullstate wall time"]);
+                "The same pipeline without the accuracy budget (the simulator engines run without it) rendered by the noisy gate engine, which",
+                "simulates the gate-level oracle's circuit under `runWithNoise` (`--engine gate --noise p`) and cannot be seeded, beside the",
+                "analytic engine under the gate-level oracle's model: one render each, so differences of a few pixels are sampling."));
+            var table = new TextTable("confirmations", ["scene", "p per gate", "analytic Int/Ray", "gate Int/Ray", "analytic NRMSE", "gate NRMSE", "analytic #Dpix", "gate #Dpix", "gate wall time"]);
             foreach (var c in confirmations)
                 table.Row(c.Scene, Rate(c.PerGate), F(c.Analytic.Result.Total.PerRayConservative, "0.00"), F(c.FullState.Result.Total.PerRayConservative, "0.00"),
                     F(c.Analytic.Error.Nrmse * 100, "0.00") + " %", F(c.FullState.Error.Nrmse * 100, "0.00") + " %", I(c.Analytic.Error.DifferentPixels), I(c.FullState.Error.DifferentPixels),
@@ -338,17 +357,33 @@ public static class NoiseReport
         }
     }
 
-    /// <summary>
-    /// The two oracles' noise locations per Grover iteration from the model check: the lookup oracle's at its largest N, the
-    /// gate-level oracle's at its largest; null without rows of both.
-    /// </summary>
-    private static string? OracleSizes(IReadOnlyList<NoiseCheckRow> check)
+    /// <summary>The gate-level oracle's noise exposure per traced circuit shape, and one shape's by gate kind.</summary>
+    public static void Exposure(Report report, IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> exposures)
     {
-        var lookup = check.Where(r => r.Oracle == "lookup" && r.Iterations > 0).Select(r => r.Count).DefaultIfEmpty(0).Max();
-        var gate = check.Where(r => r.Oracle == "gate" && r.Iterations > 0).Select(r => r.Count).DefaultIfEmpty(0).Max();
-        if (lookup == 0 || gate == 0) return null;
-        return $"{F(PerIteration(check, "lookup", lookup), "0")} locations per Grover iteration at N = {I(lookup)} (the fitted-s table above), where the gate-level oracle has " +
-            $"{F(PerIteration(check, "gate", gate), "0")} already at N = {I(gate)}, and more at larger N";
+        if (exposures.Count == 0) return;
+        report.Heading("Noise locations of the gate-level oracle");
+        report.Text(Lines(
+            "The QSearch run a machine would run (`MeasureGateGroverSearch`, the circuit `qrt estimate` prices), traced by the QDK for each",
+            "circuit shape (N and coordinate bits) of the scenes up to N = 64, on the first camera ray of an 8x8 image that meets a",
+            "primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with two iterations less the one with one):",
+            "L the noise locations, H the harm-weighted locations (a third per Pauli harmful there, by the counting rule of the model check below),",
+            "and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)."));
+        var table = new TextTable("exposure", ["shape", "scenes", "L per iteration", "H per iteration", "H / L", "L outside (prepare, measure)", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
+        foreach (var (key, scenes, e) in exposures)
+            table.Row(key, scenes, F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"), F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"),
+                F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-5)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-4)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-3)), "0.000"));
+        report.Table(table);
+        var (largestKey, _, largest) = exposures.MaxBy(e => e.Exposure.Iteration.Locations);
+        report.Text($"By gate kind, {largestKey}, one iteration (locations where the named Paulis harm; \"none\": no Pauli harms):");
+        string[] patterns = ["XYZ", "XY", "YZ", ""];
+        var kinds = new TextTable("exposure-kinds", ["gate kind", "locations", .. patterns.Select(p => p.Length == 0 ? "none" : p), "H"]);
+        foreach (var kind in largest.Iteration.ByKind.Keys.OrderByDescending(largest.Iteration.LocationsOf))
+        {
+            var counts = largest.Iteration.ByKind[kind];
+            kinds.Row([kind, F(largest.Iteration.LocationsOf(kind), "0"), .. patterns.Select(p => F(counts.GetValueOrDefault(p), "0")), F(largest.Iteration.HarmWeightOf(kind), "0")]);
+        }
+        report.Table(kinds);
+        report.Text("(Z and CZ counts vary a little with the measurement-based uncomputation's outcomes, so a difference of two traces can hold a small negative count.)");
     }
 
     private static double NoiseLocationsOf(CircuitCounts counts) => NoiseLocations.FromCounts(counts.Native.Gates, counts.Native.Measurements);

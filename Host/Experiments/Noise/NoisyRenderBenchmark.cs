@@ -13,12 +13,12 @@ namespace QuantumRayTracing.Experiments;
 public static class NoisyRenderBenchmark
 {
     /// <summary>Per-gate error rates of the sweep, 0 the ideal machine.</summary>
-    public static readonly double[] Rates = [0, 1e-6, 1e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1];
+    public static readonly double[] Rates = [0, 1e-7, 3e-7, 1e-6, 3e-6, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1];
 
     public sealed record Point(double PerGate, RenderMeasurement Measurement);
 
-    /// <summary>One scene's sweep: the quantum points, the classical reference, and the randomized renderer at 1 … k passes.</summary>
-    public sealed record Sweep(string Scene, RenderMeasurement Classical, IReadOnlyList<Point> Quantum, IReadOnlyList<(int Passes, RenderMeasurement Measurement)> Randomized)
+    /// <summary>One scene's sweep on one oracle's noise model: the quantum points, the classical reference, and the randomized renderer at 1 … k passes.</summary>
+    public sealed record Sweep(string Scene, NoiseOracle Oracle, RenderMeasurement Classical, IReadOnlyList<Point> Quantum, IReadOnlyList<(int Passes, RenderMeasurement Measurement)> Randomized)
     {
         /// <summary>
         /// The randomized renderer's NRMSE at the Int/Ray <paramref name="perRay"/> (conservative): linear between the
@@ -52,7 +52,7 @@ public static class NoisyRenderBenchmark
         }
     }
 
-    public static Sweep Run(string name, Scene scene, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null)
+    public static Sweep Run(string name, Scene scene, NoiseOracle oracle, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null)
     {
         var options = Defaults(size);
         var classical = RenderMeasurement.Reference(scene, options);
@@ -61,9 +61,9 @@ public static class NoisyRenderBenchmark
         var quantum = new List<Point>();
         foreach (var p in rates)
         {
-            progress?.Invoke($"{name}: analytic, p = {p}");
+            progress?.Invoke($"{name}: analytic, {oracle.Name()} oracle, p = {p}");
             // Same seed, same render: of three, the fastest is the cost least disturbed by other work on the machine.
-            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p)), options, classical)).ToArray();
+            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p), NoiseOracle: oracle), options, classical)).ToArray();
             quantum.Add(new Point(p, runs.MinBy(r => r.WallTime)!));
         }
         // The termination rule stops the randomized renderer's rays after a miss or two, so its Int/Ray would
@@ -78,7 +78,7 @@ public static class NoisyRenderBenchmark
             randomized.Add((passes, m));
             if (m.Result.Total.PerRayConservative > highest) break;
         }
-        return new Sweep(name, classical, quantum, randomized);
+        return new Sweep(name, oracle, classical, quantum, randomized);
     }
 
     /// <summary>The randomized renderer's pipeline: the default without the termination rule, <paramref name="passes"/> passes of each kind.</summary>
@@ -87,7 +87,16 @@ public static class NoisyRenderBenchmark
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
     public static RenderOptions Defaults(int size) => RenderDefaults.CommandLine(size, size);
 
-    /// <summary>The same render on the noisy full-state engine, for comparison with the analytic model at a small size; on <paramref name="pool"/> when given.</summary>
-    public static RenderMeasurement FullState(Scene scene, int size, double perGate, int workers, RenderMeasurement classical, Bridge.BridgePool? pool = null) =>
-        RenderMeasurement.Run(scene, new EngineSetup(EngineKind.FullState, new QSearchOptions(), workers, Noise: NoiseModel.Depolarizing(perGate), Pool: pool), Defaults(size), classical);
+    /// <summary>
+    /// A small render on the noisy gate engine (the gate-level oracle simulated) beside the analytic engine under the gate-level
+    /// oracle's model, both without the accuracy budget (the simulator engines run without it); on <paramref name="pool"/> when given.
+    /// </summary>
+    public static (RenderMeasurement Analytic, RenderMeasurement Gate) Confirm(Scene scene, int size, double perGate, int workers, Bridge.BridgePool? pool = null)
+    {
+        var options = Defaults(size) with { Budget = null };
+        var classical = RenderMeasurement.Reference(scene, options);
+        var noise = NoiseModel.Depolarizing(perGate);
+        return (RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise), options, classical),
+            RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Gate, new QSearchOptions(), workers, Noise: noise, Pool: pool), options, classical));
+    }
 }
