@@ -32,13 +32,13 @@ public sealed class BenchNoiseCommand : Command
     private readonly Option<int> _confirmSize = new Option<int>("--confirm-size")
     {
         Description = $"Pixels per side of the renders of {NoiseBenchSettings.ConfirmSceneName} on the noisy gate engine that confirm the analytic model (0 skips them).",
-        DefaultValueFactory = _ => 16,
+        DefaultValueFactory = _ => 8,
     }.Between(0, 128);
 
     private readonly Option<double[]> _confirmRates = new("--confirm-rates")
     {
         Description = "Per-gate error rates of the gate-engine confirmation renders (space-separated).",
-        DefaultValueFactory = _ => [1e-5, 1e-4, 3e-4, 1e-3],
+        DefaultValueFactory = _ => [1e-4, 1e-3, 3e-3],
         AllowMultipleArgumentsPerToken = true,
     };
 
