@@ -41,16 +41,31 @@ public sealed class RenderCommand : Command
         _render.AddTo(this);
         Options.Add(_render.Budget);
         _engine.AddTo(this);
-        Options.Add(_engine.NoiseOracleOption);
+        this.AddOptions(_engine.NoiseOracleOption, _noiseAware);
         _qsearch.AddTo(this);
         _json.AddTo(this);
         SetAction(Execute);
+    }
+
+    private readonly Option<bool> _noiseAware = new("--noise-aware")
+    {
+        Description = "Plan with the noisy machine (analytic engine under --noise): the termination rule, the lattice's confirmations, the accuracy budget and the classical settling use each Grover run's noisy success probability, so a ray whose noisy search would cost more than N classical tests is settled classically.",
+    };
+
+    /// <summary>--noise-aware, refused on an engine that does not sample the noise model.</summary>
+    private bool NoiseAware(ParseResult parse, Engines.EngineKind kind)
+    {
+        var aware = parse.GetValue(_noiseAware);
+        if (aware && !kind.ApproximatesNoise) throw new UserError("--noise-aware: only the analytic engine plans with its noise model; use --engine analytic");
+        return aware;
     }
 
     private int Execute(ParseResult parse)
     {
         var sceneFile = parse.GetValue(_scene);
         var settings = Settings(parse, sceneFile);
+        // An untraced circuit shape is refused before anything is printed or written.
+        if (settings.Engine.ApproximatesNoise && !settings.NoiseModel.IsNoiseless) EngineFactory.Approximation(settings.NoiseOracle, settings.Scene);
         var inputs = sceneFile is null ? Array.Empty<string>() : [sceneFile.FullName];
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
@@ -74,6 +89,7 @@ public sealed class RenderCommand : Command
         var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
         return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
             parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
-            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), NoiseOracle: _engine.GetNoiseOracle(parse));
+            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), NoiseOracle: _engine.GetNoiseOracle(parse),
+            NoiseAware: NoiseAware(parse, kind));
     }
 }

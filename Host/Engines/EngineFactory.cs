@@ -19,10 +19,12 @@ public static class EngineFactory
     /// The ray search of <paramref name="kind"/>: QSearch over its Grover engine, or a classical search. The
     /// noise model is the caller's to check (<see cref="CheckNoise"/>), once per run.
     /// </summary>
+    /// <remarks>With <paramref name="noiseAware"/> and an approximation, the search's miss rates take the noisy runs' success.</remarks>
     public static IHitSearch CreateSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null,
-        DepolarizingApproximation? approximation = null) =>
+        DepolarizingApproximation? approximation = null, bool noiseAware = false) =>
         kind.SearchesWithGrover
-            ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None, approximation), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates)
+            ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None, approximation), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates,
+                success: noiseAware && approximation is not null && noise is { IsNoiseless: false } ? approximation.NoisySuccess(noise) : null)
             : kind == EngineKind.Classical ? new ClassicalHitSearch() : new RandomizedHitSearch(root.Fork(RandomStreams.Engine));
 
     /// <summary>

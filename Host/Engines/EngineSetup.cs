@@ -15,6 +15,7 @@ namespace QuantumRayTracing.Engines;
 /// <param name="Noise">The noise model of the quantum engines; null for the ideal machine.</param>
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts: the gate-level oracle by default.</param>
+/// <param name="NoiseAware">The passes plan with the noisy runs' success (analytic engine under noise), not the ideal one.</param>
 public sealed record EngineSetup(
     EngineKind Kind,
     QSearchOptions Search,
@@ -22,7 +23,8 @@ public sealed record EngineSetup(
     int? MaxQubits = null,
     NoiseModel? Noise = null,
     BridgePool? Pool = null,
-    NoiseOracle NoiseOracle = NoiseOracle.GateLevel)
+    NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
+    bool NoiseAware = false)
 {
     public EngineSetup(EngineKind kind) : this(kind, new QSearchOptions()) { }
 

@@ -46,6 +46,20 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     public double MarkedProbability(NoiseModel noise, GroverRequest request) =>
         MarkedProbability(request.Marked.Count, request.Marked.MarkedCount, request.Iterations, RunFidelity(noise, request));
 
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(int Count, int Marked), long> _lookupIterations = new();
+
+    /// <summary>
+    /// P(marked) of a run under <paramref name="noise"/> for the passes' miss rates: the gate-level circuit's Φ depends on r
+    /// alone; the lookup oracle's on the marked set too, taken as the first t indices.
+    /// </summary>
+    public FalseNegativeRate.RunSuccess NoisySuccess(NoiseModel noise) => (count, marked, iterations) =>
+    {
+        var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, iterations)
+            : Fidelity(noise, NoiseLocations.PrepareAndMeasure(count) + (double)iterations *
+                _lookupIterations.GetOrAdd((count, marked), k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray()))));
+        return MarkedProbability(count, marked, iterations, fidelity);
+    };
+
     /// <summary>How the model is named beside every result it produces.</summary>
     public string Description(NoiseModel noise) =>
         noise.IsNoiseless ? noise.Description()

@@ -22,6 +22,7 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="Noise">The noise model the quantum engines run under; null for the ideal machine.</param>
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts.</param>
+/// <param name="NoiseAware">The passes plan with the noisy runs' success probabilities (analytic engine).</param>
 public sealed record RenderRunSettings(
     Scene Scene,
     RenderOptions Options,
@@ -34,7 +35,8 @@ public sealed record RenderRunSettings(
     int? MaxQubits = null,
     NoiseModel? Noise = null,
     BridgePool? Pool = null,
-    NoiseOracle NoiseOracle = NoiseOracle.GateLevel)
+    NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
+    bool NoiseAware = false)
 {
     /// <summary>Area lights or VPLs: the render samples light, and a converged reference shows its Monte Carlo noise.</summary>
     public bool SamplesLight => RenderDefaults.SamplesLight(Scene, Options);
@@ -50,11 +52,12 @@ public sealed record RenderRunSettings(
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>The engine as <see cref="Renderer"/> builds it.</summary>
-    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle);
+    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, NoiseAware);
 
     /// <summary>The noise model as this run's results name it.</summary>
     public string NoiseDescription => EngineFactory.NoiseDescription(Engine, NoiseModel,
-        Engine.ApproximatesNoise && !NoiseModel.IsNoiseless ? EngineFactory.Approximation(NoiseOracle, Scene) : null);
+        Engine.ApproximatesNoise && !NoiseModel.IsNoiseless ? EngineFactory.Approximation(NoiseOracle, Scene) : null)
+        + (NoiseAware && !NoiseModel.IsNoiseless ? "; noise-aware passes (miss rates from the noisy runs' success)" : "");
 
     /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>
     public IReadOnlyList<string> Files => WithReference

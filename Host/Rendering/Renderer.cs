@@ -21,7 +21,7 @@ public static class Renderer
         if (engine.Kind.RunsQSharp) options = options with { Budget = null };
         var approximation = engine.Kind.ApproximatesNoise && !engine.NoiseModel.IsNoiseless ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
         using var search = EngineFactory.CreateSearch(engine.Kind, new SeededRandom(options.Seed), engine.Workers, engine.Search,
-            engine.MaxQubits, engine.Pool, engine.Noise, approximation);
+            engine.MaxQubits, engine.Pool, engine.Noise, approximation, engine.NoiseAware);
         return SceneRenderer.Render(scene, search, options, progress);
     }
 }

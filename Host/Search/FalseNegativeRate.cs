@@ -12,6 +12,9 @@ namespace QuantumRayTracing.Search;
 /// </summary>
 public static class FalseNegativeRate
 {
+    /// <summary>P(marked) of one Grover run over <paramref name="count"/> rows, <paramref name="marked"/> marked, after <paramref name="iterations"/> iterations.</summary>
+    public delegate double RunSuccess(int count, int marked, int iterations);
+
     /// <summary>Eq. 10 as printed: ∏_l Σ_t p_t cos²((M_l + 1)θ_t).</summary>
     public static double Eq10AsPrinted(QSearchSchedule schedule, IReadOnlyList<double> pt) =>
         schedule.Bounds.Aggregate(1.0, (product, m) => product * Average(pt, t => Square(Math.Cos((m + 1) * Theta(t, schedule.Count)))));
@@ -24,23 +27,28 @@ public static class FalseNegativeRate
     /// The exact miss probability of <see cref="QSearch"/>: Σ_t p_t · (1 − t/N) · ∏_l (1 − mean over
     /// r = 1..M_l of sin²((2r + 1)θ_t)).
     /// </summary>
-    public static double QSearchExact(QSearchSchedule schedule, IReadOnlyList<double> pt) =>
-        Average(pt, t => QSearchExact(schedule, t));
+    /// <remarks>
+    /// <paramref name="success"/> replaces each run's ideal P(marked), sin²((2r + 1)θ), with another (a noisy machine's);
+    /// null keeps the ideal one.
+    /// </remarks>
+    public static double QSearchExact(QSearchSchedule schedule, IReadOnlyList<double> pt, RunSuccess? success = null) =>
+        Average(pt, t => QSearchExact(schedule, t, success));
 
-    /// <summary>The exact miss probability of <see cref="QSearch"/> for one t.</summary>
-    public static double QSearchExact(QSearchSchedule schedule, int t)
+    /// <summary>The exact miss probability of <see cref="QSearch"/> for one t, with the runs' success by <paramref name="success"/> (null: ideal).</summary>
+    public static double QSearchExact(QSearchSchedule schedule, int t, RunSuccess? success = null)
     {
         var n = schedule.Count;
+        RunSuccess ofMarked = success ?? GroverProbability.OfMarked;
         // A run misses with 1 − P(marked) of Grover's closed form; a fixed list runs each r once, Algorithm 1
         // takes the initial sample (r = 0) and then r uniform on 1..M_l per bound.
         if (schedule.IsFixed)
-            return schedule.Bounds.Aggregate(1.0, (miss, r) => miss * (1 - GroverProbability.OfMarked(n, t, r)));
-        var miss = 1 - GroverProbability.OfMarked(n, t, 0);
+            return schedule.Bounds.Aggregate(1.0, (miss, r) => miss * (1 - ofMarked(n, t, r)));
+        var miss = 1 - ofMarked(n, t, 0);
         foreach (var m in schedule.Bounds)
         {
-            var success = 0.0;
-            for (var r = 1; r <= m; r++) success += GroverProbability.OfMarked(n, t, r);
-            miss *= 1 - success / m;
+            var found = 0.0;
+            for (var r = 1; r <= m; r++) found += ofMarked(n, t, r);
+            miss *= 1 - found / m;
         }
         return Math.Max(0, miss);
     }

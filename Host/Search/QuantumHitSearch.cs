@@ -8,9 +8,11 @@ namespace QuantumRayTracing.Search;
 /// the table's verify-rpc set, every search of a batch advances in lock step through
 /// <see cref="QSearchDriver"/>. With <paramref name="gateLevel"/> each request also carries the table
 /// and window, which the gate engine loads into its gate-level oracle (the full table: a compact one
-/// kept between rounds is rebuilt for it).
+/// kept between rounds is rebuilt for it). With <paramref name="success"/> the miss rates the passes plan with (termination
+/// rule, lattice confirmations, accuracy budget, classical settling) take each run's success from it, a noisy machine's,
+/// instead of the ideal one.
 /// </summary>
-public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false) : IHitSearch
+public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false, FalseNegativeRate.RunSuccess? success = null) : IHitSearch
 {
     private readonly Dictionary<int, QSearchSchedule> _schedules = [];
 
@@ -34,7 +36,7 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
     public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) =>
         paperFormula && schedule is null
             ? FalseNegativeRate.Eq10AtBound(Schedule(count), pt)
-            : FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt);
+            : FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt, success);
 
     public double EmptySearchCost(int count, QSearchSchedule? schedule = null) => SearchCost.ExpectedEmpty(schedule ?? Schedule(count));
 
