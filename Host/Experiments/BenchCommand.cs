@@ -1,6 +1,7 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench`: measured speed tables, written as Markdown for docs/.</summary>
 public sealed class BenchCommand : Command
