@@ -28,7 +28,7 @@ public sealed class RenderCommand : Command
     private readonly RenderOptionSet _render = new();
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
-        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
+        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Bvh, EngineKind.Randomized);
 
     private readonly QSearchOptionSet _qsearch = new();
 
