@@ -22,5 +22,6 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchNoiseEstimationCommand());
         Subcommands.Add(new BenchFullStatePerformanceCommand());
         Subcommands.Add(new BenchClusterPerformanceCommand());
+        Subcommands.Add(new BenchBvhComparisonCommand());
     }
 }
