@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Output;

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Cli;

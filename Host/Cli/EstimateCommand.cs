@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Experiments;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 

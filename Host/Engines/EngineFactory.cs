@@ -3,6 +3,7 @@ using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Search.Bvh;
 
 namespace QuantumRayTracing.Engines;
 
@@ -25,7 +26,12 @@ public static class EngineFactory
         kind.SearchesWithGrover
             ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None, approximation), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates,
                 success: noiseAware && approximation is not null && noise is { IsNoiseless: false } ? approximation.NoisySuccess(noise) : null)
-            : kind == EngineKind.Classical ? new ClassicalHitSearch() : new RandomizedHitSearch(root.Fork(RandomStreams.Engine));
+            : kind switch
+            {
+                EngineKind.Classical => new ClassicalHitSearch(),
+                EngineKind.Bvh => new BvhHitSearch(),
+                _ => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
+            };
 
     /// <summary>
     /// A Grover engine, its noise model checked; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines

@@ -21,6 +21,7 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model the quantum engines run under; null for the ideal machine.</param>
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+/// <param name="MaxMemory">The peak memory a large render may be forecast to need (<see cref="RenderForecast"/>); null: what the machine has available.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts.</param>
 /// <param name="NoiseAware">The passes plan with the noisy runs' success probabilities (analytic engine).</param>
 public sealed record RenderRunSettings(
@@ -35,6 +36,7 @@ public sealed record RenderRunSettings(
     int? MaxQubits = null,
     NoiseModel? Noise = null,
     BridgePool? Pool = null,
+    long? MaxMemory = null,
     NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
     bool NoiseAware = false)
 {

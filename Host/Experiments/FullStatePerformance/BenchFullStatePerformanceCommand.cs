@@ -1,9 +1,9 @@
 using System.CommandLine;
-using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench fullstate-performance`: options → <see cref="FullStatePerformanceSettings"/> → <see cref="FullStatePerformanceExperiment"/> (docs/fullstate-performance.md).</summary>
 public sealed class BenchFullStatePerformanceCommand : Command

@@ -1,9 +1,9 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Noise;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench noise`: the depolarizing approximation against the noisy simulator (searches, coins and QSS), the paper's device experiment

@@ -1,10 +1,10 @@
 using System.CommandLine;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`estimate oracle-sweep`: options → <see cref="OracleSweepSettings"/> → <see cref="OracleSweepExperiment"/> (docs/oracle-sweep.md).</summary>
 public sealed class EstimateOracleSweepCommand : Command

@@ -1,9 +1,9 @@
 using System.CommandLine;
-using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench grover-performance`: options → <see cref="GroverPerformanceSettings"/> → <see cref="GroverPerformanceExperiment"/> (docs/grover-performance.md).</summary>
 public sealed class BenchGroverPerformanceCommand : Command

@@ -1,6 +1,7 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench`: measured speed tables, written as Markdown for docs/.</summary>
 public sealed class BenchCommand : Command
@@ -21,5 +22,6 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchNoiseEstimationCommand());
         Subcommands.Add(new BenchFullStatePerformanceCommand());
         Subcommands.Add(new BenchClusterPerformanceCommand());
+        Subcommands.Add(new BenchBvhComparisonCommand());
     }
 }

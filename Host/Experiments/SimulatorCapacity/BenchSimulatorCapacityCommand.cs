@@ -1,9 +1,9 @@
 using System.CommandLine;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench simulator-capacity`: options → <see cref="SimulatorCapacitySettings"/> → <see cref="SimulatorCapacityExperiment"/> (docs/simulator-capacity.md).</summary>
 public sealed class BenchSimulatorCapacityCommand : Command

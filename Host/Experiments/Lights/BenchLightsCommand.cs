@@ -1,8 +1,8 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench lights`: options → <see cref="LightsSettings"/> → <see cref="LightsExperiment"/> (docs/lights.md and its images).</summary>
 public sealed class BenchLightsCommand : Command

@@ -1,9 +1,9 @@
 using System.CommandLine;
-using QuantumRayTracing.Reports;
 using System.Globalization;
-using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Cli;
+using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench noise-estimation`: options → <see cref="NoiseEstimationSettings"/> → <see cref="NoiseEstimationExperiment"/>, composed by

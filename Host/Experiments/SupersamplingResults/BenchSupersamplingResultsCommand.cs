@@ -1,8 +1,8 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench supersampling-results`: options → <see cref="SupersamplingResultsSettings"/> → <see cref="SupersamplingResultsExperiment"/> (docs/supersampling-results.md).</summary>
 public sealed class BenchSupersamplingResultsCommand : Command

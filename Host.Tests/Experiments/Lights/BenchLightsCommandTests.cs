@@ -1,7 +1,9 @@
+using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Output;
 
-namespace QuantumRayTracing.Tests.Cli;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench lights` on tiny images: the report, its six images, and the files it must not replace.</summary>
 public sealed class BenchLightsCommandTests : IDisposable

@@ -1,9 +1,9 @@
 using System.CommandLine;
-using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes.Generation;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench accuracy`: options → <see cref="AccuracySettings"/> → <see cref="AccuracyExperiment"/> (docs/accuracy.md).</summary>
 public sealed class BenchAccuracyCommand : Command

@@ -1,11 +1,11 @@
 using System.CommandLine;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// What every `bench` command that writes a report to docs/ shares: the scene directory, the seed, the

@@ -1,13 +1,13 @@
 using System.CommandLine;
-using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Scenes;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>
 /// `bench soak`: every scene in a directory on every engine that can hold it, with two seeds, each render

@@ -1,9 +1,9 @@
 using System.CommandLine;
-using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Reports;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench cluster-performance`: options → <see cref="ClusterPerformanceSettings"/> → <see cref="ClusterPerformanceExperiment"/> (docs/cluster-performance.md).</summary>
 public sealed class BenchClusterPerformanceCommand : Command

@@ -1,8 +1,8 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench optimised-tracing`: options → <see cref="OptimisedTracingSettings"/> → <see cref="OptimisedTracingExperiment"/> (docs/optimised-tracing.md).</summary>
 public sealed class BenchOptimisedTracingCommand : Command

@@ -1,9 +1,9 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench speed-vs-error`: options → <see cref="SpeedVsErrorSettings"/> → <see cref="SpeedVsErrorExperiment"/> (docs/speed-vs-error.md and its plots).</summary>
 public sealed class BenchSpeedVsErrorCommand : Command

@@ -1,8 +1,8 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench supersampling-images`: options → <see cref="SupersamplingImagesSettings"/> → <see cref="SupersamplingImagesExperiment"/> (docs/supersampling-images.md).</summary>
 public sealed class BenchSupersamplingImagesCommand : Command

@@ -1,12 +1,12 @@
 using System.CommandLine;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Scenes;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`estimate frame-sweep`: options → <see cref="FrameSweepSettings"/> → <see cref="FrameSweepExperiment"/> (docs/frame-sweep.md, with a plot of runtime per frame against N).</summary>
 public sealed class EstimateFrameSweepCommand : Command

@@ -1,7 +1,9 @@
+using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Tests.Cluster;
 
-namespace QuantumRayTracing.Tests.Cli;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench fullstate-performance` given a `--cluster` it cannot use stops with one line and the cluster's exit code, before any work and without a report.</summary>
 public sealed class BenchFullStatePerformanceCommandTests : IDisposable

@@ -1,6 +1,8 @@
+using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Tests.Cli;
 using QuantumRayTracing.Cli;
 
-namespace QuantumRayTracing.Tests.Cli;
+namespace QuantumRayTracing.Tests.Experiments;
 
 /// <summary>`bench supersampling-results` checks every file its report writes before the work: one it did not write stops it at once.</summary>
 public sealed class BenchSupersamplingResultsCommandTests : IDisposable

@@ -1,8 +1,8 @@
 using System.CommandLine;
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Experiments;
 
-namespace QuantumRayTracing.Cli;
+namespace QuantumRayTracing.Experiments;
 
 /// <summary>`bench render-results`: options → <see cref="RenderResultsSettings"/> → <see cref="RenderResultsExperiment"/> (docs/render-results.md).</summary>
 public sealed class BenchRenderResultsCommand : Command
