@@ -56,7 +56,7 @@ public sealed record NoiseBenchSettings(
         {
             foreach (var (name, _) in Scenes)
             {
-                foreach (var oracle in new[] { "gate-level", "lookup" })
+                foreach (var oracle in new[] { "gate-level", "gate-level-aware", "lookup" })
                 {
                     yield return $"render-{name}-{oracle}";
                     yield return $"int-per-ray-{name}-{oracle}";

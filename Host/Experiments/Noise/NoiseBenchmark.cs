@@ -70,8 +70,8 @@ public static class NoiseBenchmark
         if (settings.Parts.Contains("render"))
         {
             foreach (var (name, scene) in settings.Scenes)
-                foreach (var oracle in new[] { NoiseOracle.GateLevel, NoiseOracle.Lookup })
-                    sweeps.Add(NoisyRenderBenchmark.Run(name, scene, oracle, settings.Size, NoisyRenderBenchmark.Rates, 16, Say));
+                foreach (var (oracle, aware) in new[] { (NoiseOracle.GateLevel, false), (NoiseOracle.GateLevel, true), (NoiseOracle.Lookup, false) })
+                    sweeps.Add(NoisyRenderBenchmark.Run(name, scene, oracle, settings.Size, NoisyRenderBenchmark.Rates, 16, Say, aware));
             if (settings.ConfirmSize > 0 && settings.ConfirmScene is var (small, smallScene))
             {
                 foreach (var p in settings.ConfirmRates)

@@ -18,8 +18,14 @@ public static class NoisyRenderBenchmark
     public sealed record Point(double PerGate, RenderMeasurement Measurement);
 
     /// <summary>One scene's sweep on one oracle's noise model: the quantum points, the classical reference, and the randomized renderer at 1 … k passes.</summary>
-    public sealed record Sweep(string Scene, NoiseOracle Oracle, RenderMeasurement Classical, IReadOnlyList<Point> Quantum, IReadOnlyList<(int Passes, RenderMeasurement Measurement)> Randomized)
+    public sealed record Sweep(string Scene, NoiseOracle Oracle, RenderMeasurement Classical, IReadOnlyList<Point> Quantum, IReadOnlyList<(int Passes, RenderMeasurement Measurement)> Randomized,
+        bool NoiseAware = false)
     {
+        /// <summary>The sweep's model in words and as a file-name part: the oracle, and whether the passes plan with the noise.</summary>
+        public string Label => Oracle.Name() + (NoiseAware ? ", noise-aware" : "");
+
+        public string Slug => Oracle.Name() + (NoiseAware ? "-aware" : "");
+
         /// <summary>
         /// The randomized renderer's NRMSE at the Int/Ray <paramref name="perRay"/> (conservative): linear between the
         /// pass counts around it; null outside the range its pass counts reach.
@@ -52,7 +58,11 @@ public static class NoisyRenderBenchmark
         }
     }
 
-    public static Sweep Run(string name, Scene scene, NoiseOracle oracle, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null)
+    /// <summary>
+    /// One scene's sweep over <paramref name="rates"/> on <paramref name="oracle"/>'s noise model, with <paramref name="noiseAware"/> the
+    /// passes planning with the noisy runs' success (<c>render --noise-aware</c>).
+    /// </summary>
+    public static Sweep Run(string name, Scene scene, NoiseOracle oracle, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null, bool noiseAware = false)
     {
         var options = Defaults(size);
         var classical = RenderMeasurement.Reference(scene, options);
@@ -61,9 +71,9 @@ public static class NoisyRenderBenchmark
         var quantum = new List<Point>();
         foreach (var p in rates)
         {
-            progress?.Invoke($"{name}: analytic, {oracle.Name()} oracle, p = {p}");
+            progress?.Invoke($"{name}: analytic, {oracle.Name()} oracle{(noiseAware ? ", noise-aware" : "")}, p = {p}");
             // Same seed, same render: of three, the fastest is the cost least disturbed by other work on the machine.
-            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p), NoiseOracle: oracle), options, classical)).ToArray();
+            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p), NoiseOracle: oracle, NoiseAware: noiseAware), options, classical)).ToArray();
             quantum.Add(new Point(p, runs.MinBy(r => r.WallTime)!));
         }
         // The termination rule stops the randomized renderer's rays after a miss or two, so its Int/Ray would
@@ -78,11 +88,14 @@ public static class NoisyRenderBenchmark
             randomized.Add((passes, m));
             if (m.Result.Total.PerRayConservative > highest) break;
         }
-        return new Sweep(name, oracle, classical, quantum, randomized);
+        return new Sweep(name, oracle, classical, quantum, randomized, noiseAware);
     }
 
-    /// <summary>The randomized renderer's pipeline: the default without the termination rule, <paramref name="passes"/> passes of each kind.</summary>
-    public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes };
+    /// <summary>
+    /// The randomized renderer's pipeline: the default without the termination rule and without the accuracy budget (which would
+    /// settle its rays classically), <paramref name="passes"/> passes of each kind.
+    /// </summary>
+    public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes, Budget = null };
 
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
     public static RenderOptions Defaults(int size) => RenderDefaults.CommandLine(size, size);
