@@ -81,12 +81,14 @@ public static class AccuracyExperiment
             Random scenes of N rectangles of any orientation (`RandomScene.Scattered`, seed 1) at {GrowthSize}x{GrowthSize}: Int/Ray (conservative) of the
             default, split by where it goes (per ray of the render: the lattice's cheap confirmations where neighbours agree; every other
             search and classical test of the passes, rays settled classically included; the budget rounds), beside the same without the budget,
-            and the expected and measured wrong pixels (the budget: {Invariant($"{AccuracyBudget.Target * GrowthSize * GrowthSize:0.0}")}). A confirmation that a ray has nothing
+            and the expected and measured wrong pixels (the budget: {Invariant($"{AccuracyBudget.Target * GrowthSize * GrowthSize:0.0}")}), and the Int/Ray of the other ways to keep the budget
+            (below: more required misses, more confirmation where neighbours agree, one lattice level more). A confirmation that a ray has nothing
             closer costs about sqrt(N) queries whatever the engine does, so every part grows with N; the rounds buy the expectation down where a
             stratum's finds put it (docs/rendering.md).
             """);
+        var others = AccuracyBenchmark.Alternatives.Skip(1).ToArray();
         var growth = new TextTable("growth", ["N", "default: Int/Ray", "cheap confirmations", "other searches and tests", "budget rounds", "settled",
-            "default: expected", "default: wrong", "no budget: Int/Ray", "no budget: expected", "no budget: wrong"]);
+            "default: expected", "default: wrong", .. others.Select(c => $"{c.Name}: Int/Ray"), "no budget: Int/Ray", "no budget: expected", "no budget: wrong"]);
         foreach (var n in GrowthPrimitives)
         {
             progress($"{n} random rectangles, {GrowthSize}x{GrowthSize}");
@@ -96,10 +98,11 @@ public static class AccuracyExperiment
                 RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), configurations[1].Options(GrowthSize, 1), reference));
             var total = kept.Result.Total;
             string PerRay(long intersections) => Invariant($"{(double)intersections / Math.Max(1, total.Rays):0.0}");
-            growth.Row(Invariant($"{n:N0}"), Invariant($"{total.PerRayConservative:0.0}"), PerRay(total.CheapIntersections),
+            growth.Row([Invariant($"{n:N0}"), Invariant($"{total.PerRayConservative:0.0}"), PerRay(total.CheapIntersections),
                 PerRay(total.IntersectionsConservative - total.CheapIntersections - total.RoundIntersections), PerRay(total.RoundIntersections),
                 Invariant($"{total.SettledRays:N0}"), Invariant($"{kept.Result.Budget.ExpectedWrongPixels:0.0}"), Invariant($"{kept.Error.DifferentPixels}"),
-                Invariant($"{free.Result.Total.PerRayConservative:0.0}"), Invariant($"{free.Result.Budget.ExpectedWrongPixels:0.0}"), Invariant($"{free.Error.DifferentPixels}"));
+                .. others.Select(c => Invariant($"{RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, c.QSearch), c.Options(GrowthSize, 1), reference).Result.Total.PerRayConservative:0.0}")),
+                Invariant($"{free.Result.Total.PerRayConservative:0.0}"), Invariant($"{free.Result.Budget.ExpectedWrongPixels:0.0}"), Invariant($"{free.Error.DifferentPixels}")]);
         }
         report.Table(growth);
 
