@@ -216,20 +216,13 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
         // π w / (1 − π + π w), and the first episodes' sum is close to their finds · w / (1 − w), the episodes a search of
         // that miss rate lost.
         const double w = 0.2;
-        var schedule = QSearchSchedule.Fixed(64, [2]);
-        var ledger = new RayLedger(100, _ => w, cheap: null, findEnds: false);
-        for (var i = 0; i < 100; i++)
-        {
-            if (i < 10) ledger.Record(i, schedule, new HitOutcome(1, false, default));
-            ledger.Record(i, schedule, new HitOutcome(null, false, default));
-        }
-        static double Posterior(double pi) => pi * w / (1 - pi + pi * w);
+        var ledger = Ledger(100, w, findEnds: false, i => i < 10 ? 1 : 0);
         var (first, after) = (10.5 / (101 * (1 - w)), 0.5 / (11 * (1 - w)));
-        Assert.Equal(90 * Posterior(first) + 10 * Posterior(after), ledger.ExpectedTotal, 9);
-        Assert.InRange(90 * Posterior(first), 10 * w / (1 - w), 11 * w / (1 - w));
+        Assert.Equal(90 * Posterior(first, w) + 10 * Posterior(after, w), ledger.ExpectedTotal, 9);
+        Assert.InRange(90 * Posterior(first, w), 10 * w / (1 - w), 11 * w / (1 - w));
         // A certain answer is never wrong; a further miss multiplies a ray's odds of being wrong by w.
         var before = ledger.Expected(10);
-        ledger.Record(10, schedule, new HitOutcome(null, false, default));
+        ledger.Record(10, OneRun, new HitOutcome(null, false, default));
         Assert.True(ledger.Expected(10) < before * w / (1 - before) * 1.000001);
         ledger.Record(11, null, new HitOutcome(3, true, default));
         Assert.Equal(0, ledger.Expected(11));
@@ -242,28 +235,32 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
         // 20 times in 40 episodes; a first search 20 times in 100. A ray that has just found a hit is the likelier to have
         // a closer one left, and the pooled share (40 finds in 140 episodes) would put the difference on the 80 instead.
         const double w = 0.3;
-        var schedule = QSearchSchedule.Fixed(64, [2]);
-        var ledger = new RayLedger(100, _ => w, cheap: null, findEnds: false);
-        for (var i = 0; i < 100; i++)
-        {
-            if (i < 20)
-            {
-                ledger.Record(i, schedule, new HitOutcome(1, false, default));
-                ledger.Record(i, schedule, new HitOutcome(2, false, default));
-            }
-            ledger.Record(i, schedule, new HitOutcome(null, false, default));
-        }
-        static double Posterior(double pi) => pi * w / (1 - pi + pi * w);
+        var ledger = Ledger(100, w, findEnds: false, i => i < 20 ? 2 : 0);
         var (first, after) = (20.5 / (101 * (1 - w)), 20.5 / (41 * (1 - w)));
         ledger.Freeze();
-        Assert.Equal(Posterior(after), ledger.Expected(0), 12);
-        Assert.Equal(Posterior(first), ledger.Expected(50), 12);
+        Assert.Equal(Posterior(after, w), ledger.Expected(0), 12);
+        Assert.Equal(Posterior(first, w), ledger.Expected(50), 12);
         Assert.True(ledger.Expected(0) > 2 * ledger.Expected(50));
-        // Shadow rays end at a find: every episode is a first one, as before.
-        var shadow = new RayLedger(10, _ => w, cheap: null, findEnds: true);
-        for (var i = 0; i < 10; i++) shadow.Record(i, schedule, new HitOutcome(i < 2 ? 1 : null, false, default));
-        Assert.Equal(8 * Posterior(2.5 / (11 * (1 - w))), shadow.ExpectedTotal, 12);
+        // Shadow rays end at a find: every episode is a first one.
+        var shadow = Ledger(10, w, findEnds: true, i => i < 2 ? 1 : 0);
+        Assert.Equal(8 * Posterior(2.5 / (11 * (1 - w)), w), shadow.ExpectedTotal, 12);
     }
+
+    private static readonly QSearchSchedule OneRun = QSearchSchedule.Fixed(64, [2]);
+
+    // A ledger whose searches all miss with at most w, over rays that each find finds(i) times in a row (primitives 1, 2, ...) and then miss once.
+    private static RayLedger Ledger(int rays, double w, bool findEnds, Func<int, int> finds)
+    {
+        var ledger = new RayLedger(rays, _ => w, cheap: null, findEnds);
+        for (var i = 0; i < rays; i++)
+        {
+            for (var f = 1; f <= finds(i); f++) ledger.Record(i, OneRun, new HitOutcome(f, false, default));
+            if (!findEnds || finds(i) == 0) ledger.Record(i, OneRun, new HitOutcome(null, false, default));
+        }
+        return ledger;
+    }
+
+    private static double Posterior(double pi, double w) => pi * w / (1 - pi + pi * w);
 
     [Fact]
     public void EmptySearchCostCountsEveryRunAndItsTest()
