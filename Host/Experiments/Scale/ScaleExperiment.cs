@@ -27,6 +27,7 @@ public static partial class ScaleExperiment
         var scratch = Directory.CreateTempSubdirectory("qrt-scale-");
         try
         {
+            var loadBefore = LoadAverage();
             var rows = new List<Row>();
             foreach (var size in settings.Sizes)
                 foreach (var engine in settings.Engines)
@@ -34,7 +35,7 @@ public static partial class ScaleExperiment
                     progress(Invariant($"scale: {engine.Name} at {size}x{size}"));
                     rows.Add(Measure(settings, engine, size, scratch.FullName));
                 }
-            return Write(settings, rows);
+            return Write(settings, rows, (loadBefore, LoadAverage()));
         }
         finally
         {
@@ -63,7 +64,11 @@ public static partial class ScaleExperiment
     [GeneratedRegex(@"forecast: peak memory about ([0-9.]+ [MG]B)")]
     private static partial Regex ForecastLine();
 
-    private static Report Write(ScaleSettings settings, IReadOnlyList<Row> rows)
+    // The one-minute load average (Linux), to say how busy the machine was while it was timed; null elsewhere.
+    private static double? LoadAverage() =>
+        File.Exists("/proc/loadavg") && double.TryParse(File.ReadAllText("/proc/loadavg").Split(' ')[0], NumberStyles.Float, CultureInfo.InvariantCulture, out var load) ? load : null;
+
+    private static Report Write(ScaleSettings settings, IReadOnlyList<Row> rows, (double? Before, double? After) load)
     {
         var report = new Report(Title);
         report.Text(Invariant($"""
@@ -74,6 +79,8 @@ public static partial class ScaleExperiment
             forecast memory exceeds what the machine has available ([rendering.md](rendering.md#large-renders-forecast-memory-guard-and-progress)): such rows give the forecast and no times.
             Int/Ray is conservative (docs/conventions.md; the BVH's counts node and primitive tests and its build).
             """));
+        if (load is { Before: { } before, After: { } after })
+            report.Text(Invariant($"One-minute load average when the run started and ended: {before:F1} and {after:F1}, on {Environment.ProcessorCount} cores. Above the core count other work shared the machine, and the times are upper bounds; memory does not depend on it."));
         var table = new TextTable("scale", ["engine", "size", "pixels", "render", "reference", "peak memory", "bytes per pixel", "forecast", "Int/Ray"]);
         foreach (var r in rows)
             table.Row(r.Engine.Name, Invariant($"{r.Size}x{r.Size}"), Invariant($"{r.Pixels:N0}"),
