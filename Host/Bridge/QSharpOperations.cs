@@ -12,6 +12,8 @@ public static class QSharpOperations
 
     public const string ApplyGateGroverIterationOnNewRegisters = "QuantumRayTracing.Intersection.ApplyGateGroverIterationOnNewRegisters";
 
+    public const string ApplyGateGroverSearch = "QuantumRayTracing.Intersection.ApplyGateGroverSearch";
+
     public const string ApplyIntersectionOracleOnNewRegisters = "QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters";
 
     public const string MeasureGateGroverBatch = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";
