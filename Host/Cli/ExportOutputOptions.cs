@@ -6,12 +6,12 @@ namespace QuantumRayTracing.Cli;
 /// <summary>The options every `export` subcommand shares: format, output file, and leave to replace it.</summary>
 public sealed class ExportOutputOptions
 {
-    public readonly Option<ExportFormat> Format = new("--format")
+    public readonly Option<ExportFormat> Format = new Option<ExportFormat>("--format")
     {
         Description = "qasm2 (OpenQASM 2.0, unitary: uncomputation by gates), qasm3 (OpenQASM 3.0, with measurement and feedback) or qir (the QDK's QIR, adaptive profile).",
         DefaultValueFactory = _ => ExportFormat.Qasm2,
         HelpName = "qasm2|qasm3|qir",
-    };
+    }.Choices();
 
     public readonly Option<string?> Output = new("--output", "-o")
     {
