@@ -13,16 +13,12 @@ public sealed class ExportOutputOptions
         HelpName = "qasm2|qasm3|qir",
     }.Choices();
 
-    public readonly Option<string?> Output = new("--output", "-o")
-    {
-        Description = "Write the circuit to this file. Default: standard output.",
-        HelpName = "FILE",
-    };
+    public readonly Option<FileInfo?> Output = CommonOptions.ReportOutput("Write the circuit to this file; an existing file is replaced only with --force. Default: standard output.");
 
     public readonly Option<bool> Force = new("--force") { Description = "Replace the -o file if it exists." };
 
     public void AddTo(Command command) => command.AddOptions(Format, Output, Force);
 
     public ExportSettings Settings(ParseResult parse, ExportSubject subject) =>
-        new(subject, parse.GetValue(Format), parse.GetValue(Output), parse.GetValue(Force));
+        new(subject, parse.GetValue(Format), parse.GetValue(Output)?.ToString(), parse.GetValue(Force));
 }
