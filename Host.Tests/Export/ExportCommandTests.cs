@@ -33,6 +33,15 @@ public sealed class ExportCommandTests : IDisposable
     public void UsageErrors(string option, string problem, params string[] options) =>
         Outcome.Of(["export", "search", Scene, .. options]).AssertUsageError(option, problem);
 
+    [Theory]
+    [InlineData("--mean", "give exactly one")]
+    [InlineData("--mean", "give exactly one", "--mean", "0.3", "--values", "0.1")]
+    [InlineData("--mean", "must lie in [0, 1], got 2", "--mean", "2")]
+    [InlineData("--values", "1.5 is outside [0, 1]", "--values", "0.1", "1.5")]
+    [InlineData("--k", "must be at most 64, got 65", "--mean", "0.3", "--k", "65")]
+    public void CoinUsageErrors(string option, string problem, params string[] options) =>
+        Outcome.Of(["export", "coin", .. options]).AssertUsageError(option, problem);
+
     [Fact]
     public void PixelOutsideTheImageIsBadInput() =>
         Outcome.Of("export", "search", Scene, "--size", "8", "--pixel", "8,0").AssertBadInput("--pixel 8,0", "is outside the 8x8 image");

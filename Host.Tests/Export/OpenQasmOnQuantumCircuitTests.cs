@@ -80,4 +80,31 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var difference = ExportedDistribution.MaxDifference(ExportedDistribution.FromHeader(file), ExportedDistribution.OnQuantumCircuit(broken, "index"));
         Assert.True(difference > 1e-3, $"dropping the first ry changed the distribution by only {difference}");
     }
+
+    [Fact]
+    public void DirectCoinOnQuantumCircuitIsTheHeadersIdealAndGroversClosedForm()
+    {
+        var file = _scratch.File("direct.qasm");
+        var (code, error) = ConsoleCapture.Run("export", "coin", "--mean", "0.3", "--k", "2", "-o", file);
+        Assert.True(code == 0, error);
+        var ideal = ExportedDistribution.FromHeader(file);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= Tolerance);
+        // sin²θ = 0.3, k = 2: heads with probability sin²(5θ).
+        var heads = Math.Pow(Math.Sin(5 * Math.Asin(Math.Sqrt(0.3))), 2);
+        Assert.Equal(heads, ideal[1], 1e-9);
+    }
+
+    [Fact]
+    public void MeanCoinOnQuantumCircuitIsTheHeadersIdealAndGroversClosedForm()
+    {
+        double[] values = [0.05, 0.2, 0.1, 0.032];
+        var file = _scratch.File("mean.qasm");
+        var (code, error) = ConsoleCapture.Run(["export", "coin", "--values", .. values.Select(v => v.ToString(System.Globalization.CultureInfo.InvariantCulture)), "--k", "1", "-o", file]);
+        Assert.True(code == 0, error);
+        var ideal = ExportedDistribution.FromHeader(file);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= Tolerance);
+        // Bit 2 is the coin: heads with probability sin²(3θ), sin²θ the mean value, whatever the subpixel bits.
+        var heads = Math.Pow(Math.Sin(3 * Math.Asin(Math.Sqrt(values.Average()))), 2);
+        Assert.Equal(heads, ideal.Where(e => (e.Key & 4) != 0).Sum(e => e.Value), 1e-9);
+    }
 }

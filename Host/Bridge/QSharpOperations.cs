@@ -26,6 +26,10 @@ public static class QSharpOperations
 
     public const string MeasureGroverSchedules = "QuantumRayTracing.Search.MeasureGroverSchedules";
 
+    public const string ApplyDirectCoin = "QuantumRayTracing.Supersampling.ApplyDirectCoin";
+
+    public const string ApplyMeanCoin = "QuantumRayTracing.Supersampling.ApplyMeanCoin";
+
     public const string CountCoinHeads = "QuantumRayTracing.Supersampling.CountCoinHeads";
 
     public const string CountCoinHeadsBatch = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";

@@ -12,5 +12,6 @@ public sealed class ExportCommand : Command
     {
         Subcommands.Add(new ExportSearchCommand());
         Subcommands.Add(new ExportDeviceExperimentCommand());
+        Subcommands.Add(new ExportCoinCommand());
     }
 }
