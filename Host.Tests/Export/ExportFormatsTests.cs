@@ -23,6 +23,13 @@ public sealed class ExportFormatsTests : IDisposable
         return file;
     }
 
+    /// <summary>The search for pixel (3, 0) of the 2-bit-grid test scene (one of 5 marked) in <paramref name="format"/>: its file and text.</summary>
+    private (string File, string Text) ExportTinySearch(string name, string format)
+    {
+        var file = Export(name, "export", "search", OpenQasmOnQuantumCircuitTests.TinyScene(_scratch), "--size", "4", "--pixel", "3,0", "--format", format);
+        return (file, File.ReadAllText(file));
+    }
+
     [Fact]
     public void DeviceExperimentQasm2RunsOnTheQdkAsItsHeaderSays()
     {
@@ -39,9 +46,7 @@ public sealed class ExportFormatsTests : IDisposable
     [Fact]
     public void SearchQasm3KeepsFeedbackAndCompilesOnTheQdk()
     {
-        var scene = OpenQasmOnQuantumCircuitTests.TinyScene(_scratch);
-        var file = Export("search3.qasm", "export", "search", scene, "--size", "4", "--pixel", "3,0", "--format", "qasm3");
-        var text = File.ReadAllText(file);
+        var (file, text) = ExportTinySearch("search3.qasm", "qasm3");
         Assert.Contains("OPENQASM 3.0;", text, StringComparison.Ordinal);
         Assert.Contains("if (uncompute) { cz ", text, StringComparison.Ordinal);
         Assert.True(NodeScript.Run("qdk-openqasm.mjs", file)["qirInstructions"]!.GetValue<int>() > 100);
@@ -50,9 +55,7 @@ public sealed class ExportFormatsTests : IDisposable
     [Fact]
     public void SearchQirAssemblesAndRecordsTheIndexRegister()
     {
-        var scene = OpenQasmOnQuantumCircuitTests.TinyScene(_scratch);
-        var file = Export("search.ll", "export", "search", scene, "--size", "4", "--pixel", "3,0", "--format", "qir");
-        var text = File.ReadAllText(file);
+        var (file, text) = ExportTinySearch("search.ll", "qir");
         Assert.StartsWith("; QuantumRayTracing: ", text, StringComparison.Ordinal);
         Assert.Contains("\n; ideal outcome probabilities: 3:0.96", text, StringComparison.Ordinal);
         Assert.Contains("\"qir_profiles\"=\"adaptive_profile\"", text, StringComparison.Ordinal);

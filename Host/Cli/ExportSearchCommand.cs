@@ -1,5 +1,4 @@
 using System.CommandLine;
-using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Export;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
@@ -58,14 +57,12 @@ public sealed class ExportSearchCommand : Command
         SetAction(parse =>
         {
             var scene = DefaultScene.Load(parse.GetValue(_scene));
-            var geometry = new SceneGeometry(scene);
             var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
             var pixel = OptionText.ParsePixel(parse.GetValue(_pixel)).Pixel!.Value;
             if (pixel.X >= width || pixel.Y >= height) throw new UserError($"--pixel {pixel.X},{pixel.Y} is outside the {width}x{height} image");
-            if (geometry.Count < 2) throw new UserError($"scene {scene.Name}: a search needs at least 2 primitives");
+            if (scene.Rectangles.Count < 2) throw new UserError($"scene {scene.Name}: a search needs at least 2 primitives");
             var construction = OracleConstruction.Named.Single(c => c.Name == parse.GetValue(_oracle));
-            var (input, label) = EstimateRay.Pixel(scene, geometry, width, height, pixel.X, pixel.Y, construction);
-            var subject = SearchExport.Subject("qrt export search", scene.Name, $"camera ray through {label}", input, parse.GetValue(_iterations));
+            var subject = SearchExport.ForPixel(scene, width, height, pixel.X, pixel.Y, construction, parse.GetValue(_iterations));
             ExportRun.Run(_output.Settings(parse, subject), Console.Out);
             return ExitCodes.Success;
         });

@@ -19,9 +19,12 @@ public static class ExportHeader
             _ => "form: the QDK's QIR, adaptive profile; AND uncomputations by measurement and feedback, the register's results recorded as the output",
         });
         Line($"qubits: {circuit.Qubits}; {GateCounts.Of(circuit)}{(format == ExportFormat.Qasm2 ? "" : " (a branch's gates counted once whether or not they run)")}");
-        Line($"measured register: {subject.RegisterName}, {subject.RegisterQubits} bits, bit 0 least significant");
+        Line($"measured register: {subject.RegisterName}, {Plural(subject.RegisterQubits, "bit")}, bit 0 least significant");
         Line(ideal.Line);
         if (ideal.Remainder is { } rest) Line(rest);
         return text.ToString();
     }
+
+    /// <summary>"1 bit", "3 bits"; <paramref name="many"/> for nouns that do not just add an s.</summary>
+    public static string Plural(int count, string one, string? many = null) => $"{count} {(count == 1 ? one : many ?? one + "s")}";
 }

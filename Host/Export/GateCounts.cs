@@ -30,5 +30,5 @@ public sealed record GateCounts(IReadOnlyDictionary<string, int> Gates, int Meas
 
     /// <summary>"1234 gates (ccx 61, cx 343, ...), 3 measurements, 0 feedback branches".</summary>
     public override string ToString() =>
-        $"{TotalGates} gates ({string.Join(", ", Gates.Select(g => $"{g.Key} {g.Value}"))}), {Measurements} measurements, {Conditionals} feedback branches";
+        $"{ExportHeader.Plural(TotalGates, "gate")} ({string.Join(", ", Gates.Select(g => $"{g.Key} {g.Value}"))}), {ExportHeader.Plural(Measurements, "measurement")}, {ExportHeader.Plural(Conditionals, "feedback branch", "feedback branches")}";
 }

@@ -1,7 +1,9 @@
 using System.Globalization;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Export;
 
@@ -14,6 +16,13 @@ public static class SearchExport
 {
     /// <summary>Constructions whose QIR the QDK compiles: the measured unlookup's does not (the compiler stops on it).</summary>
     public static bool CanExport(OracleConstruction construction) => !construction.MeasuredUnload;
+
+    /// <summary>The search of the camera ray through pixel (x, y) of a width × height image of <paramref name="scene"/>.</summary>
+    public static ExportSubject ForPixel(Scene scene, int width, int height, int x, int y, OracleConstruction construction, int? iterations)
+    {
+        var (input, label) = EstimateRay.Pixel(scene, new SceneGeometry(scene), width, height, x, y, construction);
+        return Subject("qrt export search", scene.Name, $"camera ray through {label}", input, iterations);
+    }
 
     /// <summary>The subject; <paramref name="iterations"/> null takes the optimal count for the ray's marked set.</summary>
     public static ExportSubject Subject(string command, string scene, string ray, OracleInput input, int? iterations)
