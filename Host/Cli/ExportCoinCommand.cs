@@ -9,13 +9,13 @@ public sealed class ExportCoinCommand : Command
 {
     private readonly Option<double?> _mean = new("--mean")
     {
-        Description = "The direct coin: one qubit prepared with head probability F in [0, 1].",
+        Description = "The direct coin: one qubit prepared with head probability F in [0, 1]. Default: none; give --mean or --values.",
         HelpName = "F",
     };
 
     private readonly Option<double[]> _values = new("--values")
     {
-        Description = "The mean coin over these subpixel values, each in [0, 1], space-separated (1 to 64 values).",
+        Description = "The mean coin over these subpixel values, each in [0, 1], space-separated (1 to 64 values). Default: none; give --mean or --values.",
         AllowMultipleArgumentsPerToken = true,
         HelpName = "F",
     };

@@ -13,7 +13,7 @@ public sealed class ExportSearchCommand : Command
 
     private readonly Option<string> _pixel = new("--pixel")
     {
-        Description = "The camera ray through pixel X,Y (0,0 is the top left) of the image.",
+        Description = "The camera ray through pixel X,Y (0,0 is the top left) of the image. Default: none, it is required.",
         HelpName = "X,Y",
         Required = true,
     };
