@@ -12,6 +12,8 @@ public static class QSharpOperations
 
     public const string ApplyGateGroverIterationOnNewRegisters = "QuantumRayTracing.Intersection.ApplyGateGroverIterationOnNewRegisters";
 
+    public const string ApplyGateGroverSearch = "QuantumRayTracing.Intersection.ApplyGateGroverSearch";
+
     public const string ApplyIntersectionOracleOnNewRegisters = "QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters";
 
     public const string MeasureGateGroverBatch = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";
@@ -23,6 +25,10 @@ public static class QSharpOperations
     public const string MeasureGroverBatchWithControlledZ = "QuantumRayTracing.Search.MeasureGroverBatchWithControlledZ";
 
     public const string MeasureGroverSchedules = "QuantumRayTracing.Search.MeasureGroverSchedules";
+
+    public const string ApplyDirectCoin = "QuantumRayTracing.Supersampling.ApplyDirectCoin";
+
+    public const string ApplyMeanCoin = "QuantumRayTracing.Supersampling.ApplyMeanCoin";
 
     public const string CountCoinHeads = "QuantumRayTracing.Supersampling.CountCoinHeads";
 
