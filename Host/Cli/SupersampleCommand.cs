@@ -134,7 +134,7 @@ public sealed class SupersampleCommand : Command
         using var bridges = _engine.StartBridges(parse);
         var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => SupersampleRunView.PrintPlan(settings, plan));
         SupersampleRunView.Print(settings, run);
-        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Device is { } device ? RunNoise.Of(settings.Engine, device) : null);
         return ExitCodes.Success;
     }
 

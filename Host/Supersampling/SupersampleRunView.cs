@@ -15,7 +15,7 @@ public static class SupersampleRunView
             : $"{plan.InputName}: {input.Image.Width}x{input.Image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
         if (plan.Table is { } table)
             Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
-        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method)})");
+        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method, settings.Device is not null)})");
         Console.WriteLine($"noise model: {NoiseDescription(settings)}");
     }
 
@@ -42,9 +42,10 @@ public static class SupersampleRunView
             : EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
 
     // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
-    private static string Registers(SupersampleSettings settings)
+    private static string Registers(SupersampleSettings settings, bool singleQubitCoin)
     {
-        var index = CoinRegisters.SubpixelQubits(settings.Subpixels);
+        // The device model's coins hold no subpixel register: one qubit rotated to the mean.
+        var index = singleQubitCoin ? 0 : CoinRegisters.SubpixelQubits(settings.Subpixels);
         var counter = settings.Method == SupersampleMethod.Qss ? $" + {settings.CounterBitsOrDefault} counter" : "";
         return settings.Method == SupersampleMethod.Mc
             ? "each query samples one random subpixel"
