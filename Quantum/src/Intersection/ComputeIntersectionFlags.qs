@@ -3,6 +3,7 @@ namespace QuantumRayTracing.Intersection {
     import Std.Arithmetic.ApplyIfGreaterOrEqualLE;
     import Std.Arithmetic.ApplyIfLessOrEqualL;
     import Std.Arithmetic.ApplyIfLessOrEqualLE;
+    import Std.Arithmetic.ApplyIfGreaterOrEqualL;
     import Std.TableLookup.Select;
 
     /// # Summary
@@ -32,6 +33,10 @@ namespace QuantumRayTracing.Intersection {
     /// testing only the two in-plane axes with both bounds loaded at once needs 2 lookups and
     /// 1 unlookup (`OracleConstruction`).
     ///
+    /// With no bound register (`ConstantBounds`) each axis step compares the point with every
+    /// primitive's minimum and maximum as constants, each comparison controlled on the index
+    /// register holding that primitive: the same XOR trick, with no bound loaded.
+    ///
     /// The limit comparator reads the index register as the low bits and the depth register as
     /// the high bits of one number, so one comparison against a constant gives the lexicographic
     /// (depth, id) order.
@@ -54,11 +59,19 @@ namespace QuantumRayTracing.Intersection {
                 ApplyXorLookup(tables.NextAxis[s - 1], index, rpc + coord);
             }
             X(flag);
-            ApplyIfLessOrEqualLE(X, low, rpc, flag);
-            if tables.BoundRegisters == 1 {
-                ApplyXorLookup(tables.MinsToMaxes[s], index, coord);
+            if tables.BoundRegisters == 0 {
+                for p in 0..Length(tables.AxisBounds[s]) - 1 {
+                    let bounds = tables.AxisBounds[s][p];
+                    ApplyControlledOnInt(p, ApplyIfLessOrEqualL(X, bounds[0], rpc, _), index, flag);
+                    ApplyControlledOnInt(p, ApplyIfGreaterOrEqualL(X, bounds[1], rpc, _), index, flag);
+                }
+            } else {
+                ApplyIfLessOrEqualLE(X, low, rpc, flag);
+                if tables.BoundRegisters == 1 {
+                    ApplyXorLookup(tables.MinsToMaxes[s], index, coord);
+                }
+                ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
             }
-            ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
         }
         if tables.MeasuredUnload {
             Adjoint Select(tables.Unload, index, rpc + coord + registers.Depth);

@@ -36,11 +36,12 @@ namespace QuantumRayTracing.Intersection {
             fail $"limit {input.Limit} is outside 0..2^{d + indexBits}";
         }
         let axes = construction.InPlaneAxes ? 2 | 3;
-        let boundRegisters = construction.BothBounds ? 2 | 1;
+        let boundRegisters = construction.ConstantBounds ? 0 | (construction.BothBounds ? 2 | 1);
         mutable load = [];
         mutable minsToMaxes = [[], size = boundRegisters == 1 ? axes | 0];
         mutable nextAxis = [[], size = axes - 1];
         mutable unload = [];
+        mutable axisBounds = [[], size = boundRegisters == 0 ? axes | 0];
         for p in 0..count - 1 {
             let (bounds, point, depth, flat) = (input.Bounds[p], input.Points[p], input.Depths[p], input.FlatAxes[p]);
             if Length(bounds) != 6 or Length(point) != 3 {
@@ -67,12 +68,17 @@ namespace QuantumRayTracing.Intersection {
             let xor = (a, b) -> Mapped((x, y) -> x != y, Zipped(a, b));
             let low = axis -> bits(bounds[2 * axis]);
             let high = axis -> bits(bounds[2 * axis + 1]);
-            // What coord holds while an axis is tested: its minimum (then its maximum), or both.
-            let held = axis -> boundRegisters == 2 ? low(axis) + high(axis) | low(axis);
-            let left = axis -> boundRegisters == 2 ? low(axis) + high(axis) | high(axis);
+            // What coord holds while an axis is tested: its minimum (then its maximum), both, or nothing.
+            let held = axis -> boundRegisters == 2 ? low(axis) + high(axis) | (boundRegisters == 1 ? low(axis) | []);
+            let left = axis -> boundRegisters == 2 ? low(axis) + high(axis) | (boundRegisters == 1 ? high(axis) | []);
             let first = tested[0];
             let last = tested[axes - 1];
             set load += [bits(point[first]) + held(first) + IntAsBoolArray(depth, d) + [input.Valid[p]]];
+            if boundRegisters == 0 {
+                for s in 0..axes - 1 {
+                    set axisBounds w/= s <- axisBounds[s] + [[IntAsBigInt(bounds[2 * tested[s]]), IntAsBigInt(bounds[2 * tested[s] + 1])]];
+                }
+            }
             if boundRegisters == 1 {
                 for s in 0..axes - 1 {
                     set minsToMaxes w/= s <- minsToMaxes[s] + [bits(bounds[2 * tested[s]] ^^^ bounds[2 * tested[s] + 1])];
@@ -96,6 +102,7 @@ namespace QuantumRayTracing.Intersection {
             MinsToMaxes = minsToMaxes,
             NextAxis = nextAxis,
             Unload = unload,
+            AxisBounds = axisBounds,
             Near = IntAsBigInt(input.Near),
             Limit = IntAsBigInt(input.Limit),
         }
