@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Intersection;
 /// <param name="CoordinateQubits">The grid's bits; rpc and each bound register take this many.</param>
 /// <param name="BoundRegisters">Coordinate registers holding bounds: 1 or 2 (<see cref="OracleConstruction.BoundRegisters"/>).</param>
 /// <param name="DepthQubits">The table's depth bits.</param>
-/// <param name="FlagQubits">valid, one per tested axis, near, limit.</param>
+/// <param name="FlagQubits">valid (not with constant bounds), one per tested axis, near, limit.</param>
 /// <param name="AuxiliaryQubits">Peak auxiliaries inside library gates (see <see cref="For"/>).</param>
 public readonly record struct OracleRegisters(
     int IndexQubits, int CoordinateQubits, int BoundRegisters, int DepthQubits, int FlagQubits, int AuxiliaryQubits)
@@ -58,7 +58,8 @@ public readonly record struct OracleRegisters(
         var c = input.Table.CoordinateBits;
         var d = input.Table.DepthBits;
         var construction = input.Construction;
-        var flags = construction.Axes + 3;
+        // valid (none with constant bounds: a row without a point clears an axis flag), one per axis, near, limit.
+        var flags = construction.Axes + (construction.ConstantBounds ? 2 : 3);
         var constants = OracleConstants.For(input);
         var lookups = input.Geometry.Count <= 1 ? 0
             : construction.MeasuredUnload ? Math.Max(n - 1, PowerProducts(n / 2) + PowerProducts(n - n / 2))
@@ -78,7 +79,8 @@ public readonly record struct OracleRegisters(
     /// <summary>
     /// Peak auxiliaries of the constant-bound comparisons: minimum ≤ rpc and rpc ≤ maximum (rpc ≥ maximum + 1 inverted) for
     /// each primitive's tested axes, each controlled on its index: a constant strictly inside 1..2^c − 1 takes the comparator's
-    /// carries and the action's n + 1 controls (n − 1 more); at 0 or 2^c the action alone runs under the n controls (n − 2).
+    /// carries and the action's n + 1 controls (n − 1 more); at 0 or 2^c the action alone runs under the n controls (n − 2), as
+    /// does the X that clears a row without a point.
     /// </summary>
     private static int ControlledBoundComparators(OracleInput input)
     {
@@ -87,9 +89,10 @@ public readonly record struct OracleRegisters(
         int Comparator(long constant) => constant <= 0 || constant >= 1L << c
             ? Math.Max(0, n - 2)
             : ConstantComparator(constant, c) + Math.Max(0, n - 1);
-        var peak = 0;
+        // Rows without a point and indices past the last primitive get one X under the n controls; valid rows their comparators.
+        var peak = Math.Max(0, n - 2);
         for (var p = 0; p < geometry.Count; p++)
-            for (var axis = 0; axis < 3; axis++)
+            for (var axis = 0; axis < 3 && input.Table.IsValid(p); axis++)
                 if (!input.Construction.InPlaneAxes || axis != geometry.FlatAxis(p))
                     peak = Math.Max(peak, Math.Max(Comparator(geometry.Min(p, axis)), Comparator(geometry.Max(p, axis) + 1L)));
         return peak;

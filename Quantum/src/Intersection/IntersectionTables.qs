@@ -20,8 +20,8 @@ namespace QuantumRayTracing.Intersection {
     /// ## MeasuredUnload
     /// Whether `Load` is cleared by measurement (`Adjoint Select`) or by a second lookup.
     /// ## Load
-    /// The first tested axis's point and bound(s), the depth and the validity bit, loaded into
-    /// rpc + coord + depth + [valid] from |0⟩.
+    /// The first tested axis's point and bound(s), the depth and the validity bit (none with constant
+    /// bounds), loaded into rpc + coord + depth + valid from |0⟩.
     /// ## MinsToMaxes
     /// Per tested axis, min XOR max: turns coord's minimum into the maximum (one bound register
     /// only; empty otherwise).
@@ -32,8 +32,8 @@ namespace QuantumRayTracing.Intersection {
     /// The last tested axis's point and bound(s) and the depth, cleared from rpc + coord + depth
     /// (valid stays).
     /// ## AxisBounds
-    /// With no bound register: per tested axis step, per primitive, [minimum, maximum] on that axis
-    /// (empty otherwise).
+    /// With no bound register: per tested axis step, per primitive, [minimum, maximum] on that axis,
+    /// or [] for a row without a point (the whole array is empty with bound registers).
     /// ## Near
     /// The near comparator's constant.
     /// ## Limit

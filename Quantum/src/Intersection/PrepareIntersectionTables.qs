@@ -73,10 +73,12 @@ namespace QuantumRayTracing.Intersection {
             let left = axis -> boundRegisters == 2 ? low(axis) + high(axis) | (boundRegisters == 1 ? high(axis) | []);
             let first = tested[0];
             let last = tested[axes - 1];
-            set load += [bits(point[first]) + held(first) + IntAsBoolArray(depth, d) + [input.Valid[p]]];
+            set load += [bits(point[first]) + held(first) + IntAsBoolArray(depth, d) + (boundRegisters == 0 ? [] | [input.Valid[p]])];
             if boundRegisters == 0 {
                 for s in 0..axes - 1 {
-                    set axisBounds w/= s <- axisBounds[s] + [[IntAsBigInt(bounds[2 * tested[s]]), IntAsBigInt(bounds[2 * tested[s] + 1])]];
+                    // A row without a point carries no bounds: the oracle clears its flag instead.
+                    let entry = input.Valid[p] ? [IntAsBigInt(bounds[2 * tested[s]]), IntAsBigInt(bounds[2 * tested[s] + 1])] | [];
+                    set axisBounds w/= s <- axisBounds[s] + [entry];
                 }
             }
             if boundRegisters == 1 {
