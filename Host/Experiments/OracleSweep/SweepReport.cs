@@ -140,9 +140,10 @@ public sealed class SweepReport(IReadOnlyDictionary<(int Primitives, int Bits, s
             `device` is the construction for a machine of few qubits (`--oracle device`): the point is still loaded per axis from the
             ray's table, but no bound is: each axis step compares the point with every primitive's minimum and maximum as classical
             constants, each comparison controlled on the index register holding that primitive (2N controlled comparators per
-            axis instead of a bound register and its lookups). It drops the 2c qubits of the bound registers and fits ibmq_paris's
-            27; it is not the paper's 19, whose construction the paper does not give in enough detail to rebuild. Its cost grows
-            with N faster than `compact`'s (the comparators are per primitive), so it is for small device experiments, not renders.
+            axis instead of a bound register and its lookups), and validity is a classical fact too: a row without a point, or an
+            index past the last primitive, clears its first axis flag under index control. It drops the 2c qubits of the bound
+            registers and the valid qubit (the device experiment's figures are in the next section). Its gates grow with N faster
+            than `compact`'s (the comparators are per primitive), so it is for small device experiments, not renders.
             Like every construction it is checked against verify-rpc on every basis state (`GateOracleTests`).
             """);
 
