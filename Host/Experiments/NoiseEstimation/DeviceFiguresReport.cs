@@ -115,12 +115,16 @@ public static class DeviceFiguresReport
             error over means uniform on [0, 1] (estimate sin²(πy/2^t), from the readout distribution) is at most ε. QCoin needs no
             register beyond the subpixel qubits and the coin; its deepest circuit is step k's flip, 2^(k−1) operators; k here is the
             smallest whose measured mean absolute error (analytic engine, noiseless, {FigureTwelveFlips} flips per step, uniform random means) is at most ε.
+            The queries columns say what each spends for one estimate: QSS one run, QCoin {FigureTwelveFlips} flips per step (so its
+            k = 1 row already holds many queries; a smaller QCoin budget needs more steps for the same ε).
             """);
-        var table = new TextTable("fig12", ["ε", "QSS: extra register qubits t", "QSS: iterations per circuit", "QSS error", "QCoin: extra register qubits", "QCoin: steps k", "QCoin: iterations in its deepest circuit", "QCoin error"]);
+        var table = new TextTable("fig12", ["ε", "QSS: extra register qubits t", "QSS: iterations per circuit", "QSS: queries", "QSS error", "QCoin: extra register qubits", "QCoin: steps k", "QCoin: iterations in its deepest circuit", "QCoin: queries", "QCoin error"]);
+        string Count(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
         foreach (var row in figures.FigureTwelve)
-            table.Row(G(row.Target), row.QssQubits > 0 ? row.QssQubits.ToString(CultureInfo.InvariantCulture) : "> 12", row.QssQubits > 0 ? row.QssIterations.ToString("N0", CultureInfo.InvariantCulture) : "–",
-                row.QssQubits > 0 ? F(row.QssError) : "–", "0", row.QCoinSteps > 0 ? row.QCoinSteps.ToString(CultureInfo.InvariantCulture) : "> 10",
-                row.QCoinSteps > 0 ? row.QCoinIterations.ToString("N0", CultureInfo.InvariantCulture) : "–", row.QCoinSteps > 0 ? F(row.QCoinError) : "–");
+            table.Row(G(row.Target), row.QssQubits > 0 ? row.QssQubits.ToString(CultureInfo.InvariantCulture) : "> 12", row.QssQubits > 0 ? Count(row.QssIterations) : "–",
+                row.QssQubits > 0 ? Count(Supersampling.QssRequest.QueriesPerRun(row.QssQubits)) : "–", row.QssQubits > 0 ? F(row.QssError) : "–", "0",
+                row.QCoinSteps > 0 ? row.QCoinSteps.ToString(CultureInfo.InvariantCulture) : "> 10", row.QCoinSteps > 0 ? Count(row.QCoinIterations) : "–",
+                row.QCoinSteps > 0 ? Count(FigureTwelveFlips * Supersampling.QCoinEstimator.MinimumQueries(row.QCoinSteps)) : "–", row.QCoinSteps > 0 ? F(row.QCoinError) : "–");
         report.Table(table);
         var rows = figures.FigureTwelve.Where(r => r.QssQubits > 0).ToArray();
         report.Plot("fig12", new PlotSpec("Fig. 12: register qubits and iterations per circuit against ε (no noise)", "error ε", "count", AxisScale.Log10, AxisScale.Log10,

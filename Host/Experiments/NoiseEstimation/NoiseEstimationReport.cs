@@ -189,6 +189,14 @@ public static class NoiseEstimationReport
                 table.Row([Rate(rate), q.ToString(CultureInfo.InvariantCulture), .. columns.Select(m => F(Error(m))), F(Error("QSS") / Error("QCoin"), "0.00")]);
             }
         report.Table(table);
+        var floor = points.First(p => p.Method == AlwaysHalf).Error;
+        string Beating(double rate) => string.Join(", ", budgets.Select(q =>
+            $"{q}: {string.Join(", ", methods.Where(m => points.Single(p => p.Rate == rate && p.Queries == q && p.Method == m).Error < floor).Select(Label).DefaultIfEmpty("none"))}"));
+        report.Text($"""
+            **Against always answering ½** ({F(floor, "0.000")} on these pixels, whose means cluster near ½): the estimators below it at each
+            budget (queries: estimators) without noise are {Beating(0)}; at p = {Rate(NoiseEstimationSettings.NisqRates[^1])}: {Beating(NoiseEstimationSettings.NisqRates[^1])}.
+            Classical MC without noise beats it from {budgets.Where(q => points.Single(p => p.Rate == 0 && p.Queries == q && p.Method == ClassicalMonteCarlo).Error < floor).Select(q => q.ToString(CultureInfo.InvariantCulture)).DefaultIfEmpty("none of the budgets").First()} queries on.
+            """);
 
         var fallback = new TextTable("nisq-fallback", ["queries", .. methods.Skip(1)]);
         foreach (var q in budgets)
