@@ -38,5 +38,11 @@ public static class QSharpOperations
 
     public const string MeasureQssBatch = "QuantumRayTracing.Supersampling.MeasureQssBatch";
 
+    public const string CountDirectCoinHeadsOnDeviceBatch = "QuantumRayTracing.Supersampling.CountDirectCoinHeadsOnDeviceBatch";
+
+    public const string MeasureDirectQssOnDevice = "QuantumRayTracing.Supersampling.MeasureDirectQssOnDevice";
+
+    public const string MeasureDirectQssOnDeviceBatch = "QuantumRayTracing.Supersampling.MeasureDirectQssOnDeviceBatch";
+
     public const string MeasureQssReadout = "QuantumRayTracing.Supersampling.MeasureQssReadout";
 }

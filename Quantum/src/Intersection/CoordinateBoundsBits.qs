@@ -23,6 +23,6 @@ namespace QuantumRayTracing.Intersection {
     internal function CoordinateBoundsBits(bounds : Int[], axis : Int, coordinateBits : Int, boundRegisters : Int, leaving : Bool) : Bool[] {
         let low = IntAsBoolArray(bounds[2 * axis], coordinateBits);
         let high = IntAsBoolArray(bounds[2 * axis + 1], coordinateBits);
-        boundRegisters == 2 ? low + high | (leaving ? high | low)
+        boundRegisters == 2 ? low + high | (boundRegisters == 1 ? (leaving ? high | low) | [])
     }
 }

@@ -34,11 +34,12 @@ namespace QuantumRayTracing.Intersection {
             fail $"limit {input.Limit} is outside 0..2^{d + indexBits}";
         }
         let axes = construction.InPlaneAxes ? 2 | 3;
-        let boundRegisters = construction.BothBounds ? 2 | 1;
+        let boundRegisters = construction.ConstantBounds ? 0 | (construction.BothBounds ? 2 | 1);
         mutable load = [];
         mutable minsToMaxes = [[], size = boundRegisters == 1 ? axes | 0];
         mutable nextAxis = [[], size = axes - 1];
         mutable unload = [];
+        mutable axisBounds = [[], size = boundRegisters == 0 ? axes | 0];
         for p in 0..count - 1 {
             let (bounds, point, depth, flat) = (input.Bounds[p], input.Points[p], input.Depths[p], input.FlatAxes[p]);
             if Length(bounds) != 6 or Length(point) != 3 {
@@ -65,7 +66,14 @@ namespace QuantumRayTracing.Intersection {
             let bits = IntAsBoolArray(_, c);
             let first = tested[0];
             let last = tested[axes - 1];
-            set load += [bits(point[first]) + CoordinateBoundsBits(bounds, first, c, boundRegisters, false) + IntAsBoolArray(depth, d) + [input.Valid[p]]];
+            set load += [bits(point[first]) + CoordinateBoundsBits(bounds, first, c, boundRegisters, false) + IntAsBoolArray(depth, d) + (boundRegisters == 0 ? [] | [input.Valid[p]])];
+            if boundRegisters == 0 {
+                for s in 0..axes - 1 {
+                    // A row without a point carries no bounds: the oracle clears its flag instead.
+                    let entry = input.Valid[p] ? [IntAsBigInt(bounds[2 * tested[s]]), IntAsBigInt(bounds[2 * tested[s] + 1])] | [];
+                    set axisBounds w/= s <- axisBounds[s] + [entry];
+                }
+            }
             if boundRegisters == 1 {
                 for s in 0..axes - 1 {
                     set minsToMaxes w/= s <- minsToMaxes[s] + [bits(bounds[2 * tested[s]] ^^^ bounds[2 * tested[s] + 1])];
@@ -91,6 +99,7 @@ namespace QuantumRayTracing.Intersection {
             MinsToMaxes = minsToMaxes,
             NextAxis = nextAxis,
             Unload = unload,
+            AxisBounds = axisBounds,
             Near = IntAsBigInt(input.Near),
             Limit = IntAsBigInt(input.Limit),
         }
