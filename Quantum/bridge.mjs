@@ -18,6 +18,9 @@
 //   {"id":4,"method":"circuit","expr":"Ns.Op(8)","maxOperations":1000000}
 //                                                             -> {"id":4,"ok":true,"result":<circuit summary, see circuit-summary.mjs>}
 //     optional "exposure":true adds the noise exposure of every location (noise-exposure.mjs)
+//   {"id":5,"method":"export","apply":"Ns.Op(8, _)","qubits":3,"profile":"adaptive_ri"}
+//                                                             -> {"id":5,"ok":true,"result":{"qir":"<QIR text>","probabilities":[p0, p1, ...]}}
+//     "apply" is a Qubit[] => Unit expression; see circuit-export.mjs
 // A failure replies {"id":N,"ok":false,"error":{"kind":"qsharp"|"request","message":"...","location":"file:line:col","stack":"..."}}.
 // Requests are answered one at a time, in order; simulation runs synchronously inside WebAssembly,
 // so the host enforces time limits by killing this process.
@@ -28,6 +31,7 @@ import readline from "node:readline";
 import { fileURLToPath } from "node:url";
 import { getCompiler, loadWasmModule, QscEventTarget } from "qsharp-lang";
 import { summariseCircuit } from "./circuit-summary.mjs";
+import { exportEntryNamespace, exportEntrySource, registerDistribution } from "./circuit-export.mjs";
 
 const projectDir = path.dirname(fileURLToPath(import.meta.url));
 const sourceDir = path.join(projectDir, "src");
@@ -228,8 +232,33 @@ async function answer(compiler, program, versions, request) {
       }
       return summary;
     }
+    case "export": {
+      const apply = requireString(request, "apply");
+      const qubits = request.qubits;
+      if (!Number.isInteger(qubits) || qubits < 1 || qubits > 30) throw new RequestError(`request field "qubits" must be an integer from 1 to 30`);
+      const profile = request.profile ?? "adaptive_ri";
+      if (!["base", "adaptive_ri"].includes(profile)) throw new RequestError(`request field "profile" must be "base" or "adaptive_ri"`);
+      const withEntry = { ...program, sources: [...program.sources, ["export-entry.qs", exportEntrySource(apply, qubits)]] };
+      const events = new QscEventTarget(true);
+      try {
+        await compiler.run(withEntry, `${exportEntryNamespace}.DumpState()`, 1, events);
+      } catch {
+        // Reported from the shot result below.
+      }
+      const shot = events.getResults()[0];
+      if (!shot?.success) return { error: qsharpError(shot?.result ?? "the state dump did not run") };
+      const dump = shot.events.find((e) => e.type === "DumpMachine");
+      if (!dump) return { error: { kind: "qsharp", message: "the state dump produced no DumpMachine event" } };
+      let qir;
+      try {
+        qir = await compiler.getQir({ ...withEntry, profile });
+      } catch (e) {
+        return { error: thrownError(e) };
+      }
+      return { qir, probabilities: registerDistribution(dump, qubits) };
+    }
     default:
-      throw new RequestError(`unknown method ${JSON.stringify(request.method)}; expected version, run, estimate or circuit`);
+      throw new RequestError(`unknown method ${JSON.stringify(request.method)}; expected version, run, estimate, circuit or export`);
   }
 }
 

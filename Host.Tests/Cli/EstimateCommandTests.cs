@@ -147,7 +147,13 @@ public sealed class EstimateCommandTests : IDisposable
         Assert.Equal(0, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         var lines = File.ReadAllLines(output);
         Assert.Equal(GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandLine), lines[0]);
-        Assert.Contains("| paper (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
+        Assert.Contains("| paper, simulator (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
+        Assert.Contains("| paper, transpiled for ibmq_paris | 27 | 18277 | 11096 | the device's native gates, routed on its 27 qubits |", lines);
+        // The device experiment at the device's width: table 9's two rows and ours (the device construction fits 27 qubits).
+        Assert.Equal(["paper's table 9: simulator", "paper's table 9: transpiled for ibmq_paris", "ours, compact: search run (prepare, 1 iteration, measure)",
+            "ours, compact: the oracle Int_r once", "ours, device: search run (prepare, 1 iteration, measure)", "ours, device: the oracle Int_r once"],
+            DataRows(lines, "## The paper's device experiment at the device's width"));
+        Assert.Contains(lines, l => l.StartsWith("| ours, device: search run", StringComparison.Ordinal) && l.EndsWith("| yes |", StringComparison.Ordinal));
         // One row per requested N and bit count in the before → after tables.
         Assert.Equal(["4", "8"], DataRows(lines, "## The oracle against the number of primitives"));
         Assert.Equal(["2"], DataRows(lines, "## The oracle against the coordinate bits"));

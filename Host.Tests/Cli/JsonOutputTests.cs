@@ -113,6 +113,20 @@ public sealed partial class JsonOutputTests : IDisposable
     }
 
     [Fact]
+    public void SupersampleRecordsTheDeviceModelItRanUnder()
+    {
+        var (output, json) = Run("supersample", "--size", "4", "--subpixels", "2", "-m", "qcoin", "--device-noise", "1q=1e-2,2q=5e-2", "--readout-error", "0.02,0.1", "-o", "s.png");
+        var noise = json["noise"]!;
+        Assert.Equal("device, depolarizing approximation", (string?)noise["model"]);
+        Assert.Equal(0.01, (double)noise["rates"]!["oneQubit"]!);
+        Assert.Equal(0.05, (double)noise["rates"]!["twoQubit"]!);
+        Assert.Equal(0.02, (double)noise["rates"]!["readZeroAsOne"]!);
+        Assert.Equal(0.1, (double)noise["rates"]!["readOneAsZero"]!);
+        Assert.Contains($"noise model: {(string?)noise["description"]}", output);
+        Assert.Contains("registers: 0 subpixel + 1 coin qubits", output);
+    }
+
+    [Fact]
     public void SupersampleRecordsEveryPrintedFigure()
     {
         var (output, json) = Run("supersample", "--size", "8", "--subpixels", "4", "-m", "qss", "--seed", "3", "-o", "s.png");

@@ -94,6 +94,7 @@ public partial class GateOracleTests(FullStateFixture fixture)
     [InlineData("baseline")]
     [InlineData("compact")]
     [InlineData("narrow")]
+    [InlineData("device")]
     public void OracleMatchesVerifyRpcOnEveryBasisState(string construction)
     {
         var random = new SeededRandom(20261122);
@@ -233,7 +234,7 @@ public partial class GateOracleTests(FullStateFixture fixture)
             + "Bounds = [[0, 14, 0, 14, 2, 2], [0, 14, 0, 14, 4, 4], [0, 14, 0, 14, 6, 6], [0, 14, 0, 14, 8, 8], [0, 14, 0, 14, 10, 10], [0, 14, 0, 14, 12, 12]], "
             + "Points = [[7, 7, 2], [7, 7, 4], [7, 7, 6], [7, 7, 8], [7, 7, 10], [7, 7, 12]], "
             + "Valid = [true, true, true, true, true, true], Depths = [2, 4, 6, 8, 10, 12], Near = 3, Limit = 128, "
-            + "FlatAxes = [2, 2, 2, 2, 2, 2], Construction = new QuantumRayTracing.Intersection.OracleConstruction { InPlaneAxes = false, BothBounds = true, MeasuredUnload = false } }",
+            + "FlatAxes = [2, 2, 2, 2, 2, 2], Construction = new QuantumRayTracing.Intersection.OracleConstruction { InPlaneAxes = false, BothBounds = true, MeasuredUnload = false, ConstantBounds = false } }",
             GateEngine.OracleArgument(input with { Construction = new OracleConstruction("test", InPlaneAxes: false, BothBounds: true, MeasuredUnload: false) }));
     }
 

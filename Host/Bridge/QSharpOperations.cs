@@ -12,6 +12,8 @@ public static class QSharpOperations
 
     public const string ApplyGateGroverIterationOnNewRegisters = "QuantumRayTracing.Intersection.ApplyGateGroverIterationOnNewRegisters";
 
+    public const string ApplyGateGroverSearch = "QuantumRayTracing.Intersection.ApplyGateGroverSearch";
+
     public const string ApplyIntersectionOracleOnNewRegisters = "QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters";
 
     public const string MeasureGateGroverBatch = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";
@@ -24,6 +26,10 @@ public static class QSharpOperations
 
     public const string MeasureGroverSchedules = "QuantumRayTracing.Search.MeasureGroverSchedules";
 
+    public const string ApplyDirectCoin = "QuantumRayTracing.Supersampling.ApplyDirectCoin";
+
+    public const string ApplyMeanCoin = "QuantumRayTracing.Supersampling.ApplyMeanCoin";
+
     public const string CountCoinHeads = "QuantumRayTracing.Supersampling.CountCoinHeads";
 
     public const string CountCoinHeadsBatch = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
@@ -31,6 +37,12 @@ public static class QSharpOperations
     public const string CountDirectCoinHeadsBatch = "QuantumRayTracing.Supersampling.CountDirectCoinHeadsBatch";
 
     public const string MeasureQssBatch = "QuantumRayTracing.Supersampling.MeasureQssBatch";
+
+    public const string CountDirectCoinHeadsOnDeviceBatch = "QuantumRayTracing.Supersampling.CountDirectCoinHeadsOnDeviceBatch";
+
+    public const string MeasureDirectQssOnDevice = "QuantumRayTracing.Supersampling.MeasureDirectQssOnDevice";
+
+    public const string MeasureDirectQssOnDeviceBatch = "QuantumRayTracing.Supersampling.MeasureDirectQssOnDeviceBatch";
 
     public const string MeasureQssReadout = "QuantumRayTracing.Supersampling.MeasureQssReadout";
 }

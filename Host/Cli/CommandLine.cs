@@ -29,6 +29,7 @@ public static class CommandLine
         root.Subcommands.Add(new ScenesCommand());
         root.Subcommands.Add(new BenchCommand());
         root.Subcommands.Add(new EstimateCommand());
+        root.Subcommands.Add(new ExportCommand());
         root.Subcommands.Add(new WorkerCommand());
         return root;
     }

@@ -11,7 +11,7 @@ public sealed class EstimateOptions
 {
     public readonly Option<string> Oracle = new("--oracle")
     {
-        Description = "How the oracle is built: baseline (x, y and z tested, minimum then maximum in one register), compact (only the two in-plane axes, both bounds at once; the default) or narrow (compact, unloading by lookup instead of measurement: more Toffolis, fewer auxiliary qubits).",
+        Description = "How the oracle is built: baseline (x, y and z tested, minimum then maximum in one register), compact (only the two in-plane axes, both bounds at once; the default), narrow (compact, unloading by lookup instead of measurement: more Toffolis, fewer auxiliary qubits) or device (no bound or valid qubit: each primitive's bounds compared as constants under index control; the fewest qubits, more gates as N grows).",
         DefaultValueFactory = _ => OracleConstruction.Default.Name,
         HelpName = string.Join('|', OracleConstruction.Named.Select(c => c.Name)),
     };

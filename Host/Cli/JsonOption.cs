@@ -31,15 +31,15 @@ public sealed class JsonOption
 
     /// <summary>
     /// Writes the file when --json was given: <paramref name="figures"/> are the result records the command printed,
-    /// <paramref name="ranOn"/> where it printed that the work ran, <paramref name="noiseDescription"/> the noise model as it printed it.
+    /// <paramref name="ranOn"/> where it printed that the work ran, <paramref name="noise"/> the noise when not the engine options' own.
     /// </summary>
-    public void Write(ParseResult parse, object figures, EngineOptions? engine = null, RunPlace? ranOn = null, string? noiseDescription = null)
+    public void Write(ParseResult parse, object figures, EngineOptions? engine = null, RunPlace? ranOn = null, RunNoise? noise = null)
     {
         if (Path(parse) is not { } path) return;
         var record = new RunRecord(parse.CommandResult.Command.Name, Values(parse),
             engine is null ? null : parse.GetValue(engine.Seed),
             engine is null ? null : EngineFactory.Name(parse.GetValue(engine.Engine)),
-            engine is null ? RunNoise.None : RunNoise.Of(parse.GetValue(engine.Engine), engine.GetNoise(parse), noiseDescription), figures, ranOn);
+            noise ?? (engine is null ? RunNoise.None : RunNoise.Of(parse.GetValue(engine.Engine), engine.GetNoise(parse))), figures, ranOn);
         RunJsonFile.Write(path, record);
     }
 

@@ -77,7 +77,7 @@ public sealed class RenderCommand : Command
         RenderRunView.PrintPlan(settings, RenderPlan.Of(settings));
         var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), RenderRunView.PrintForecast);
         RenderRunView.Print(settings, run);
-        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.NoiseDescription);
+        _json.Write(parse, run.Figures, _engine, run.RanOn, Output.RunNoise.Of(settings.Engine, settings.NoiseModel, settings.NoiseDescription));
         return ExitCodes.Success;
     }
 

@@ -81,12 +81,17 @@ public sealed class SupersampleCommand : Command
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic, EngineKind.FullState);
 
+    private readonly Option<string?> _deviceNoise = CommonOptions.DeviceNoise();
+
+    private readonly Option<string?> _readoutError = CommonOptions.ReadoutError();
+
     private readonly JsonOption _json = new();
 
     public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from an image file or a scene) with Monte Carlo, QSS, QCoin or MLAE; print the error against the exact average.")
     {
         this.AddOptions(_image, _scene, _size, _subpixels, _method, _queries, _steps, _levels, _counterBits, _planes, _qssValues, _output);
         _engine.AddTo(this);
+        this.AddOptions(_deviceNoise, _readoutError);
         _json.AddTo(this);
         _method.Choices();
         _qssValues.Choices();
@@ -109,6 +114,8 @@ public sealed class SupersampleCommand : Command
         }
         if (r.GetValue(_image) is not null && r.GetValue(_scene) is not null) r.AddError("--image and --scene: give one input, not both");
         else if (r.GetValue(_image) is not null && r.GetValue(_size) is not null) r.AddError("--size applies to scenes only: an image's output size is its size divided by --subpixels");
+        else if ((r.GetValue(_deviceNoise) is not null || r.GetValue(_readoutError) is not null) && r.GetValue(_engine.Noise) is not null)
+            r.AddError("--noise and --device-noise/--readout-error: give one noise model, not both");
         else if (settings.Problem() is { } problem) r.AddError(problem);
     }
 
@@ -127,7 +134,7 @@ public sealed class SupersampleCommand : Command
         using var bridges = _engine.StartBridges(parse);
         var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => SupersampleRunView.PrintPlan(settings, plan));
         SupersampleRunView.Print(settings, run);
-        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Device is { } device ? RunNoise.Of(settings.Engine, device) : null);
         return ExitCodes.Success;
     }
 
@@ -142,6 +149,7 @@ public sealed class SupersampleCommand : Command
             : DefaultScene.Stem;
         return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size,
             parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{stem}-{OptionRules.ChoiceName(method.Method)}.png",
-            Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse));
+            Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse),
+            Device: CommonOptions.GetDeviceNoise(parse, _deviceNoise, _readoutError));
     }
 }

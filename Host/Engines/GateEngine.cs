@@ -129,7 +129,8 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         return text.Append("], Construction = new ").Append(QSharpTypes.OracleConstruction)
             .Append(" { InPlaneAxes = ").Append(Bool(construction.InPlaneAxes))
             .Append(", BothBounds = ").Append(Bool(construction.BothBounds))
-            .Append(", MeasuredUnload = ").Append(Bool(construction.MeasuredUnload)).Append(" } }").ToString();
+            .Append(", MeasuredUnload = ").Append(Bool(construction.MeasuredUnload))
+            .Append(", ConstantBounds = ").Append(Bool(construction.ConstantBounds)).Append(" } }").ToString();
     }
 
     private static string Bool(bool value) => value ? "true" : "false";

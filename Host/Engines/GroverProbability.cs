@@ -14,6 +14,17 @@ public static class GroverProbability
         return s * s;
     }
 
+    /// <summary>
+    /// The iteration count that maximises <see cref="OfMarked(int, int, int)"/>: the r nearest
+    /// π/(4θ) − 1/2, that is floor(π/(4θ)). None marked or all marked: 0, as no r helps.
+    /// </summary>
+    public static int OptimalIterations(int count, int marked)
+    {
+        if (marked == 0 || marked == count) return 0;
+        var theta = Math.Asin(Math.Sqrt((double)marked / count));
+        return (int)Math.Floor(Math.PI / (4 * theta));
+    }
+
     public static double OfMarked(GroverRequest request) =>
         OfMarked(request.Marked.Count, request.Marked.MarkedCount, request.Iterations);
 }

@@ -24,7 +24,7 @@ public static class EstimateTable
             $"scene: {scene.Name}: N = {geometry.Count}, {scene.Grid}",
             $"ray: {subject.Label}, origin {ray.Origin}, direction {ray.Direction}; its first search (full range: every depth, every id; marked rows: {table.Marked(subject.Oracle.Window).MarkedCount})",
             $"registers: {geometry.IndexBits} index, {table.CoordinateBits} bits per coordinate, {table.DepthBits} depth bits",
-            $"oracle construction: {construction} ({(construction.InPlaneAxes ? "the two in-plane axes" : "all three axes")}, {(construction.BothBounds ? "both bounds loaded at once" : "minimum then maximum in one register")}, {(construction.MeasuredUnload ? "unload by measurement" : "unload by lookup")})",
+            $"oracle construction: {construction} ({(construction.InPlaneAxes ? "the two in-plane axes" : "all three axes")}, {(construction.ConstantBounds ? "bounds as constants under index control" : construction.BothBounds ? "both bounds loaded at once" : "minimum then maximum in one register")}, {(construction.MeasuredUnload ? "unload by measurement" : "unload by lookup")})",
             $"QSearch run: r = {subject.Iterations.ToString(CultureInfo.InvariantCulture)} iterations",
         ];
     }

@@ -23,5 +23,6 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchFullStatePerformanceCommand());
         Subcommands.Add(new BenchClusterPerformanceCommand());
         Subcommands.Add(new BenchBvhComparisonCommand());
+        Subcommands.Add(new BenchScaleCommand());
     }
 }

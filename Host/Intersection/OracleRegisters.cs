@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Intersection;
 /// <param name="CoordinateQubits">The grid's bits; rpc and each bound register take this many.</param>
 /// <param name="BoundRegisters">Coordinate registers holding bounds: 1 or 2 (<see cref="OracleConstruction.BoundRegisters"/>).</param>
 /// <param name="DepthQubits">The table's depth bits.</param>
-/// <param name="FlagQubits">valid, one per tested axis, near, limit.</param>
+/// <param name="FlagQubits">valid (not with constant bounds), one per tested axis, near, limit.</param>
 /// <param name="AuxiliaryQubits">Peak auxiliaries inside library gates (see <see cref="For"/>).</param>
 public readonly record struct OracleRegisters(
     int IndexQubits, int CoordinateQubits, int BoundRegisters, int DepthQubits, int FlagQubits, int AuxiliaryQubits)
@@ -47,8 +47,9 @@ public readonly record struct OracleRegisters(
     /// helpers), the measurement-based unlookup when the construction uses it (the phase lookup's
     /// power products, 2^⌊n/2⌋ − ⌊n/2⌋ − 1 + 2^⌈n/2⌉ − ⌈n/2⌉ − 1), a register comparator (c carries), a
     /// comparator with a constant k on w qubits (w − 1 − trailing zeros of k, none when k is 0 or 2^w),
-    /// the flags' multi-controlled gate (flags − 2) and, in a search, the reflection's multi-controlled
-    /// Z (n − 2).
+    /// with constant bounds each primitive's comparators under the n index controls (the comparator's and
+    /// those of its action's n + 1 controls, <see cref="ControlledBoundComparators"/>), the flags'
+    /// multi-controlled gate (flags − 2) and, in a search, the reflection's multi-controlled Z (n − 2).
     /// </remarks>
     private static OracleRegisters Model(OracleInput input, bool withReflection)
     {
@@ -57,7 +58,8 @@ public readonly record struct OracleRegisters(
         var c = input.Table.CoordinateBits;
         var d = input.Table.DepthBits;
         var construction = input.Construction;
-        var flags = construction.Axes + 3;
+        // valid (none with constant bounds: a row without a point clears an axis flag), one per axis, near, limit.
+        var flags = construction.Axes + (construction.ConstantBounds ? 2 : 3);
         var constants = OracleConstants.For(input);
         var lookups = input.Geometry.Count <= 1 ? 0
             : construction.MeasuredUnload ? Math.Max(n - 1, PowerProducts(n / 2) + PowerProducts(n - n / 2))
@@ -65,13 +67,35 @@ public readonly record struct OracleRegisters(
         var auxiliary = new[]
         {
             lookups,
-            c,
+            construction.ConstantBounds ? ControlledBoundComparators(input) : c,
             ConstantComparator(constants.Near, d),
             ConstantComparator(constants.Limit, n + d),
             flags - 2,
             withReflection ? SearchRegisters.For(input.Geometry.Count).AuxiliaryQubits : 0,
         }.Max();
         return new OracleRegisters(n, c, construction.BoundRegisters, d, flags, auxiliary);
+    }
+
+    /// <summary>
+    /// Peak auxiliaries of the constant-bound comparisons: minimum ≤ rpc and rpc ≤ maximum (rpc ≥ maximum + 1 inverted) for
+    /// each primitive's tested axes, each controlled on its index: a constant strictly inside 1..2^c − 1 takes the comparator's
+    /// carries and the action's n + 1 controls (n − 1 more); at 0 or 2^c the action alone runs under the n controls (n − 2), as
+    /// does the X that clears a row without a point.
+    /// </summary>
+    private static int ControlledBoundComparators(OracleInput input)
+    {
+        var (geometry, c) = (input.Geometry, input.Table.CoordinateBits);
+        var n = geometry.IndexBits;
+        int Comparator(long constant) => constant <= 0 || constant >= 1L << c
+            ? Math.Max(0, n - 2)
+            : ConstantComparator(constant, c) + Math.Max(0, n - 1);
+        // Rows without a point and indices past the last primitive get one X under the n controls; valid rows their comparators.
+        var peak = Math.Max(0, n - 2);
+        for (var p = 0; p < geometry.Count; p++)
+            for (var axis = 0; axis < 3 && input.Table.IsValid(p); axis++)
+                if (!input.Construction.InPlaneAxes || axis != geometry.FlatAxis(p))
+                    peak = Math.Max(peak, Math.Max(Comparator(geometry.Min(p, axis)), Comparator(geometry.Max(p, axis) + 1L)));
+        return peak;
     }
 
     private static int PowerProducts(int bits) => (1 << bits) - bits - 1;

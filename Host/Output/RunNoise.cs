@@ -22,4 +22,10 @@ public sealed record RunNoise(string Model, IReadOnlyDictionary<string, double>?
         var rates = new Dictionary<string, double> { ["px"] = noise.Px, ["py"] = noise.Py, ["pz"] = noise.Pz, ["qubitLoss"] = noise.QubitLoss };
         return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, description ?? EngineFactory.NoiseDescription(kind, noise));
     }
+
+    /// <summary>The record of a device model: its one- and two-qubit rates and readout flips.</summary>
+    public static RunNoise Of(EngineKind kind, DeviceNoiseModel device) =>
+        new(kind.ApproximatesNoise ? "device, depolarizing approximation" : "device",
+            new Dictionary<string, double> { ["oneQubit"] = device.OneQubit, ["twoQubit"] = device.TwoQubit, ["readZeroAsOne"] = device.ReadZeroAsOne, ["readOneAsZero"] = device.ReadOneAsZero },
+            device.Description());
 }

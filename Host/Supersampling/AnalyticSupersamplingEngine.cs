@@ -6,10 +6,14 @@ namespace QuantumRayTracing.Supersampling;
 /// <summary>
 /// Samples the supersampling circuits' exact outcome distributions (<see cref="CoinProbability"/>) with a
 /// seeded generator, in request order: the same seed and requests give the same outcomes. Under noise each
-/// flip and readout is drawn from the global depolarizing approximation (<see cref="SupersamplingNoise"/>).
+/// flip and readout is drawn from the global depolarizing approximation (<see cref="SupersamplingNoise"/>); under a
+/// device model, which this engine runs on the single-qubit coins only, from <see cref="DeviceNoise"/>.
 /// </summary>
-public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel? noise = null, DepolarizingApproximation? approximation = null) : ISupersamplingEngine
+public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel? noise = null, DepolarizingApproximation? approximation = null, DeviceNoiseModel? device = null) : ISupersamplingEngine
 {
+    /// <summary>Why a device model cannot run a request: its gates are counted by arity for the single-qubit coins only.</summary>
+    public const string DeviceNeedsDirectCoins = "the device noise model runs the single-qubit (direct) coins and QSS on them, the QCoin paper's device circuits";
+
     public string Name => "analytic";
 
     /// <summary>The noise outcomes are sampled under; the ideal model takes the exact path, draw for draw.</summary>
@@ -19,13 +23,22 @@ public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel?
 
     public DepolarizingApproximation Approximation { get; } = approximation ?? DepolarizingApproximation.Default;
 
+    /// <summary>The device model outcomes are sampled under, or null; it replaces <see cref="Noise"/>, which must then be ideal.</summary>
+    public DeviceNoiseModel? Device { get; } = device is not null && noise is { IsNoiseless: false }
+        ? throw new ArgumentException("give a Pauli noise model or a device model, not both", nameof(device))
+        : device;
+
     public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
     {
         var heads = new int[requests.Count];
         for (var k = 0; k < requests.Count; k++)
         {
             var request = requests[k];
-            var p = Noise.IsNoiseless
+            var p = Device is not null
+                ? request.Kind == CoinKind.Direct
+                    ? DeviceNoise.DirectCoinHeadProbability(Device, CoinProbability.HeadAmplitude(request.Kind, request.Amplitudes), request.Iterations)
+                    : throw new ArgumentException(DeviceNeedsDirectCoins)
+                : Noise.IsNoiseless
                 ? CoinProbability.Head(CoinProbability.HeadAmplitude(request.Kind, request.Amplitudes), request.Iterations)
                 : SupersamplingNoise.CoinHeadProbability(request.Kind, request.Amplitudes, request.Iterations, Noise, Approximation);
             heads[k] = Binomial(request.Flips, p);
@@ -39,13 +52,25 @@ public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel?
         for (var k = 0; k < requests.Count; k++)
         {
             var request = requests[k];
-            var distribution = Noise.IsNoiseless
-                ? CoinProbability.QssReadout(CoinProbability.HeadAmplitude(CoinKind.Mean, request.Amplitudes) is var s ? s * s : 0, request.CounterBits)
-                : SupersamplingNoise.QssReadout(request.Amplitudes, request.CounterBits, Noise, Approximation);
+            var distribution = QssDistribution(request);
             readouts[k] = new int[request.Shots];
             for (var shot = 0; shot < request.Shots; shot++) readouts[k][shot] = Categorical(distribution);
         }
         return readouts;
+    }
+
+    private double[] QssDistribution(QssRequest request)
+    {
+        var amplitude = CoinProbability.HeadAmplitude(CoinKind.Mean, request.Amplitudes);
+        if (request.Coin == CoinKind.Direct)
+        {
+            if (Device is not null) return DeviceNoise.DirectQssReadout(Device, amplitude, request.CounterBits, Approximation);
+            if (!Noise.IsNoiseless) throw new ArgumentException("QSS on the single-qubit coin runs noiseless or under a device model");
+        }
+        else if (Device is not null) throw new ArgumentException(DeviceNeedsDirectCoins);
+        return Noise.IsNoiseless
+            ? CoinProbability.QssReadout(amplitude * amplitude, request.CounterBits)
+            : SupersamplingNoise.QssReadout(request.Amplitudes, request.CounterBits, Noise, Approximation);
     }
 
     private int Binomial(int trials, double p)

@@ -4,7 +4,8 @@ namespace QuantumRayTracing.Supersampling;
 /// The QCoin paper's hardware setting (sec. 6): every coin is one qubit rotated straight to its head amplitude, which the
 /// host computes from the subpixel values, instead of the subpixel register and the shader oracle. A mean coin becomes
 /// √(1 − f)|0⟩ + √f|1⟩ with f = (1/N) Σ a_i²; QCoin's shifted coin √(1 − (f − E)²)|0⟩ + (f − E)|1⟩. The head
-/// probabilities are those of the full coins; only the circuits, and so their noise, differ. QSS readouts pass through.
+/// probabilities are those of the full coins; only the circuits, and so their noise, differ. QSS runs likewise on the
+/// one coin qubit under its counter (the paper's device QSS, fig. 9 top).
 /// </summary>
 public sealed class DirectCoinEngine(ISupersamplingEngine inner) : ISupersamplingEngine
 {
@@ -17,7 +18,8 @@ public sealed class DirectCoinEngine(ISupersamplingEngine inner) : ISupersamplin
             _ => r with { Kind = CoinKind.Direct },
         }).ToArray());
 
-    public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests) => inner.ReadCounters(requests);
+    public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests) =>
+        inner.ReadCounters(requests.Select(r => r with { Coin = CoinKind.Direct, Amplitudes = [CoinProbability.HeadAmplitude(CoinKind.Mean, r.Amplitudes)] }).ToArray());
 
     public void Dispose() => inner.Dispose();
 }

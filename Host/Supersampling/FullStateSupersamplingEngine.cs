@@ -4,6 +4,7 @@ using System.Text.Json;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
+using QuantumRayTracing.Randomness;
 
 namespace QuantumRayTracing.Supersampling;
 
@@ -12,12 +13,25 @@ namespace QuantumRayTracing.Supersampling;
 /// bounded simulation work, each chunk is one call of <c>CountCoinHeadsBatch</c>, <c>CountDirectCoinHeadsBatch</c> or <c>MeasureQssBatch</c>
 /// on its own bridge, and the chunks run on all workers at once. Outcomes cannot be seeded. A batch
 /// holding a circuit wider than <see cref="MaxQubits"/> is refused before any of it is sent. Under a
-/// <see cref="NoiseModel"/> other than the ideal one the calls run on the noisy simulator.
+/// <see cref="NoiseModel"/> other than the ideal one the calls run on the noisy simulator. Under a <see cref="DeviceNoiseModel"/>
+/// the single-qubit coins and QSS on them run as <c>CountDirectCoinHeadsOnDeviceBatch</c> and <c>MeasureDirectQssOnDeviceBatch</c>,
+/// which set each gate's rate inside Q#, and the host flips the measured bits by the readout error with
+/// <paramref name="readoutRandom"/>, in request order.
 /// </summary>
-public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true, int? maxQubits = null, NoiseModel? noise = null) : ISupersamplingEngine
+public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool = true, int? maxQubits = null, NoiseModel? noise = null,
+    DeviceNoiseModel? device = null, SeededRandom? readoutRandom = null) : ISupersamplingEngine
 {
     /// <summary>The noise every call runs under.</summary>
     public NoiseModel Noise { get; } = noise ?? NoiseModel.None;
+
+    /// <summary>The device model the single-qubit coins run under, or null; it replaces <see cref="Noise"/>, which must then be ideal.</summary>
+    public DeviceNoiseModel? Device { get; } = device is not null && noise is { IsNoiseless: false }
+        ? throw new ArgumentException("give a Pauli noise model or a device model, not both", nameof(device))
+        : device;
+
+    private readonly ReadoutFlips? _readout = device is { HasReadoutError: true }
+        ? new ReadoutFlips(device, readoutRandom ?? throw new ArgumentException("a readout error needs the host's seeded generator", nameof(readoutRandom)))
+        : null;
 
     /// <summary>Oracle applications (each N controlled rotations) per call: a few seconds of simulation, far below the bridge's time limit.</summary>
     public const double MaxOracleCallsPerChunk = 20_000;
@@ -43,8 +57,14 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         var heads = new int[requests.Count];
         var direct = Enumerable.Range(0, requests.Count).Where(k => requests[k].Kind == CoinKind.Direct).ToArray();
         var subpixel = Enumerable.Range(0, requests.Count).Where(k => requests[k].Kind != CoinKind.Direct).ToArray();
+        if (Device is not null && subpixel.Length > 0) throw new ArgumentException(AnalyticSupersamplingEngine.DeviceNeedsDirectCoins);
         FlipBatch(subpixel.Select(k => requests[k]).ToArray(), r => (double)r.Queries * r.Amplitudes.Length, QSharpOperations.CountCoinHeadsBatch, CoinExpression, subpixel, heads);
-        FlipBatch(direct.Select(k => requests[k]).ToArray(), r => r.Queries, QSharpOperations.CountDirectCoinHeadsBatch, DirectCoinExpression, direct, heads);
+        if (Device is { } model)
+            FlipBatch(direct.Select(k => requests[k]).ToArray(), r => r.Queries, QSharpOperations.CountDirectCoinHeadsOnDeviceBatch, c => DeviceCoinExpression(model, c), direct, heads);
+        else
+            FlipBatch(direct.Select(k => requests[k]).ToArray(), r => r.Queries, QSharpOperations.CountDirectCoinHeadsBatch, DirectCoinExpression, direct, heads);
+        if (_readout is not null)
+            for (var k = 0; k < heads.Length; k++) heads[k] = _readout.ReadHeads(heads[k], requests[k].Flips);
         return heads;
     }
 
@@ -69,19 +89,31 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
             SimulatorCapacity.Check($"a QSS readout with {widest.CounterBits} counter bits over {widest.Amplitudes.Length} subpixels", qubits, qubits, MaxQubits);
         }
         var readouts = new int[requests.Count][];
-        Run(requests, r => (double)r.Shots * QssRequest.QueriesPerRun(r.CounterBits) * r.Amplitudes.Length, QSharpOperations.MeasureQssBatch, QssExpression, (chunk, start, json) =>
+        var direct = Enumerable.Range(0, requests.Count).Where(k => requests[k].Coin == CoinKind.Direct).ToArray();
+        var subpixel = Enumerable.Range(0, requests.Count).Where(k => requests[k].Coin != CoinKind.Direct).ToArray();
+        if (Device is not null && subpixel.Length > 0) throw new ArgumentException(AnalyticSupersamplingEngine.DeviceNeedsDirectCoins);
+        if (direct.Length > 0 && !Noise.IsNoiseless) throw new ArgumentException("QSS on the single-qubit coin runs noiseless or under a device model");
+        var model = Device ?? new DeviceNoiseModel(0, 0);
+        ReadBatch(subpixel.Select(k => requests[k]).ToArray(), r => r.Amplitudes.Length, QSharpOperations.MeasureQssBatch, QssExpression, subpixel, readouts);
+        ReadBatch(direct.Select(k => requests[k]).ToArray(), _ => 1, QSharpOperations.MeasureDirectQssOnDeviceBatch, c => DeviceQssExpression(model, c), direct, readouts);
+        if (_readout is not null)
+            for (var k = 0; k < readouts.Length; k++)
+                for (var shot = 0; shot < readouts[k].Length; shot++) readouts[k][shot] = _readout.ReadBits(readouts[k][shot], requests[k].CounterBits);
+        return readouts;
+    }
+
+    private void ReadBatch(QssRequest[] requests, Func<QssRequest, double> width, string operation, Func<IReadOnlyList<QssRequest>, string> expression, int[] positions, int[][] readouts) =>
+        Run(requests, r => r.Shots * QssRequest.QueriesPerRun(r.CounterBits) * width(r), operation, expression, (chunk, start, json) =>
         {
-            var values = JsonSerializer.Deserialize<int[][]>(json) ?? throw new BridgeException($"{QSharpOperations.MeasureQssBatch} returned no value");
-            if (values.Length != chunk.Count) throw new BridgeException($"{QSharpOperations.MeasureQssBatch} returned {values.Length} results for {chunk.Count} requests");
+            var values = JsonSerializer.Deserialize<int[][]>(json) ?? throw new BridgeException($"{operation} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{operation} returned {values.Length} results for {chunk.Count} requests");
             for (var k = 0; k < chunk.Count; k++)
             {
                 if (values[k].Length != chunk[k].Shots || values[k].Any(y => y < 0 || y >= 1 << chunk[k].CounterBits))
-                    throw new BridgeException($"{QSharpOperations.MeasureQssBatch} returned readouts outside 0..{(1 << chunk[k].CounterBits) - 1} or the wrong number of them");
-                readouts[start + k] = values[k];
+                    throw new BridgeException($"{operation} returned readouts outside 0..{(1 << chunk[k].CounterBits) - 1} or the wrong number of them");
+                readouts[positions[start + k]] = values[k];
             }
         });
-        return readouts;
-    }
 
     private void Run<T>(IReadOnlyList<T> requests, Func<T, double> cost, string operation, Func<IReadOnlyList<T>, string> expression,
         Action<IReadOnlyList<T>, int, string> accept)
@@ -90,7 +122,7 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         pool.ForEach(Chunks(requests, cost, pool.Workers), (chunk, bridge) =>
         {
             var slice = requests.Skip(chunk.Start).Take(chunk.Length).ToArray();
-            accept(slice, chunk.Start, bridge.Run(expression(slice), noise: Noise)[0]);
+            accept(slice, chunk.Start, bridge.Run(expression(slice), noise: Device is null ? Noise : NoiseModel.None)[0]);
         });
     }
 
@@ -141,6 +173,25 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
             text.Append('(').Append(QSharpDouble(CoinProbability.HeadAmplitude(CoinKind.Direct, r.Amplitudes)))
                 .Append(", ").Append(r.Iterations.ToString(CultureInfo.InvariantCulture))
                 .Append(", ").Append(r.Flips.ToString(CultureInfo.InvariantCulture)).Append(')');
+        }
+        return text.Append("])").ToString();
+    }
+
+    /// <summary>The single-qubit coins' call under a device model: the one-qubit rate, then each request's √f, m and flips.</summary>
+    public static string DeviceCoinExpression(DeviceNoiseModel device, IReadOnlyList<CoinRequest> requests) =>
+        $"{QSharpOperations.CountDirectCoinHeadsOnDeviceBatch}({QSharpDouble(device.OneQubit)}, {DirectCoinExpression(requests)[(QSharpOperations.CountDirectCoinHeadsBatch.Length + 1)..]}";
+
+    /// <summary>QSS on the single-qubit coin: the one- and two-qubit rates, then each request's √f, t and shots.</summary>
+    public static string DeviceQssExpression(DeviceNoiseModel device, IReadOnlyList<QssRequest> requests)
+    {
+        var text = new StringBuilder(QSharpOperations.MeasureDirectQssOnDeviceBatch).Append('(')
+            .Append(QSharpDouble(device.OneQubit)).Append(", ").Append(QSharpDouble(device.TwoQubit)).Append(", [");
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var r = requests[k];
+            if (k > 0) text.Append(", ");
+            text.Append('(').Append(QSharpDouble(r.Amplitudes[0])).Append(", ").Append(r.CounterBits.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(r.Shots.ToString(CultureInfo.InvariantCulture)).Append(')');
         }
         return text.Append("])").ToString();
     }

@@ -49,7 +49,7 @@ public static class SupersampleRun
         try
         {
             var supersampling = progress?.Start(EngineFactory.Name(kind));
-            using var engine = CreateEngine(kind, settings.Seed, settings.LocalWorkers, settings.MaxQubits, noise, settings.Pool);
+            using var engine = CreateEngine(kind, settings.Seed, settings.LocalWorkers, settings.MaxQubits, noise, settings.Pool, settings.Device);
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         }
         finally
@@ -73,12 +73,21 @@ public static class SupersampleRun
         return new SupersampleRunResult(figures, ranOn, input, result);
     }
 
-    /// <remarks>The fullstate engine runs on <paramref name="pool"/> when given, without stopping it, else on bridges of its own.</remarks>
-    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, NoiseModel? noise = null, BridgePool? pool = null) => kind switch
+    /// <remarks>
+    /// The fullstate engine runs on <paramref name="pool"/> when given, without stopping it, else on bridges of its own. Under
+    /// a <paramref name="device"/> model the coins are the single-qubit ones of the QCoin paper's device runs.
+    /// </remarks>
+    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, NoiseModel? noise = null, BridgePool? pool = null,
+        DeviceNoiseModel? device = null)
     {
-        EngineKind.FullState => new FullStateSupersamplingEngine(pool ?? new BridgePool(workers), ownsPool: pool is null, maxQubits: maxQubits, noise: noise),
-        _ => new AnalyticSupersamplingEngine(new SeededRandom(seed).Fork(RandomStreams.Engine), noise),
-    };
+        var random = new SeededRandom(seed).Fork(RandomStreams.Engine);
+        ISupersamplingEngine engine = kind switch
+        {
+            EngineKind.FullState => new FullStateSupersamplingEngine(pool ?? new BridgePool(workers), ownsPool: pool is null, maxQubits: maxQubits, noise: noise, device: device, readoutRandom: random),
+            _ => new AnalyticSupersamplingEngine(random, noise, device: device),
+        };
+        return device is null ? engine : new DirectCoinEngine(engine);
+    }
 
     private static SubpixelImage LoadImage(string path, int s, EngineKind kind)
     {

@@ -19,6 +19,7 @@ namespace QuantumRayTracing.Supersampling;
 /// <param name="Workers">Local Node bridges the fullstate engine starts when <paramref name="Pool"/> is null; null: one per core.</param>
 /// <param name="MaxQubits">The widest circuit the fullstate engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model the engine runs under; null for the ideal machine.</param>
+/// <param name="Device">A device noise model instead of <paramref name="Noise"/>: the estimators then run on the single-qubit coins (<see cref="DirectCoinEngine"/>); null for none.</param>
 /// <param name="Pool">Bridges the fullstate engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
 public sealed record SupersampleRunSettings(
     SupersampleSettings Method,
@@ -32,7 +33,8 @@ public sealed record SupersampleRunSettings(
     int? Workers = null,
     int? MaxQubits = null,
     NoiseModel? Noise = null,
-    BridgePool? Pool = null)
+    BridgePool? Pool = null,
+    DeviceNoiseModel? Device = null)
 {
     /// <summary>The fullstate engine simulates every (pixel, channel) item: above this many output pixels it is refused.</summary>
     public const int MaxFullStatePixels = 256;

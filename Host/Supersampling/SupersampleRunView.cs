@@ -15,8 +15,8 @@ public static class SupersampleRunView
             : $"{plan.InputName}: {input.Image.Width}x{input.Image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
         if (plan.Table is { } table)
             Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
-        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method)})");
-        Console.WriteLine($"noise model: {EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel)}");
+        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method, settings.Device is not null)})");
+        Console.WriteLine($"noise model: {NoiseDescription(settings)}");
     }
 
     /// <summary>The queries, the error against the exact average, the confidence, the wall time and the files written.</summary>
@@ -31,14 +31,21 @@ public static class SupersampleRunView
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"confidence: mean {mean:0.000}, lowest {lowest:0.000} (1 = every bit plane read with certainty)"));
-        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless ? "" : $" under {EngineFactory.NoiseDescription(settings.Engine, noise)}")}; ran on {where}");
+        Console.WriteLine($"wall time: {figures.WallTime.TotalSeconds:0.00} s on the {engineName} engine{(noise.IsNoiseless && settings.Device is null ? "" : $" under {NoiseDescription(settings)}")}; ran on {where}");
         foreach (var path in figures.Written) Console.WriteLine($"wrote {path}");
     }
 
+    // A device model names its circuits too: it runs the single-qubit coins.
+    private static string NoiseDescription(SupersampleRunSettings settings) =>
+        settings.Device is { } device
+            ? $"{device.Description()}{(settings.Engine == EngineKind.Analytic ? " (global depolarizing weight; exact on one qubit)" : "")}, on single-qubit coins rotated to the mean the host computes"
+            : EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
+
     // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
-    private static string Registers(SupersampleSettings settings)
+    private static string Registers(SupersampleSettings settings, bool singleQubitCoin)
     {
-        var index = CoinRegisters.SubpixelQubits(settings.Subpixels);
+        // The device model's coins hold no subpixel register: one qubit rotated to the mean.
+        var index = singleQubitCoin ? 0 : CoinRegisters.SubpixelQubits(settings.Subpixels);
         var counter = settings.Method == SupersampleMethod.Qss ? $" + {settings.CounterBitsOrDefault} counter" : "";
         return settings.Method == SupersampleMethod.Mc
             ? "each query samples one random subpixel"

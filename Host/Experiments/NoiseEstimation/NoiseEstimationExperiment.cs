@@ -32,6 +32,7 @@ public static class NoiseEstimationExperiment
         SubpixelImage ImageInput,
         IReadOnlyList<ImageRun> Images,
         IReadOnlyList<AwareSweep> Aware,
+        DeviceFigures.Figures Device,
         TimeSpan Elapsed);
 
     /// <summary>The subpixel values of fig. 10's full coin: 64 subpixels i/63, mean ½.</summary>
@@ -50,7 +51,9 @@ public static class NoiseEstimationExperiment
         var images = Images(settings, input, streams);
         progress("noise-aware MLAE against plain MLAE, QCoin and MC");
         var aware = Aware(settings, streams);
-        return new Result(steps, nisq, input, images, aware, clock.Elapsed);
+        progress("figs. 10, 11 and 12 as the paper has them: the device model fitted to fig. 10, QSS on the three-colour image, qubits and iterations against ε");
+        var device = DeviceFigures.Measure(settings, streams.Device, streams.Inputs());
+        return new Result(steps, nisq, input, images, aware, device, clock.Elapsed);
     }
 
     /// <summary>
@@ -87,6 +90,9 @@ public static class NoiseEstimationExperiment
         }
 
         public SeededRandom Inputs() => _root.Fork(_next++);
+
+        /// <summary>The single-qubit coins of the paper's device runs under <paramref name="device"/> (null: noiseless).</summary>
+        public ISupersamplingEngine Device(DeviceNoiseModel? device) => new DirectCoinEngine(new AnalyticSupersamplingEngine(_root.Fork(_next++), device: device));
     }
 
     private static double MeanAbsoluteError(IMeanEstimator estimator, IReadOnlyList<double[]> values, ISupersamplingEngine engine)
@@ -114,6 +120,9 @@ public static class NoiseEstimationExperiment
         return points;
     }
 
+    /// <summary>The comparison's baselines: classical Monte Carlo without noise, and the floor every estimator must beat.</summary>
+    public const string ClassicalMonteCarlo = "classical MC", AlwaysHalf = "always ½";
+
     /// <summary>The estimators of the comparison under noise at QSS's budget for <paramref name="counterBits"/>, 2^(t+1) − 1 queries.</summary>
     public static IEnumerable<(string Method, IMeanEstimator Estimator)> NisqEstimators(int counterBits)
     {
@@ -131,10 +140,19 @@ public static class NoiseEstimationExperiment
         var pixels = Enumerable.Range(0, settings.Trials)
             .Select(_ => Enumerable.Range(0, NoiseEstimationSettings.NisqSubpixels).Select(_ => random.NextDouble()).ToArray()).ToArray();
         var points = new List<MethodPoint>();
+        // The baselines every rate's row shows: classical Monte Carlo (the noiseless engine's samples) and always answering ½.
+        var half = pixels.Average(v => Math.Abs(0.5 - SubpixelValues.Mean(v)));
+        var classical = NoiseEstimationSettings.NisqCounterBits.Select(QssRequest.QueriesPerRun)
+            .ToDictionary(q => q, q => MeanAbsoluteError(new MonteCarloEstimator(q), pixels, streams.Engine(0)));
         foreach (var rate in NoiseEstimationSettings.NisqRates)
             foreach (var t in NoiseEstimationSettings.NisqCounterBits)
+            {
+                var queries = QssRequest.QueriesPerRun(t);
+                points.Add(new MethodPoint(rate, queries, ClassicalMonteCarlo, classical[queries]));
                 foreach (var (method, estimator) in NisqEstimators(t))
                     points.Add(new MethodPoint(rate, estimator.Queries, method, MeanAbsoluteError(estimator, pixels, streams.Engine(rate))));
+                points.Add(new MethodPoint(rate, queries, AlwaysHalf, half));
+            }
         return points;
     }
 

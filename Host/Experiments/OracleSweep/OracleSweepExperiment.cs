@@ -14,7 +14,9 @@ public static class OracleSweepExperiment
     {
         var wanted = SweepReport.Wanted(settings.Primitives, settings.Bits, settings.Ablation).ToArray();
         var subjects = wanted.Select(p => (p.Primitives, p.Bits)).Distinct().ToDictionary(p => p, p => EstimateSweep.Subject(p.Primitives, p.Bits));
-        var jobs = wanted.Select(p => (EstimatedCircuits.Oracle, subjects[(p.Primitives, p.Bits)].With(p.Construction))).ToArray();
+        // The ray tracing paper's device experiment (sec. 8): its ray, the oracle alone and the search run, as built by default and for few qubits.
+        var device = SweepReport.DeviceExperimentCircuits.Select(d => (d.Circuit, new EstimateSubject(DeviceExperimentScene.Ray() with { Construction = d.Construction }, 1, "device experiment"))).ToArray();
+        var jobs = wanted.Select(p => (EstimatedCircuits.Oracle, subjects[(p.Primitives, p.Bits)].With(p.Construction))).Concat(device).ToArray();
 
         IReadOnlyList<CircuitEstimate> estimates;
         using (var pool = new BridgePool(settings.Workers))
@@ -31,7 +33,7 @@ public static class OracleSweepExperiment
         }
 
         var points = wanted.Zip(estimates).ToDictionary(p => (p.First.Primitives, p.First.Bits, p.First.Construction.Name), p => p.Second);
-        var sweep = new SweepReport(points, settings.Models);
+        var sweep = new SweepReport(points, settings.Models, estimates.Skip(wanted.Length).ToArray());
         return sweep.ToReport(settings.Primitives, settings.Bits, settings.Ablation, SweepPlots.Draw(sweep, settings.Primitives, settings.Bits));
     }
 }

@@ -3,6 +3,7 @@ namespace QuantumRayTracing.Intersection {
     import Std.Arithmetic.ApplyIfGreaterOrEqualLE;
     import Std.Arithmetic.ApplyIfLessOrEqualL;
     import Std.Arithmetic.ApplyIfLessOrEqualLE;
+    import Std.Arithmetic.ApplyIfGreaterOrEqualL;
     import Std.TableLookup.Select;
 
     /// # Summary
@@ -32,6 +33,12 @@ namespace QuantumRayTracing.Intersection {
     /// testing only the two in-plane axes with both bounds loaded at once needs 2 lookups and
     /// 1 unlookup (`OracleConstruction`).
     ///
+    /// With no bound register (`ConstantBounds`) each axis step compares the point with every
+    /// primitive's minimum and maximum as constants, each comparison controlled on the index
+    /// register holding that primitive: the same XOR trick, with no bound loaded. Validity is then
+    /// a classical fact per primitive too: a row without a point (and an index past the last
+    /// primitive) gets its first axis flag cleared under index control, and no valid qubit is held.
+    ///
     /// The limit comparator reads the index register as the low bits and the depth register as
     /// the high bits of one number, so one comparison against a constant gives the lexicographic
     /// (depth, id) order.
@@ -42,9 +49,9 @@ namespace QuantumRayTracing.Intersection {
         // With measured unloads the load is a plain Select, so that the oracle's uncomputation clears
         // it with the unlookup as well; otherwise it is the self-inverse XOR lookup and nothing measures.
         if tables.MeasuredUnload {
-            Select(tables.Load, index, rpc + coord + registers.Depth + [registers.Valid]);
+            Select(tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
         } else {
-            ApplyXorLookup(tables.Load, index, rpc + coord + registers.Depth + [registers.Valid]);
+            ApplyXorLookup(tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
         }
         ApplyIfLessOrEqualL(X, tables.Near, registers.Depth, registers.DepthFlags[0]);
         ApplyIfGreaterL(X, tables.Limit, index + registers.Depth, registers.DepthFlags[1]);
@@ -54,11 +61,31 @@ namespace QuantumRayTracing.Intersection {
                 ApplyXorLookup(tables.NextAxis[s - 1], index, rpc + coord);
             }
             X(flag);
-            ApplyIfLessOrEqualLE(X, low, rpc, flag);
-            if tables.BoundRegisters == 1 {
-                ApplyXorLookup(tables.MinsToMaxes[s], index, coord);
+            if tables.BoundRegisters == 0 {
+                let count = Length(tables.AxisBounds[s]);
+                for p in 0..count - 1 {
+                    let bounds = tables.AxisBounds[s][p];
+                    if Length(bounds) == 2 {
+                        ApplyControlledOnInt(p, ApplyIfLessOrEqualL(X, bounds[0], rpc, _), index, flag);
+                        ApplyControlledOnInt(p, ApplyIfGreaterOrEqualL(X, bounds[1], rpc, _), index, flag);
+                    } elif s == 0 {
+                        // A row without a point, in place of a valid qubit: its first axis flag cleared.
+                        ApplyControlledOnInt(p, X, index, flag);
+                    }
+                }
+                // Indices past the last primitive hold no row either.
+                if s == 0 {
+                    for p in count..(1 <<< Length(index)) - 1 {
+                        ApplyControlledOnInt(p, X, index, flag);
+                    }
+                }
+            } else {
+                ApplyIfLessOrEqualLE(X, low, rpc, flag);
+                if tables.BoundRegisters == 1 {
+                    ApplyXorLookup(tables.MinsToMaxes[s], index, coord);
+                }
+                ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
             }
-            ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
         }
         if tables.MeasuredUnload {
             Adjoint Select(tables.Unload, index, rpc + coord + registers.Depth);

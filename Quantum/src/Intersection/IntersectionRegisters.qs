@@ -13,7 +13,8 @@ namespace QuantumRayTracing.Intersection {
     /// One per tested axis (i_X, i_Y, i_Z, or the two axes in the primitive's plane): the point
     /// lies within the bounds on that axis.
     /// ## Valid
-    /// The row holds a ray/plane point.
+    /// The row holds a ray/plane point: one qubit, or none with constant bounds, where a row
+    /// without a point has its first axis flag cleared instead.
     /// ## Depth
     /// The row's depth (DepthBits qubits).
     /// ## DepthFlags
@@ -22,7 +23,7 @@ namespace QuantumRayTracing.Intersection {
         Rpc : Qubit[],
         Coord : Qubit[],
         AxisFlags : Qubit[],
-        Valid : Qubit,
+        Valid : Qubit[],
         Depth : Qubit[],
         DepthFlags : Qubit[],
     }

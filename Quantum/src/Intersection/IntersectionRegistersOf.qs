@@ -18,12 +18,12 @@ namespace QuantumRayTracing.Intersection {
             fail $"expected {IntersectionWorkQubits(tables)} work qubits, got {Length(work)}";
         }
         let c = tables.CoordinateBits;
-        let parts = Partitioned([c, tables.BoundRegisters * c, tables.Axes, 1, tables.DepthBits], work);
+        let parts = Partitioned([c, tables.BoundRegisters * c, tables.Axes, ValidQubits(tables), tables.DepthBits], work);
         new IntersectionRegisters {
             Rpc = parts[0],
             Coord = parts[1],
             AxisFlags = parts[2],
-            Valid = parts[3][0],
+            Valid = parts[3],
             Depth = parts[4],
             DepthFlags = parts[5],
         }

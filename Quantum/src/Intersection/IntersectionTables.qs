@@ -15,12 +15,13 @@ namespace QuantumRayTracing.Intersection {
     /// ## Axes
     /// Axes tested per primitive: 3, or 2 when the flat axis is skipped.
     /// ## BoundRegisters
-    /// 1: coord holds the minimum, then the maximum. 2: coord holds both.
+    /// 1: coord holds the minimum, then the maximum. 2: coord holds both. 0: coord is empty and the
+    /// bounds are the constants of `AxisBounds`.
     /// ## MeasuredUnload
     /// Whether `Load` is cleared by measurement (`Adjoint Select`) or by a second lookup.
     /// ## Load
-    /// The first tested axis's point and bound(s), the depth and the validity bit, loaded into
-    /// rpc + coord + depth + [valid] from |0⟩.
+    /// The first tested axis's point and bound(s), the depth and the validity bit (none with constant
+    /// bounds), loaded into rpc + coord + depth + valid from |0⟩.
     /// ## MinsToMaxes
     /// Per tested axis, min XOR max: turns coord's minimum into the maximum (one bound register
     /// only; empty otherwise).
@@ -30,6 +31,9 @@ namespace QuantumRayTracing.Intersection {
     /// ## Unload
     /// The last tested axis's point and bound(s) and the depth, cleared from rpc + coord + depth
     /// (valid stays).
+    /// ## AxisBounds
+    /// With no bound register: per tested axis step, per primitive, [minimum, maximum] on that axis,
+    /// or [] for a row without a point (the whole array is empty with bound registers).
     /// ## Near
     /// The near comparator's constant.
     /// ## Limit
@@ -45,6 +49,7 @@ namespace QuantumRayTracing.Intersection {
         MinsToMaxes : Bool[][][],
         NextAxis : Bool[][][],
         Unload : Bool[][],
+        AxisBounds : BigInt[][][],
         Near : BigInt,
         Limit : BigInt,
     }

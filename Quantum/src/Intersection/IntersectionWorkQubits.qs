@@ -8,8 +8,14 @@ namespace QuantumRayTracing.Intersection {
     /// The ray's tables.
     ///
     /// # Output
-    /// (1 + BoundRegisters) · CoordinateBits + Axes + 1 + DepthBits + 2.
+    /// (1 + BoundRegisters) · CoordinateBits + Axes + ValidQubits + DepthBits + 2.
     internal function IntersectionWorkQubits(tables : IntersectionTables) : Int {
-        (1 + tables.BoundRegisters) * tables.CoordinateBits + tables.Axes + 1 + tables.DepthBits + 2
+        (1 + tables.BoundRegisters) * tables.CoordinateBits + tables.Axes + ValidQubits(tables) + tables.DepthBits + 2
+    }
+
+    /// # Summary
+    /// The valid qubit: one, or none with constant bounds (validity is then applied under index control).
+    internal function ValidQubits(tables : IntersectionTables) : Int {
+        tables.BoundRegisters == 0 ? 0 | 1
     }
 }

@@ -1,6 +1,7 @@
 namespace QuantumRayTracing.Intersection {
     import Std.Measurement.MeasureInteger;
-    import QuantumRayTracing.Search.PrepareUniformSuperposition;
+    import Std.Math.BitSizeI;
+    import Std.Math.MaxI;
 
     /// # Summary
     /// Prepares the uniform superposition over the ray's primitives, applies `iterations` Grover
@@ -19,23 +20,9 @@ namespace QuantumRayTracing.Intersection {
     /// Unlike `MeasureGroverSearch` this does not mark the complement when most rows are marked:
     /// the oracle is the circuit, not a list.
     operation MeasureGateGroverSearch(input : IntersectionInput, iterations : Int) : Int {
-        if iterations < 0 {
-            fail $"iterations must be non-negative, got {iterations}";
-        }
-        let tables = PrepareIntersectionTables(input);
-        let count = Length(input.Bounds);
-        use index = Qubit[tables.IndexBits];
-        use work = Qubit[IntersectionWorkQubits(tables)];
-        use flag = Qubit();
-        let registers = IntersectionRegistersOf(tables, work);
-        within {
-            X(flag);
-        } apply {
-            PrepareUniformSuperposition(count, index);
-            for _ in 1..iterations {
-                ApplyGateGroverIteration(tables, count, index, registers, flag);
-            }
-        }
+        // MaxI leaves an empty input to the tables' own error message.
+        use index = Qubit[BitSizeI(MaxI(Length(input.Bounds) - 1, 0))];
+        ApplyGateGroverSearch(input, iterations, index);
         MeasureInteger(index)
     }
 }

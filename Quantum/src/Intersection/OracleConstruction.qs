@@ -18,9 +18,15 @@ namespace QuantumRayTracing.Intersection {
     /// far fewer Toffolis than a lookup but 2^⌊n/2⌋ + 2^⌈n/2⌉ − n − 2 auxiliary qubits for its power
     /// products. False clears them with a second lookup of the same data (no auxiliaries beyond the
     /// lookup's n − 1).
+    /// ## ConstantBounds
+    /// Load no bound at all: compare the point with each primitive's minimum and maximum as classical
+    /// constants, each comparison controlled on the index register holding that primitive. No
+    /// coordinate register beyond the point's, at the price of 2N controlled comparators per axis
+    /// instead of one lookup; overrides `BothBounds`.
     struct OracleConstruction {
         InPlaneAxes : Bool,
         BothBounds : Bool,
         MeasuredUnload : Bool,
+        ConstantBounds : Bool,
     }
 }

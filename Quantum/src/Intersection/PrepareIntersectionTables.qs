@@ -1,8 +1,6 @@
 namespace QuantumRayTracing.Intersection {
     import Std.Convert.IntAsBoolArray;
     import Std.Convert.IntAsBigInt;
-    import Std.Arrays.Mapped;
-    import Std.Arrays.Zipped;
     import Std.Math.BitSizeI;
 
     /// # Summary
@@ -36,11 +34,12 @@ namespace QuantumRayTracing.Intersection {
             fail $"limit {input.Limit} is outside 0..2^{d + indexBits}";
         }
         let axes = construction.InPlaneAxes ? 2 | 3;
-        let boundRegisters = construction.BothBounds ? 2 | 1;
+        let boundRegisters = construction.ConstantBounds ? 0 | (construction.BothBounds ? 2 | 1);
         mutable load = [];
         mutable minsToMaxes = [[], size = boundRegisters == 1 ? axes | 0];
         mutable nextAxis = [[], size = axes - 1];
         mutable unload = [];
+        mutable axisBounds = [[], size = boundRegisters == 0 ? axes | 0];
         for p in 0..count - 1 {
             let (bounds, point, depth, flat) = (input.Bounds[p], input.Points[p], input.Depths[p], input.FlatAxes[p]);
             if Length(bounds) != 6 or Length(point) != 3 {
@@ -63,16 +62,18 @@ namespace QuantumRayTracing.Intersection {
                 fail $"row {p}: depth {depth} does not fit {d} bits";
             }
             let tested = construction.InPlaneAxes ? (flat == 0 ? [1, 2] | (flat == 1 ? [0, 2] | [0, 1])) | [0, 1, 2];
-            let bits = value -> IntAsBoolArray(value, c);
-            let xor = (a, b) -> Mapped((x, y) -> x != y, Zipped(a, b));
-            let low = axis -> bits(bounds[2 * axis]);
-            let high = axis -> bits(bounds[2 * axis + 1]);
-            // What coord holds while an axis is tested: its minimum (then its maximum), or both.
-            let held = axis -> boundRegisters == 2 ? low(axis) + high(axis) | low(axis);
-            let left = axis -> boundRegisters == 2 ? low(axis) + high(axis) | high(axis);
+            // Named functions rather than local lambdas, so the QIR compilation (`qrt export`) resolves every call statically.
+            let bits = IntAsBoolArray(_, c);
             let first = tested[0];
             let last = tested[axes - 1];
-            set load += [bits(point[first]) + held(first) + IntAsBoolArray(depth, d) + [input.Valid[p]]];
+            set load += [bits(point[first]) + CoordinateBoundsBits(bounds, first, c, boundRegisters, false) + IntAsBoolArray(depth, d) + (boundRegisters == 0 ? [] | [input.Valid[p]])];
+            if boundRegisters == 0 {
+                for s in 0..axes - 1 {
+                    // A row without a point carries no bounds: the oracle clears its flag instead.
+                    let entry = input.Valid[p] ? [IntAsBigInt(bounds[2 * tested[s]]), IntAsBigInt(bounds[2 * tested[s] + 1])] | [];
+                    set axisBounds w/= s <- axisBounds[s] + [entry];
+                }
+            }
             if boundRegisters == 1 {
                 for s in 0..axes - 1 {
                     set minsToMaxes w/= s <- minsToMaxes[s] + [bits(bounds[2 * tested[s]] ^^^ bounds[2 * tested[s] + 1])];
@@ -80,10 +81,12 @@ namespace QuantumRayTracing.Intersection {
             }
             for s in 1..axes - 1 {
                 let (from, to) = (tested[s - 1], tested[s]);
-                let step = xor(bits(point[from]), bits(point[to])) + xor(left(from), held(to));
+                let leaving = CoordinateBoundsBits(bounds, from, c, boundRegisters, true);
+                let entering = CoordinateBoundsBits(bounds, to, c, boundRegisters, false);
+                let step = XorBits(bits(point[from]), bits(point[to])) + XorBits(leaving, entering);
                 set nextAxis w/= s - 1 <- nextAxis[s - 1] + [step];
             }
-            set unload += [bits(point[last]) + left(last) + IntAsBoolArray(depth, d)];
+            set unload += [bits(point[last]) + CoordinateBoundsBits(bounds, last, c, boundRegisters, true) + IntAsBoolArray(depth, d)];
         }
         new IntersectionTables {
             IndexBits = indexBits,
@@ -96,6 +99,7 @@ namespace QuantumRayTracing.Intersection {
             MinsToMaxes = minsToMaxes,
             NextAxis = nextAxis,
             Unload = unload,
+            AxisBounds = axisBounds,
             Near = IntAsBigInt(input.Near),
             Limit = IntAsBigInt(input.Limit),
         }

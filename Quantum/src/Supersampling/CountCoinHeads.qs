@@ -31,10 +31,7 @@ namespace QuantumRayTracing.Supersampling {
         mutable heads = 0;
         use register = Qubit[width + 1];
         for _ in 1..flips {
-            prepare(register);
-            for _ in 1..iterations {
-                ApplyCoinGroverOperator(prepare, markHead, register);
-            }
+            ApplyCoinFlip(prepare, markHead, iterations, register);
             let coin = MeasureBitReadingLossAsZero(Tail(register));
             let index = MeasureIntegerReadingLossAsZero(Most(register));
             if coin and (not shifted or index == 0) {

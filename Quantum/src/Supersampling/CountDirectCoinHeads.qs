@@ -1,5 +1,4 @@
 namespace QuantumRayTracing.Supersampling {
-    import Std.Math.ArcSin;
     import QuantumRayTracing.Search.MeasureBitReadingLossAsZero;
 
     /// # Summary
@@ -23,17 +22,10 @@ namespace QuantumRayTracing.Supersampling {
     /// One qubit. The Grover operator −A S₀ A† S_χ is A Z A† Z here (S_χ = Z, and S₀ = −Z on one
     /// qubit), four gates with no global phase to repair: the coin is never run under control.
     internal operation CountDirectCoinHeads(headAmplitude : Double, iterations : Int, flips : Int) : Int {
-        let angle = 2.0 * ArcSin(headAmplitude);
         mutable heads = 0;
         use coin = Qubit();
         for _ in 1..flips {
-            Ry(angle, coin);
-            for _ in 1..iterations {
-                Z(coin);
-                Ry(-angle, coin);
-                Z(coin);
-                Ry(angle, coin);
-            }
+            ApplyDirectCoin(headAmplitude, iterations, [coin]);
             if MeasureBitReadingLossAsZero(coin) {
                 set heads += 1;
             }

@@ -28,7 +28,7 @@ namespace QuantumRayTracing.Intersection {
         ApplyXorInPlace(p, index);
         ApplyIntersectionOracle(tables, index, registers, output);
         let hit = MResetZ(output) == One;
-        let all = [index, registers.Rpc, registers.Coord, registers.AxisFlags, [registers.Valid], registers.Depth, registers.DepthFlags];
+        let all = [index, registers.Rpc, registers.Coord, registers.AxisFlags, registers.Valid, registers.Depth, registers.DepthFlags];
         (hit, ForEach(MeasureInteger, all))
     }
 }

@@ -1,0 +1,110 @@
+using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Tests.Cli;
+
+namespace QuantumRayTracing.Tests.Export;
+
+/// <summary>
+/// `qrt export search --format qasm2` run on quantum-circuit (npm), a simulator nobody here wrote: the
+/// distribution of the index register it computes from the file's gates must equal the header's ideal
+/// probabilities, which the QDK computed from its own state vector. Both are exact state vectors, so the
+/// tolerance is 1e-9 (floating-point residue is ~1e-14). quantum-circuit loops over every basis state of
+/// the unused qubits for each gate, so the scene is one with a 2-bit grid: 20 qubits, ~30 s per circuit.
+/// A wrong iteration count and a dropped gate must both fail the same comparison.
+/// </summary>
+public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
+{
+    /// <summary>Exact state vectors on both sides: only rounding separates them.</summary>
+    private const double Tolerance = 1e-9;
+
+    private readonly ScratchDirectory _scratch = new("qrt-export-qc-");
+
+    public void Dispose() => _scratch.Dispose();
+
+    /// <summary>Five squares on a 2-bit grid (N = 5, not a power of two, so the preparation has rotations), seen from the front.</summary>
+    public static string TinyScene(ScratchDirectory scratch)
+    {
+        var json = new SceneBuilder("export check, 5 primitives, 2-bit grid", integerBits: 2)
+            .Material("white", 0.75, 0.75, 0.75)
+            .Camera([1.5, 1.5, 0.25], [1.5, 1.5, 3], 60)
+            .Light(1.5, 1.5, 0.5, 10)
+            .Rectangle([0, 0, 1], [1, 1, 1], "white")
+            .Rectangle([2, 0, 2], [3, 1, 2], "white")
+            .Rectangle([0, 2, 2], [1, 3, 2], "white")
+            .Rectangle([0, 0, 3], [3, 3, 3], "white")
+            .Rectangle([2, 2, 1], [3, 3, 1], "white")
+            .ToJson();
+        var path = scratch.File("tiny.json");
+        File.WriteAllText(path, json);
+        return path;
+    }
+
+    private string Export(string name, params string[] options)
+    {
+        var file = _scratch.File(name);
+        var (code, error) = ConsoleCapture.Run(["export", "search", TinyScene(_scratch), "--size", "4", .. options, "-o", file]);
+        Assert.True(code == 0, error);
+        return file;
+    }
+
+    [Theory]
+    [InlineData("3,0", "marks 1 of 5")]
+    [InlineData("0,0", "marks 2 of 5")]
+    public void IndexDistributionOnQuantumCircuitIsTheHeadersIdeal(string pixel, string what)
+    {
+        var file = Export("search.qasm", "--pixel", pixel);
+        var ideal = ExportedDistribution.FromHeader(file);
+        var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
+        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= Tolerance,
+            $"pixel {pixel} ({what}): header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        // The search amplifies: the most likely value is far above uniform (1/5), so the check is not of a flat distribution.
+        Assert.True(ideal.Values.Max() > 0.35, $"pixel {pixel}: no amplified value in {string.Join(' ', ideal)}");
+    }
+
+    [Fact]
+    public void WrongIterationCountIsRejected()
+    {
+        var optimal = Export("optimal.qasm", "--pixel", "3,0");
+        var none = Export("none.qasm", "--pixel", "3,0", "--iterations", "0");
+        var difference = ExportedDistribution.MaxDifference(ExportedDistribution.FromHeader(optimal), ExportedDistribution.OnQuantumCircuit(none, "index"));
+        Assert.True(difference > 0.5, $"r = 0 against the r = 1 header differs by only {difference}");
+    }
+
+    [Fact]
+    public void DroppedGateIsRejected()
+    {
+        var file = Export("search.qasm", "--pixel", "3,0");
+        var lines = File.ReadAllLines(file).ToList();
+        lines.RemoveAt(lines.FindIndex(l => l.StartsWith("ry(", StringComparison.Ordinal)));
+        var broken = _scratch.File("broken.qasm");
+        File.WriteAllLines(broken, lines);
+        var difference = ExportedDistribution.MaxDifference(ExportedDistribution.FromHeader(file), ExportedDistribution.OnQuantumCircuit(broken, "index"));
+        Assert.True(difference > 1e-3, $"dropping the first ry changed the distribution by only {difference}");
+    }
+
+    [Fact]
+    public void DirectCoinOnQuantumCircuitIsTheHeadersIdealAndGroversClosedForm()
+    {
+        var file = _scratch.File("direct.qasm");
+        var (code, error) = ConsoleCapture.Run("export", "coin", "--mean", "0.3", "--k", "2", "-o", file);
+        Assert.True(code == 0, error);
+        var ideal = ExportedDistribution.FromHeader(file);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= Tolerance);
+        // sin²θ = 0.3, k = 2: heads with probability sin²(5θ).
+        var heads = Math.Pow(Math.Sin(5 * Math.Asin(Math.Sqrt(0.3))), 2);
+        Assert.Equal(heads, ideal[1], 1e-9);
+    }
+
+    [Fact]
+    public void MeanCoinOnQuantumCircuitIsTheHeadersIdealAndGroversClosedForm()
+    {
+        double[] values = [0.05, 0.2, 0.1, 0.032];
+        var file = _scratch.File("mean.qasm");
+        var (code, error) = ConsoleCapture.Run(["export", "coin", "--values", .. values.Select(v => v.ToString(System.Globalization.CultureInfo.InvariantCulture)), "--k", "1", "-o", file]);
+        Assert.True(code == 0, error);
+        var ideal = ExportedDistribution.FromHeader(file);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= Tolerance);
+        // Bit 2 is the coin: heads with probability sin²(3θ), sin²θ the mean value, whatever the subpixel bits.
+        var heads = Math.Pow(Math.Sin(3 * Math.Asin(Math.Sqrt(values.Average()))), 2);
+        Assert.Equal(heads, ideal.Where(e => (e.Key & 4) != 0).Sum(e => e.Value), 1e-9);
+    }
+}

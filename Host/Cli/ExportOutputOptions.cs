@@ -1,0 +1,24 @@
+using System.CommandLine;
+using QuantumRayTracing.Export;
+
+namespace QuantumRayTracing.Cli;
+
+/// <summary>The options every `export` subcommand shares: format, output file, and leave to replace it.</summary>
+public sealed class ExportOutputOptions
+{
+    public readonly Option<ExportFormat> Format = new Option<ExportFormat>("--format")
+    {
+        Description = "qasm2 (OpenQASM 2.0, unitary: uncomputation by gates), qasm3 (OpenQASM 3.0, with measurement and feedback) or qir (the QDK's QIR, adaptive profile).",
+        DefaultValueFactory = _ => ExportFormat.Qasm2,
+        HelpName = "qasm2|qasm3|qir",
+    }.Choices();
+
+    public readonly Option<FileInfo?> Output = CommonOptions.ReportOutput("Write the circuit to this file; an existing file is replaced only with --force. Default: standard output.");
+
+    public readonly Option<bool> Force = new("--force") { Description = "Replace the -o file if it exists." };
+
+    public void AddTo(Command command) => command.AddOptions(Format, Output, Force);
+
+    public ExportSettings Settings(ParseResult parse, ExportSubject subject) =>
+        new(subject, parse.GetValue(Format), parse.GetValue(Output)?.ToString(), parse.GetValue(Force));
+}

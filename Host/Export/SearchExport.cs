@@ -1,0 +1,50 @@
+using System.Globalization;
+using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Scenes;
+
+namespace QuantumRayTracing.Export;
+
+/// <summary>
+/// One ray's Grover search as an export: the uniform superposition over the ray's primitives, r iterations
+/// of the gate-level oracle and the diffusion (Q# <c>ApplyGateGroverSearch</c>, the circuit the gate
+/// engine runs), the index register measured.
+/// </summary>
+public static class SearchExport
+{
+    /// <summary>Constructions whose QIR the QDK compiles: the measured unlookup's does not (the compiler stops on it).</summary>
+    public static bool CanExport(OracleConstruction construction) => !construction.MeasuredUnload;
+
+    /// <summary>The search of the camera ray through pixel (x, y) of a width × height image of <paramref name="scene"/>.</summary>
+    public static ExportSubject ForPixel(Scene scene, int width, int height, int x, int y, OracleConstruction construction, int? iterations)
+    {
+        var (input, label) = EstimateRay.Pixel(scene, new SceneGeometry(scene), width, height, x, y, construction);
+        return Subject("qrt export search", scene.Name, $"camera ray through {label}", input, iterations);
+    }
+
+    /// <summary>The subject; <paramref name="iterations"/> null takes the optimal count for the ray's marked set.</summary>
+    public static ExportSubject Subject(string command, string scene, string ray, OracleInput input, int? iterations)
+    {
+        if (!CanExport(input.Construction))
+            throw new ArgumentException($"the {input.Construction.Name} oracle clears its loads with the measured unlookup, which the QDK cannot compile to QIR; export the narrow oracle", nameof(input));
+        var count = input.Table.Count;
+        var marked = input.Table.Marked(input.Window);
+        var r = iterations ?? GroverProbability.OptimalIterations(count, marked.MarkedCount);
+        var qubits = OracleRegisters.For(input).IndexQubits;
+        var construction = input.Construction;
+        var indices = marked.MarkedCount == 0 ? "none" : string.Join(' ', marked.Indices.ToArray());
+        return new ExportSubject(
+            $"one ray's Grover search with the gate-level intersection oracle ({command})",
+            [
+                $"scene: {scene}, N = {count} primitives",
+                $"ray: {ray}; marked primitives (hit window: the full range): {indices}",
+                $"oracle: {construction.Name} ({construction.Axes} axes tested, {construction.BoundRegisters} bound register(s), unload by {(construction.MeasuredUnload ? "measurement" : "lookup")})",
+                $"iterations: {r}{(iterations is null ? $" (the optimum for {marked.MarkedCount} of {count} marked)" : "")}; P(marked) = {GroverProbability.OfMarked(count, marked.MarkedCount, r).ToString("R", CultureInfo.InvariantCulture)} by Grover's closed form",
+            ],
+            $"{QSharpOperations.ApplyGateGroverSearch}({GateEngine.OracleArgument(input)}, {r.ToString(CultureInfo.InvariantCulture)}, _)",
+            qubits,
+            "index");
+    }
+}
