@@ -322,13 +322,13 @@ public static class NoiseReport
             "which costs queries, and it makes the termination rule and the lattice's cheap confirmations (which assume the ideal miss",
             "rates) stop searches that would have hit, which costs pixels; planned with the noisy rates, it costs queries instead.",
             "Wall time: the fastest of three identical renders (same seed); vs noiseless: against the p = 0 render of the same sweep."));
-        var thresholds = new TextTable("thresholds", ["scene", "oracle", "(a) loses to brute force in Int/Ray at p ≈", "(b) loses to the randomized renderer at equal Int/Ray at p ≈"]);
+        var thresholds = new TextTable("thresholds", ["scene", "noise model from", "(a) loses to brute force in Int/Ray at p ≈", "(b) loses to the randomized renderer at equal Int/Ray at p ≈"]);
         foreach (var sweep in sweeps)
         {
             var classicalPerRay = sweep.Classical.Result.Total.PerRayConservative;
             var ideal = sweep.Quantum.First(q => q.PerGate == 0).Measurement;
             var (oracle, slug) = (sweep.Label, sweep.Slug);
-            report.Heading($"{sweep.Scene}, {oracle} oracle", 3);
+            report.Heading($"{sweep.Scene}, {oracle}", 3);
             report.Text($"Classical brute force: Int/Ray {F(classicalPerRay, "0.00")}. Noise model: the {sweep.Oracle.Description()}"
                 + (sweep.NoiseAware ? "; the passes plan with the noisy runs' success (`--noise-aware`)." : "; the passes plan with the ideal miss rates."));
             var quantum = new TextTable($"render-{sweep.Scene}-{slug}", ["p per gate", "Int/Ray", "NRMSE", "#Dpix", "randomized NRMSE at equal Int/Ray", "wall time", "vs noiseless"]);
@@ -347,7 +347,7 @@ public static class NoiseReport
             var bText = b is { } y ? Rate(y) : $"none up to {highest}";
             thresholds.Row(sweep.Scene, oracle, aText, bText);
             report.Text(Lines(
-                $"With the {oracle} oracle's noise model:",
+                $"With the {sweep.Oracle.Name()} oracle's noise model{(sweep.NoiseAware ? ", the passes planning with it" : "")}:",
                 "- (a) quantum loses to classical brute force in Int/Ray " + (a is { } x2 ? $"at p ≈ {Rate(x2)} per gate;" : $"at no rate up to p = {highest} (its Int/Ray stays below {F(classicalPerRay, "0")});"),
                 "- (b) quantum loses to the randomized renderer at equal Int/Ray in NRMSE " + (b is { } y2 ? $"at p ≈ {Rate(y2)} per gate." : $"at no rate up to p = {highest}.")));
             if (sweep.Oracle == NoiseOracle.GateLevel && !sweep.NoiseAware)
@@ -361,15 +361,15 @@ public static class NoiseReport
                     randomizedTable.Row(I(passes), F(m.Result.Total.PerRayConservative, "0.00"), F(m.Error.Nrmse * 100, "0.00") + " %", I(m.Error.DifferentPixels));
                 report.Table(randomizedTable);
             }
-            report.Plot($"render-{sweep.Scene}-{slug}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}, {oracle} oracle: NRMSE against per-gate error (analytic)", "per-gate error p", "NRMSE (%)",
+            report.Plot($"render-{sweep.Scene}-{slug}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}, {oracle}: NRMSE against per-gate error (analytic)", "per-gate error p", "NRMSE (%)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Error.Nrmse * 100)).ToArray()),
                  ("randomized at equal Int/Ray", sweep.Quantum.Where(q => q.PerGate > 0 && sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is not null)
                     .Select(q => (q.PerGate, sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative)!.Value * 100)).ToArray())]),
-                $"{sweep.Scene}: NRMSE against the per-gate error, {oracle} oracle");
-            report.Plot($"int-per-ray-{sweep.Scene}-{slug}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}, {oracle} oracle: Int/Ray against per-gate error (analytic)", "per-gate error p", "Int/Ray (conservative)",
+                $"{sweep.Scene}: NRMSE against the per-gate error, {oracle}");
+            report.Plot($"int-per-ray-{sweep.Scene}-{slug}", NoisePlots.LogX($"{sweep.Scene}, {size}x{size}, {oracle}: Int/Ray against per-gate error (analytic)", "per-gate error p", "Int/Ray (conservative)",
                 [("quantum, default pipeline", sweep.Quantum.Where(q => q.PerGate > 0).Select(q => (q.PerGate, q.Measurement.Result.Total.PerRayConservative)).ToArray())],
                 classicalPerRay, "classical brute force"),
-                $"{sweep.Scene}: Int/Ray against the per-gate error, {oracle} oracle");
+                $"{sweep.Scene}: Int/Ray against the per-gate error, {oracle}");
         }
         if (sweeps.Count > 0)
         {

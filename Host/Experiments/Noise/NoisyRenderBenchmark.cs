@@ -22,7 +22,7 @@ public static class NoisyRenderBenchmark
         bool NoiseAware = false)
     {
         /// <summary>The sweep's model in words and as a file-name part: the oracle, and whether the passes plan with the noise.</summary>
-        public string Label => Oracle.Name() + (NoiseAware ? ", noise-aware" : "");
+        public string Label => Oracle.Name() + " oracle" + (NoiseAware ? ", noise-aware render" : "");
 
         public string Slug => Oracle.Name() + (NoiseAware ? "-aware" : "");
 
