@@ -115,7 +115,7 @@ public class AmplitudeEstimatorTests
             })
             {
                 // The engine counts what it is asked for, independently of the estimator's own tally.
-                var engine = new CountingEngine(new AnalyticSupersamplingEngine(new SeededRandom(3)));
+                var engine = new QueryCountingEngine(new AnalyticSupersamplingEngine(new SeededRandom(3)));
                 var (estimates, spent) = estimator.EstimateCounted(inputs, engine);
                 Assert.All(spent, s => Assert.InRange(s.Queries, 1, queries));
                 Assert.All(spent, s => Assert.InRange(s.GroverOperators, 0, (s.Queries - 1) / 2));
@@ -155,22 +155,5 @@ public class AmplitudeEstimatorTests
             if (upper) Assert.True(b <= Math.PI + 1e-9, $"[{low}, {high}] at K = {factor}: {a}..{b} not in [0, π]");
             else Assert.True(a >= Math.PI - 1e-9, $"[{low}, {high}] at K = {factor}: {a}..{b} not in [π, 2π]");
         }
-    }
-
-    private sealed class CountingEngine(ISupersamplingEngine inner) : ISupersamplingEngine
-    {
-        public long Queries { get; private set; }
-
-        public string Name => inner.Name;
-
-        public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
-        {
-            Queries += requests.Sum(r => r.Queries);
-            return inner.FlipCoins(requests);
-        }
-
-        public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests) => inner.ReadCounters(requests);
-
-        public void Dispose() => inner.Dispose();
     }
 }
