@@ -37,10 +37,13 @@ public class AmplitudeEstimatorTests
         _ => throw new ArgumentException(method),
     };
 
-    private static double MeanError(string method, long queries, ulong seed = 5)
+    // FAE's mean error is dominated by rare rounds that resolve the wrong period (docs/estimation.md: its mean moves by half
+    // between seeds while its median holds), so it is held to its median error, whose standard error is a few per cent.
+    private static double Error(string method, long queries, ulong seed = 5)
     {
         var estimates = Create(method, queries).Estimate(Means, new AnalyticSupersamplingEngine(new SeededRandom(seed)));
-        return estimates.Select((e, j) => Math.Abs(e - Means[j][0])).Average();
+        var errors = estimates.Select((e, j) => Math.Abs(e - Means[j][0])).Order().ToArray();
+        return method == "fae" ? errors[errors.Length / 2] : errors.Average();
     }
 
     /// <summary>Monte Carlo's exact expected error E|X/Q − f|, X ~ Binomial(Q, f), averaged over the test's means.</summary>
@@ -50,20 +53,28 @@ public class AmplitudeEstimatorTests
         return Enumerable.Range(0, queries + 1).Sum(x => binomial.Probability(x) * Math.Abs((double)x / queries - m[0]));
     });
 
-    // Measured ratios to Monte Carlo (docs/estimation.md): iqae 0.42 and bae 0.2 at 960 queries, powerlaw 0.25; fae 0.72 at 3,200.
+    /// <summary>Monte Carlo's median error over the test's means: one seeded Monte Carlo estimate per mean.</summary>
+    private static double MonteCarloMedianError(int queries)
+    {
+        var estimates = new MonteCarloEstimator(queries).Estimate(Means, new AnalyticSupersamplingEngine(new SeededRandom(77)));
+        var errors = estimates.Select((e, j) => Math.Abs(e - Means[j][0])).Order().ToArray();
+        return errors[errors.Length / 2];
+    }
+
+    // Measured ratios to Monte Carlo (docs/estimation.md): iqae 0.42 and bae 0.16 at 960 queries, powerlaw 0.21; fae's median 0.58 at 3,200.
     [Theory]
     [InlineData("iqae", 960, 0.6)]
     [InlineData("bae", 960, 0.4)]
     [InlineData("powerlaw", 960, 0.4)]
-    [InlineData("fae", 3200, 0.85)]
+    [InlineData("fae", 3200, 0.75)]
     public void BeatsMonteCarloByAMargin(string method, int queries, double ratio)
     {
-        var (error, monteCarlo) = (MeanError(method, queries), MonteCarloError(queries));
+        var (error, monteCarlo) = (Error(method, queries), method == "fae" ? MonteCarloMedianError(queries) : MonteCarloError(queries));
         Assert.True(error < ratio * monteCarlo, $"{method} at {queries} queries: mean error {error:0.00000}, Monte Carlo's {monteCarlo:0.00000}, bound {ratio} of it");
     }
 
     // Heisenberg scaling is slope −1; the bound −0.8 leaves room for the constant's drift, and Monte Carlo's −0.5 is far outside.
-    // FAE, whose last round alone makes the estimate, is held to −0.7.
+    // FAE (its median error) is held to −0.7.
     [Theory]
     [InlineData("iqae", -0.8)]
     [InlineData("bae", -0.8)]
@@ -83,7 +94,7 @@ public class AmplitudeEstimatorTests
         Assert.True(slope > -0.65, $"power-law with β = 1: fitted slope {slope:0.000}");
     }
 
-    private static double Slope(string method) => Math.Log(MeanError(method, 3200) / MeanError(method, 400)) / Math.Log(8);
+    private static double Slope(string method) => Math.Log(Error(method, 3200) / Error(method, 400)) / Math.Log(8);
 
     /// <summary>
     /// At f = 0.31 and 240 queries the original IQAE estimate (the last interval's middle) is pulled towards ½ by about 0.009

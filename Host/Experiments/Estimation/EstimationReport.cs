@@ -111,7 +111,7 @@ public static class EstimationReport
 
     private static void Tail(Report report, List<Point> set)
     {
-        report.Text("The long tail: the share of estimates whose error exceeds 3 times their median error, at the budget nearest 240 and 1,000 queries (a normal error has 0.7% there, a Laplace error 12.5%):");
+        report.Text("The long tail: the share of estimates whose error exceeds 3 times their median error, at the budget nearest 240 and 1,000 queries (a normal error has 4.3% there, a Laplace error 12.5%):");
         var tail = new TextTable(null, ["estimator", "queries", "share", "queries", "share"]);
         foreach (var label in Fitted)
         {
