@@ -35,6 +35,9 @@ public sealed record SupersampleSettings(
     /// <summary>Plain or noise-aware MLAE: the same schedule and --levels.</summary>
     public bool IsMlae => Method is SupersampleMethod.Mlae or SupersampleMethod.MlaeNoise;
 
+    /// <summary>IQAE, FAE and BAE: adaptive searches that may stop below the budget, so the budget is an upper bound.</summary>
+    public bool MayStopBelowBudget => Method is SupersampleMethod.Iqae or SupersampleMethod.Fae or SupersampleMethod.Bae;
+
     public QssValues QssValues => Values ?? QssValues.Planes;
 
     public long QueriesOrDefault => Queries ?? DefaultQueries;
