@@ -37,8 +37,8 @@ public class AmplitudeEstimatorTests
         _ => throw new ArgumentException(method),
     };
 
-    // FAE's mean error is dominated by rare rounds that resolve the wrong period (docs/estimation.md: its mean moves by half
-    // between seeds while its median holds), so it is held to its median error, whose standard error is a few per cent.
+    // FAE's mean error is dominated by rare rounds that resolve the wrong period (its mean moved by half between seeds in
+    // the measurements, docs/supersampling.md, while its median held), so it is held to its median error, whose standard error is a few per cent.
     private static double Error(string method, long queries, ulong seed = 5)
     {
         var estimates = Create(method, queries).Estimate(Means, new AnalyticSupersamplingEngine(new SeededRandom(seed)));
@@ -61,7 +61,7 @@ public class AmplitudeEstimatorTests
         return errors[errors.Length / 2];
     }
 
-    // Measured ratios to Monte Carlo (docs/estimation.md): iqae 0.42 and bae 0.16 at 960 queries, powerlaw 0.21; fae's median 0.58 at 3,200.
+    // Measured ratios to Monte Carlo on these means: iqae 0.42 and bae 0.16 at 960 queries, powerlaw 0.21; fae's median 0.58 at 3,200.
     [Theory]
     [InlineData("iqae", 960, 0.6)]
     [InlineData("bae", 960, 0.4)]
@@ -98,7 +98,7 @@ public class AmplitudeEstimatorTests
 
     /// <summary>
     /// At f = 0.31 and 240 queries the original IQAE estimate (the last interval's middle) is pulled towards ½ by about 0.009
-    /// (measured over the means 0.01..0.99, docs/estimation.md: it is largest near 0.31 and 0.68); with the last round rerun at
+    /// (measured over the means 0.01..0.99, docs/supersampling.md: it is largest near 0.31 and 0.68); with the last round rerun at
     /// a fixed k the bias is about 0.001. Over 4,000 trials the standard error of the mean signed error is about 0.0005, so the
     /// bounds 0.005 and 0.003 are at least 4 standard errors from the measured values (false failure below 1e-4).
     /// </summary>

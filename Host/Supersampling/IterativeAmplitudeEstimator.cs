@@ -39,7 +39,7 @@ public sealed class IterativeAmplitudeEstimator : AdaptiveMeanEstimator
         Rounds = Math.Max(1, (int)Math.Ceiling(Math.Log2(Math.PI * queries / 8)));
     }
 
-    /// <summary>The default N (the best of 4, 8, 16 and 32 at 240 and 3,200 queries, docs/estimation.md).</summary>
+    /// <summary>The default N (the best of 4, 8, 16 and 32 at 240 and 3,200 queries, docs/supersampling.md).</summary>
     public const int DefaultFlipsPerRound = 32;
 
     public int FlipsPerRound { get; }

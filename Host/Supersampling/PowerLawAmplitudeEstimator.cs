@@ -14,10 +14,10 @@ namespace QuantumRayTracing.Supersampling;
 /// </remarks>
 public sealed class PowerLawAmplitudeEstimator : IMeanEstimator
 {
-    /// <summary>The default β (measured, docs/estimation.md).</summary>
+    /// <summary>The default β (measured, docs/supersampling.md).</summary>
     public const double DefaultBeta = 0.3;
 
-    /// <summary>The default flips per k: one flip per k leaves the likelihood with rival peaks at small budgets (measured, docs/estimation.md).</summary>
+    /// <summary>The default flips per k: one flip per k leaves the likelihood with rival peaks at small budgets (measured, docs/supersampling.md).</summary>
     public const int DefaultShots = 2;
 
     public PowerLawAmplitudeEstimator(long queries, double beta = DefaultBeta, int? flipsPerK = null)
