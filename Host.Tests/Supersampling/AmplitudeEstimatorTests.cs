@@ -147,6 +147,19 @@ public class AmplitudeEstimatorTests
                 Create(method, 240).Estimate(inputs, new AnalyticSupersamplingEngine(new SeededRandom(4))));
     }
 
+    /// <summary>
+    /// On the direct single-qubit coin (the QCoin paper's hardware coin) every estimator sees the same head probabilities as on
+    /// the mean coin, FAE's rescaled coin f/4 included, so with the same seed the analytic engine gives the same estimates.
+    /// </summary>
+    [Fact]
+    public void TheDirectCoinGivesTheSameEstimates()
+    {
+        var inputs = Enumerable.Range(0, 30).Select(k => new[] { k / 29.0, 0.5, 1 - k / 29.0, 0.2 }).ToArray();
+        foreach (var method in new[] { "iqae", "fae", "bae", "powerlaw" })
+            Assert.Equal(Create(method, 240).Estimate(inputs, new AnalyticSupersamplingEngine(new SeededRandom(9))),
+                Create(method, 240).Estimate(inputs, new DirectCoinEngine(new AnalyticSupersamplingEngine(new SeededRandom(9)))));
+    }
+
     /// <summary>IQAE's next power keeps the scaled interval inside one half-period and at least doubles K, or keeps the current k.</summary>
     [Fact]
     public void IqaesNextPowerKeepsTheIntervalInOneHalfPeriod()
