@@ -34,7 +34,7 @@ public static class EstimationReport
             (Clopper–Pearson, N = 32 flips per round, α = 0.05, the last round rerun at a fixed k on 40% of the budget against the
             bias) and the original IQAE (no rerun, estimate the last interval's middle); FAE (N1 = N2 = 8, on the coin rescaled to
             f/4); BAE (512-point grid posterior, power by expected variance reduction per query, posterior median); power-law AE
-            (β = 0.3, maximum likelihood); QSS on continuous values (t = 3..10, estimate sin²(πy/2^t)).
+            (β = 0.3, 2 flips per k, maximum likelihood); QSS on continuous values (t = 3..10, estimate sin²(πy/2^t)).
             """);
         foreach (var input in new[] { "means", "pixels" })
         {
@@ -42,6 +42,7 @@ public static class EstimationReport
             report.Heading(input == "means" ? "Uniform random means" : "The Qornell box's pixels");
             ErrorTables(report, set);
             Fits(report, set);
+            report.Text("Error against queries, log-log; the slope in each label is a least-squares fit over the budgets 240..3200:");
             report.Plot(input, Plot(input == "means" ? "Mean absolute error, uniform random means" : "Mean absolute error, Qornell box pixels", set, input == "means"),
                 input == "means" ? "error against queries, random means" : "error against queries, Qornell box pixels");
             Tail(report, set);
@@ -61,6 +62,7 @@ public static class EstimationReport
                 foreach (var budget in EstimationSettings.NoisyBudgets)
                     table.Row([F(decay, "0.###"), N(budget), .. EstimationExperiment.Estimators.Select(e => Cell(noisy, decay, e.Label, budget, p => p.Mean))]);
             report.Table(table);
+            report.Text("Under γ = 0.03, log-log; the slope in each label is a least-squares fit over the budgets 240..3200:");
             report.Plot("noise", new PlotSpec("Mean absolute error under decay γ = 0.03 per Grover operator", XLabel, "mean absolute error", AxisScale.Log10, AxisScale.Log10,
                 [.. EstimationExperiment.Estimators.Select(e => Series(e.Label, noisy.Where(p => p.Decay == 0.03 && p.Estimator == e.Label)))]), "error against queries under noise, γ = 0.03");
         }
@@ -140,7 +142,7 @@ public static class EstimationReport
     private static PlotSeries Series(string label, IEnumerable<Point> points)
     {
         var list = points.OrderBy(p => p.Queries).ToList();
-        return new PlotSeries($"{label} (fit {F(EstimationExperiment.Slope(list, 240, 3200), "0.00")})", [.. list.Select(p => (p.Queries, p.Mean))]);
+        return new PlotSeries($"{label} (slope {F(EstimationExperiment.Slope(list, 240, 3200), "0.00")})", [.. list.Select(p => (p.Queries, p.Mean))]);
     }
 
     private static string Cell(IEnumerable<Point> set, double decay, string label, long budget, Func<Point, double> value, Func<Point, string>? text = null) =>
