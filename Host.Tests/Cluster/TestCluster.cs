@@ -22,7 +22,10 @@ public sealed class TestCluster : IDisposable
     public TestCluster(double chunkTimeoutSeconds, params IChunkExecutor[] executors) : this(chunkTimeoutSeconds, null, executors) { }
 
     /// <summary>Membership through the Redis server at <paramref name="redis"/> (host:port) when given, else localhost.</summary>
-    public TestCluster(double chunkTimeoutSeconds, string? redis, params IChunkExecutor[] executors)
+    public TestCluster(double chunkTimeoutSeconds, string? redis, params IChunkExecutor[] executors) : this(chunkTimeoutSeconds, redis, null, executors) { }
+
+    /// <summary>Workers and clients that talk over mutual TLS with the PKCS#12 file <paramref name="certificate"/> when given.</summary>
+    public TestCluster(double chunkTimeoutSeconds, string? redis, string? certificate, params IChunkExecutor[] executors)
     {
         var ports = FreePorts(1 + Math.Max(1, executors.Length) * 2);
         // Without workers the file still names a gateway port, one nothing listens on.
@@ -32,7 +35,7 @@ public sealed class TestCluster : IDisposable
             ? $$""" "clustering": "localhost", "primaryPort": {{ports[1]}}, "gateways": [{{string.Join(", ", gateways)}}] """
             : $$""" "clustering": "redis", "redis": "{{redis}}" """;
         File.WriteAllText(ConfigPath, $$"""
-            { "clusterId": "test-{{Guid.NewGuid():N}}", {{membership}}, "chunkTimeoutSeconds": {{chunkTimeoutSeconds}} }
+            { "clusterId": "test-{{Guid.NewGuid():N}}", {{membership}}, "chunkTimeoutSeconds": {{chunkTimeoutSeconds}}{{(certificate is null ? "" : $", \"certificate\": {System.Text.Json.JsonSerializer.Serialize(certificate)}")}} }
             """);
         var config = ClusterConfig.Load(ConfigPath);
         for (var k = 0; k < executors.Length; k++)

@@ -252,4 +252,25 @@ public class RayTableTests
         // From z = 3 up to t = 4: depths 1 (z = 4) and 3 (z = 6); 3 = 11b, 2 bits.
         Assert.Equal(2, Table(Stack, new Ray(new Vec3(3.5, 3.5, 3), new Vec3(0, 0, 1), MaxDistance: 4)).DepthBits);
     }
+
+    /// <summary>The compact table built in one pass holds what the full table's compact form holds, on every broad random scene.</summary>
+    [Fact]
+    public void CompactBuiltDirectlyEqualsTheFullTablesCompactForm()
+    {
+        foreach (var kind in Scenes.BroadRandomScene.Kinds)
+        {
+            var scene = Scenes.BroadRandomScene.Build(kind, 11);
+            var geometry = new SceneGeometry(scene);
+            foreach (var ray in CameraRays.For(scene.Camera, 16, 16))
+            {
+                var (direct, compacted) = (RayTable.BuildCompact(geometry, ray), RayTable.Build(geometry, ray).Compact());
+                Assert.True(direct.IsCompact);
+                Assert.Equal(compacted.DepthBits, direct.DepthBits);
+                var window = direct.FullRange;
+                Assert.Equal(compacted.Marked(window).Indices.ToArray(), direct.Marked(window).Indices.ToArray());
+                foreach (var p in compacted.Marked(window).Indices.ToArray())
+                    Assert.Equal((compacted.Depth(p), compacted.Distance(p)), (direct.Depth(p), direct.Distance(p)));
+            }
+        }
+    }
 }

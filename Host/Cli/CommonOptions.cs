@@ -55,6 +55,17 @@ public static class CommonOptions
     public static Option<DirectoryInfo> SceneDirectory() =>
         new("--scenes") { Description = "Directory holding the scene files.", DefaultValueFactory = _ => new DirectoryInfo("Scenes") };
 
+    /// <summary>A memory limit written 512M or 4G (<see cref="OptionText.ParseBytes"/>); left out, what the machine has available.</summary>
+    public static Option<string?> MaxMemory(string description)
+    {
+        var option = new Option<string?>("--max-memory") { Description = description, HelpName = "SIZE" };
+        option.Validators.Add(r =>
+        {
+            if (OptionText.ParseBytes(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--max-memory: {error}");
+        });
+        return option;
+    }
+
     /// <summary>An image size written WIDTHxHEIGHT or as one number for a square (<see cref="OptionText.ParseSize"/>); left out, the scene's.</summary>
     public static Option<string?> ImageSize(string description)
     {

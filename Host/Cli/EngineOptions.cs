@@ -20,6 +20,7 @@ public sealed class EngineOptions
         [EngineKind.Gate] = "gate (the gate-level intersection oracle, comparators and all, on the full-state simulator; exact, slow: tiny images)",
         [EngineKind.Analytic] = "analytic (exact outcome distributions sampled in C#; reproducible by seed)",
         [EngineKind.Classical] = "classical (brute force, every primitive tested: the reference)",
+        [EngineKind.Bvh] = "bvh (a bounding-volume hierarchy, SAH build: certain like brute force; #C_Int counts box and primitive tests and the build)",
         [EngineKind.Randomized] = "randomized (floor(sqrt N) random primitives per ray, the paper's sec. 6.3)",
     };
 

@@ -25,6 +25,18 @@ public static class OptionText
     /// <summary>The size <paramref name="text"/> gives (validated at parse time), else the scene's own.</summary>
     public static (int Width, int Height) SizeOr(string? text, Scene scene) => ParseSize(text) is { Size: { } size } ? size : (scene.Width, scene.Height);
 
+    /// <summary>"512M", "4G", "1.5G" or a plain byte count → bytes; null text → no limit.</summary>
+    public static (long? Bytes, string? Error) ParseBytes(string? text)
+    {
+        if (text is null) return (null, null);
+        var unit = text.Length > 0 ? char.ToUpperInvariant(text[^1]) : ' ';
+        var shift = unit switch { 'K' => 10, 'M' => 20, 'G' => 30, 'T' => 40, _ => 0 };
+        var number = shift == 0 ? text : text[..^1];
+        if (!double.TryParse(number, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out var value) || value <= 0 || value * (1L << shift) > long.MaxValue / 2)
+            return (null, $"expected a size such as 512M or 4G, got '{text}'");
+        return ((long)(value * (1L << shift)), null);
+    }
+
     /// <summary>"12,7" → the pixel; null text → no pixel.</summary>
     public static ((int X, int Y)? Pixel, string? Error) ParsePixel(string? text)
     {

@@ -25,10 +25,12 @@ public sealed class RenderCommand : Command
 
     private readonly Option<int> _referenceSamples = CommonOptions.ReferenceSamples("Area samples and VPLs per point of the converged classical reference the render is also compared with when it samples light (area lights or --vpl); 0 skips it. It costs about this many / --area-samples (or --vpl) times a classical render.", min: 0);
 
+    private readonly Option<string?> _maxMemory = CommonOptions.MaxMemory($"Refuse a render of {RenderForecast.LargePixels:N0} pixels or more whose forecast peak memory exceeds SIZE (512M, 4G). Default: the memory this machine has available.");
+
     private readonly RenderOptionSet _render = new();
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic,
-        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Randomized);
+        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Bvh, EngineKind.Randomized);
 
     private readonly QSearchOptionSet _qsearch = new();
 
@@ -37,7 +39,7 @@ public sealed class RenderCommand : Command
     public RenderCommand() : base("render", "Render a scene with quantum (or classical) ray searches; print cost per pass (paper table 1) and the error against the classical image.")
     {
         Arguments.Add(_scene);
-        this.AddOptions(_output, _size, _reference, _referenceSamples);
+        this.AddOptions(_output, _size, _reference, _referenceSamples, _maxMemory);
         _render.AddTo(this);
         Options.Add(_render.Budget);
         _engine.AddTo(this);
@@ -57,7 +59,7 @@ public sealed class RenderCommand : Command
         EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
 
         RenderRunView.PrintPlan(settings, RenderPlan.Of(settings));
-        var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress());
+        var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), RenderRunView.PrintForecast);
         RenderRunView.Print(settings, run);
         _json.Write(parse, run.Figures, _engine, run.RanOn);
         return ExitCodes.Success;
@@ -73,6 +75,6 @@ public sealed class RenderCommand : Command
         var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
         return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
             parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
-            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse));
+            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), MaxMemory: OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes);
     }
 }

@@ -6,7 +6,7 @@ namespace QuantumRayTracing.Cli;
 /// <summary>`worker`: options → <see cref="WorkerSettings"/> → <see cref="WorkerRun"/>, a worker of a cluster serving Q# chunks on this machine's bridges.</summary>
 public sealed class WorkerCommand : Command
 {
-    private readonly Option<FileInfo?> _cluster = CommonOptions.Cluster("The cluster file (JSON: clusterId, clustering localhost|redis, primaryPort, gateways, redis, chunkTimeoutSeconds; docs/cluster.md). Default: none; a worker needs one.", required: true);
+    private readonly Option<FileInfo?> _cluster = CommonOptions.Cluster("The cluster file (JSON: clusterId, clustering localhost|redis, primaryPort, gateways, redis, chunkTimeoutSeconds, certificate; docs/cluster.md). Default: none; a worker needs one.", required: true);
 
     private readonly Option<int> _workers = CommonOptions.Workers("Node bridge processes running Q# chunks in parallel. Default: the core count.");
 

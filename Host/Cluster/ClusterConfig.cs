@@ -11,6 +11,7 @@ namespace QuantumRayTracing.Cluster;
 /// <param name="Gateways">Localhost: the gateway ports of the workers, which a render connects to.</param>
 /// <param name="Redis">Redis: the StackExchange.Redis connection string, e.g. <c>redis-host:6379</c>.</param>
 /// <param name="ChunkTimeout">How long one chunk may take on one worker before it is sent to another.</param>
+/// <param name="Certificate">The PKCS#12 file workers and renders talk over mutual TLS with (<see cref="ClusterCertificate"/>); null: plain TCP.</param>
 public sealed record ClusterConfig(
     string Path,
     string ClusterId,
@@ -18,7 +19,8 @@ public sealed record ClusterConfig(
     int PrimaryPort,
     IReadOnlyList<int> Gateways,
     string? Redis,
-    TimeSpan ChunkTimeout)
+    TimeSpan ChunkTimeout,
+    string? Certificate = null)
 {
     public const int DefaultPrimaryPort = 11111;
     public const int DefaultGatewayPort = 30000;
@@ -43,7 +45,7 @@ public sealed record ClusterConfig(
         }
         if (root.ValueKind != JsonValueKind.Object) throw new UserError($"{path}: a cluster file is one JSON object");
 
-        var known = new[] { "clusterId", "clustering", "primaryPort", "gateways", "redis", "chunkTimeoutSeconds" };
+        var known = new[] { "clusterId", "clustering", "primaryPort", "gateways", "redis", "chunkTimeoutSeconds", "certificate" };
         foreach (var property in root.EnumerateObject())
             if (!known.Contains(property.Name))
                 throw new UserError($"{path}: unknown field '{property.Name}'; the fields are {string.Join(", ", known)}");
@@ -85,7 +87,14 @@ public sealed record ClusterConfig(
                 throw new UserError($"{path}: field 'chunkTimeoutSeconds' must be a number of seconds in (0, 86400], not {t.GetRawText()}");
             timeout = TimeSpan.FromSeconds(seconds);
         }
-        return new ClusterConfig(path, Text("clusterId", "qrt"), clustering, primary, gateways, redis, timeout);
+        // A certificate path is relative to the cluster file; it is read once here so a bad one fails before anything starts.
+        string? certificate = null;
+        if (root.TryGetProperty("certificate", out _))
+        {
+            certificate = System.IO.Path.GetFullPath(Text("certificate", null), System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(path))!);
+            ClusterCertificate.Load(path, certificate).Dispose();
+        }
+        return new ClusterConfig(path, Text("clusterId", "qrt"), clustering, primary, gateways, redis, timeout, certificate);
     }
 }
 

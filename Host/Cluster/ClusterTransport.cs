@@ -80,6 +80,11 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
             });
             // The chunk time limit is ours (Send); Orleans' own limit only backs it up.
             client.Configure<ClientMessagingOptions>(o => o.ResponseTimeout = config.ChunkTimeout + TimeSpan.FromMinutes(1));
+            if (config.Certificate is { } file)
+            {
+                var certificate = ClusterCertificate.Load(config.Path, file);
+                client.UseTls(certificate, o => ClusterCertificate.Configure(o, certificate));
+            }
             if (config.Clustering == ClusteringKind.Localhost)
                 client.UseLocalhostClustering(config.Gateways.ToArray(), WorkerSilo.ServiceId, config.ClusterId);
             else
@@ -118,7 +123,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         {
             host.Dispose();
             var why = e is TimeoutException && refused is not null ? refused : e;
-            throw new ClusterException($"{config.Path}: no worker of cluster '{config.ClusterId}' reachable at {where} ({FirstLine(why.Message)}); start one with 'qrt worker --cluster {config.Path}'", e);
+            throw new ClusterException($"{config.Path}: no worker of cluster '{config.ClusterId}' reachable at {where} ({FirstLine(why.Message)}); start one with 'qrt worker --cluster {config.Path}'{(config.Certificate is null ? "; workers that hold a certificate serve only clients whose cluster file names it" : "")}", e);
         }
         catch
         {

@@ -29,7 +29,7 @@ public static class WorkerRun
             throw new ClusterException($"{config.Path}: this worker could not join cluster '{config.ClusterId}' ({where}): {e.Message.Split('\n')[0].TrimEnd('\r')}", e);
         }
         var silo = host.Services.GetRequiredService<ILocalSiloDetails>().SiloAddress;
-        say($"worker ready: cluster '{config.ClusterId}' ({config.Clustering.ToString().ToLowerInvariant()} membership, {config.Path}), silo {silo}, gateway port {gatewayPort}, {bridges.Capacity} bridges, qsharp-lang {qsharp}");
+        say($"worker ready: cluster '{config.ClusterId}' ({config.Clustering.ToString().ToLowerInvariant()} membership, {config.Path}), silo {silo}, gateway port {gatewayPort}, {bridges.Capacity} bridges, qsharp-lang {qsharp}, {(config.Certificate is null ? "plain TCP: any process that reaches these ports can send work (docs/cluster.md)" : $"mutual TLS: only holders of {System.IO.Path.GetFileName(config.Certificate)}")}");
 
         var statistics = host.Services.GetRequiredService<WorkerStatistics>();
         var lifetime = host.Services.GetRequiredService<IHostApplicationLifetime>();

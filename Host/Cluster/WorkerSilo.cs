@@ -42,6 +42,11 @@ public static class WorkerSilo
                 silo.ConfigureEndpoints(advertise ?? Dns.GetHostName(), siloPort, gatewayPort, System.Net.Sockets.AddressFamily.InterNetwork, listenOnAnyHostAddress: true);
             }
             silo.AddPlacementDirector<SiloKeyedPlacementStrategy, SiloKeyedPlacementDirector>();
+            if (config.Certificate is { } file)
+            {
+                var certificate = ClusterCertificate.Load(config.Path, file);
+                silo.UseTls(certificate, o => ClusterCertificate.Configure(o, certificate));
+            }
         });
         return builder.Build();
     }

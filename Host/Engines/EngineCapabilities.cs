@@ -26,8 +26,8 @@ public static class EngineCapabilities
         /// <summary>Runs Pauli noise through its depolarizing approximation rather than the noisy simulator.</summary>
         public bool ApproximatesNoise => kind == EngineKind.Analytic;
 
-        /// <summary>Tests every primitive: certain answers, the reference every render is compared with.</summary>
-        public bool IsExact => kind == EngineKind.Classical;
+        /// <summary>Certain answers, every ray's best hit: brute force (the reference every render is compared with) and the BVH.</summary>
+        public bool IsExact => kind is EngineKind.Classical or EngineKind.Bvh;
 
         /// <summary>The same seed gives the same bytes: every engine whose randomness is ours.</summary>
         public bool IsSeedable => !kind.RunsQSharp;

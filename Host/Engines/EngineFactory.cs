@@ -3,6 +3,7 @@ using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Search.Bvh;
 
 namespace QuantumRayTracing.Engines;
 
@@ -22,7 +23,12 @@ public static class EngineFactory
     public static IHitSearch CreateSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null) =>
         kind.SearchesWithGrover
             ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates)
-            : kind == EngineKind.Classical ? new ClassicalHitSearch() : new RandomizedHitSearch(root.Fork(RandomStreams.Engine));
+            : kind switch
+            {
+                EngineKind.Classical => new ClassicalHitSearch(),
+                EngineKind.Bvh => new BvhHitSearch(),
+                _ => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
+            };
 
     /// <summary>
     /// A Grover engine, its noise model checked; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines

@@ -15,6 +15,9 @@ public enum EngineKind
     /// <summary>Brute force: every ray tested against every primitive. The reference.</summary>
     Classical,
 
+    /// <summary>A bounding-volume hierarchy (SAH build): the classical renderer with a spatial structure; certain, like brute force.</summary>
+    Bvh,
+
     /// <summary>The paper's sec. 6.3: every ray tested against floor(sqrt N) random primitives.</summary>
     Randomized,
 }

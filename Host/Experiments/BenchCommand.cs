@@ -23,5 +23,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchEstimationCommand());
         Subcommands.Add(new BenchFullStatePerformanceCommand());
         Subcommands.Add(new BenchClusterPerformanceCommand());
+        Subcommands.Add(new BenchBvhComparisonCommand());
+        Subcommands.Add(new BenchScaleCommand());
     }
 }

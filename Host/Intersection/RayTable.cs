@@ -58,14 +58,19 @@ public sealed class RayTable
     }
 
     private RayTable(RayTable full, int[] rows)
+        : this(full.Geometry, full.Ray, full.DepthBits, rows, [.. rows.Select(full.Depth)], [.. rows.Select(full.Distance)])
     {
-        Geometry = full.Geometry;
-        Ray = full.Ray;
-        Count = full.Count;
-        DepthBits = full.DepthBits;
+    }
+
+    private RayTable(SceneGeometry geometry, Ray ray, int depthBits, int[] rows, int[] depths, double[] distances)
+    {
+        Geometry = geometry;
+        Ray = ray;
+        Count = geometry.Count;
+        DepthBits = depthBits;
         _rows = rows;
-        _depths = rows.Select(full.Depth).ToArray();
-        _distances = rows.Select(full.Distance).ToArray();
+        _depths = depths;
+        _distances = distances;
     }
 
     /// <summary>One row of a ray's table: eval-rpc for primitive <paramref name="p"/> alone, O(1).</summary>
@@ -113,6 +118,27 @@ public sealed class RayTable
         ArgumentNullException.ThrowIfNull(geometry);
         ArgumentNullException.ThrowIfNull(ray);
         return new RayTable(geometry, ray);
+    }
+
+    /// <summary>
+    /// The compact table (<see cref="Compact"/>) built in one pass over the primitives, without the full table's
+    /// N-row arrays: the same rows, depths, distances and <see cref="DepthBits"/> as <c>Build(…).Compact()</c>.
+    /// </summary>
+    public static RayTable BuildCompact(SceneGeometry geometry, Ray ray)
+    {
+        ArgumentNullException.ThrowIfNull(geometry);
+        ArgumentNullException.ThrowIfNull(ray);
+        var inside = new List<(int Row, int Depth, double Distance)>();
+        var maxDepth = 0;
+        for (var p = 0; p < geometry.Count; p++)
+        {
+            var row = EvaluateRow(geometry, ray, p);
+            if (!row.Valid) continue;
+            maxDepth = Math.Max(maxDepth, row.Depth);
+            if (Inside(geometry, p, row.X, row.Y, row.Z)) inside.Add((p, row.Depth, row.Distance));
+        }
+        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)),
+            [.. inside.Select(r => r.Row)], [.. inside.Select(r => r.Depth)], [.. inside.Select(r => r.Distance)]);
     }
 
     public SceneGeometry Geometry { get; }

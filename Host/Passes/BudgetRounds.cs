@@ -8,7 +8,8 @@ namespace QuantumRayTracing.Passes;
 /// Holds a pass to its share of the accuracy budget: while the rays' expected wrong (<see cref="RayLedger"/>)
 /// exceeds the allowance, a round searches once more the fewest rays, most likely wrong first, whose
 /// confirmation would bring it within: rays on the cheap path, rays whose trailing misses say little, rays
-/// cut off by the round limit. Each round uses the schedule that lowers a ray's odds of being wrong most per query
+/// cut off by the round limit; but no ray less likely wrong than the likeliest will be after the round (that one's
+/// next confirmation is the better buy, so rounds take the likeliest again before they reach the unlikely many). Each round uses the schedule that lowers a ray's odds of being wrong most per query
 /// (the engine's full search, the lattice's cheap confirmation or a planned list). A ray whose remaining confirmations
 /// are expected to cost more than the N tests that would settle it is settled classically instead.
 /// </summary>
@@ -44,9 +45,12 @@ public static class BudgetRounds
             var miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
             var cost = search.EmptySearchCost(count, schedule);
             var selected = new HashSet<int>();
+            // A ray less likely wrong than the likeliest will still be after this round's confirmation waits: confirming
+            // that one again next round buys more of the expectation per query. The last round takes what it needs.
+            var floor = round == MaxRounds - 1 ? 0 : expected.Max() * miss;
             foreach (var i in Enumerable.Range(0, rays.Count).Where(i => expected[i] > 0).OrderByDescending(i => expected[i]).ThenBy(i => i))
             {
-                if (rest <= allowance) break;
+                if (rest <= allowance || expected[i] < floor) break;
                 selected.Add(i);
                 rest -= expected[i] * (1 - miss);
             }

@@ -67,7 +67,7 @@ public static class DirectPass
             if (occluders[i] is not null) ledger.MarkCertain(i);
         if (options.Allowance is { } allowance
             && BudgetRounds.Run(name, search, geometry, shadowRays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
-            metrics = PassMetrics.Phases(metrics, rounds, 0, 0);
-        return ([.. occluders.Select(o => o is not null)], metrics with { ExpectedWrong = ledger.ExpectedTotal });
+            metrics = PassMetrics.Phases(metrics, rounds with { RoundIntersections = rounds.IntersectionsConservative }, 0, 0);
+        return ([.. occluders.Select(o => o is not null)], metrics with { ExpectedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
     }
 }

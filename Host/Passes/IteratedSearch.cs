@@ -7,9 +7,9 @@ namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// The loop every pass shares: up to <c>iterations</c> rounds, each searching every unfinished ray
-/// once through the engine seam. A ray's lookup table is built in its first round (a block of rays
-/// at a time, so only one block's full tables are in memory) and only its compact form, the rows
-/// inside their rectangles, is kept for later rounds. The pass decides the window of each search and
+/// once through the engine seam. A ray's lookup table is built in its first round, in its compact form
+/// (the rows inside their rectangles, all any window can accept: N row evaluations, a handful of rows
+/// kept), and kept for later rounds; an engine that loads every row builds the full table itself. The pass decides the window of each search and
 /// what an outcome means.
 /// </summary>
 public static class IteratedSearch
@@ -53,7 +53,7 @@ public static class IteratedSearch
             {
                 var block = active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
                 var tables = new RayTable[block.Length];
-                Parallel.For(0, block.Length, k => tables[k] = kept[block[k]] ?? RayTable.Build(geometry, rays[block[k]]));
+                Parallel.For(0, block.Length, k => tables[k] = kept[block[k]] ?? RayTable.BuildCompact(geometry, rays[block[k]]));
                 tableRows += (long)block.Count(i => kept[i] is null) * geometry.Count;
                 var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]), schedule?.Invoke(round, ray))).ToArray();
                 var classically = settle is null ? [] : Enumerable.Range(0, block.Length).Where(k => settle(round, block[k])).ToArray();
@@ -65,7 +65,7 @@ public static class IteratedSearch
                     cost += outcomes[k].Cost;
                     ledger?.Record(block[k], queries[k].Schedule, outcomes[k]);
                     finished[block[k]] = observe(block[k], tables[k], outcomes[k]);
-                    kept[block[k]] = finished[block[k]] ? null : tables[k].Compact();
+                    kept[block[k]] = finished[block[k]] ? null : tables[k];
                 }
                 progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
             }

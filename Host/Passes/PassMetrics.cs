@@ -15,6 +15,12 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     /// <summary>The rays the pass is expected to leave wrong (<see cref="RayLedger"/>).</summary>
     public double ExpectedWrong { get; init; }
 
+    /// <summary>#Int (conservative) of the lattice's cheap confirmations, before any budget round.</summary>
+    public long CheapIntersections { get; init; }
+
+    /// <summary>#Int (conservative) of the budget rounds (<see cref="BudgetRounds"/>), their classical settles included.</summary>
+    public long RoundIntersections { get; init; }
+
     /// <summary>#Int = #Eval + #C_Int, in the conservative query count.</summary>
     public long IntersectionsConservative => Cost.QueriesConservative + Cost.ClassicalTests;
 
@@ -36,6 +42,8 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     {
         SettledRays = first.SettledRays + second.SettledRays,
         ExpectedWrong = second.ExpectedWrong,
+        CheapIntersections = first.CheapIntersections + second.CheapIntersections,
+        RoundIntersections = first.RoundIntersections + second.RoundIntersections,
     };
 
     /// <summary>The metrics of several passes together; #It is the largest of theirs.</summary>
@@ -50,5 +58,7 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     {
         SettledRays = passes.Sum(p => p.SettledRays),
         ExpectedWrong = passes.Sum(p => p.ExpectedWrong),
+        CheapIntersections = passes.Sum(p => p.CheapIntersections),
+        RoundIntersections = passes.Sum(p => p.RoundIntersections),
     };
 }

@@ -8,10 +8,13 @@ namespace QuantumRayTracing.Passes;
 /// last episode ends with the ray's trailing empty searches, each missing with at most its schedule's worst miss
 /// m for t = 1..<see cref="Rendering.RenderOptions.ConfirmationMaxT"/>, so an episode that had something to find
 /// ends wrong with probability at most W = ∏ m. With π the share of episodes that have something to find,
-/// estimated per path (rays first searched with the lattice's cheap confirmation, and all others) from how
-/// often that path's searches found something (with half a find more, so a path that found nothing is not taken
-/// for right), a ray is wrong with probability π W / (1 − π + π W), the posterior given its trailing misses.
-/// Summed over a path before any budget round this is about the path's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
+/// estimated per stratum from how often that stratum's searches found something (with half a find more, so a
+/// stratum that found nothing is not taken for right), a ray is wrong with probability π W / (1 − π + π W), the
+/// posterior given its trailing misses. The strata are fixed before an episode's searches: the ray's path (first
+/// searched with the lattice's cheap confirmation, or not) and whether the episode began with the ray's first search
+/// or after a find (minimum finding: a ray that has just found a closer hit often has another closer still, a ray
+/// its neighbours predicted seldom has).
+/// Summed over a stratum before any budget round this is about the stratum's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
 /// A certain answer (a classical test of every primitive) is never wrong.
 /// </summary>
 public sealed class RayLedger
@@ -21,11 +24,15 @@ public sealed class RayLedger
 
     private const int Unsearched = 0, CheapPath = 1, FullPath = 2;
 
+    // Per path, episodes that began with the ray's first search and episodes that began after a find.
+    private const int Strata = 2 * (FullPath + 1);
+
     private readonly double[] _trailing;
     private readonly int[] _path;
     private readonly bool[] _done;
-    private readonly long[] _found = new long[3];
-    private readonly double[] _prior = new double[3];
+    private readonly bool[] _afterFind;
+    private readonly long[] _found = new long[Strata];
+    private readonly double[] _prior = new double[Strata];
     private readonly Func<QSearchSchedule?, double> _worstMiss;
     private readonly QSearchSchedule? _cheap;
     private readonly bool _findEnds;
@@ -40,6 +47,7 @@ public sealed class RayLedger
         _trailing = Enumerable.Repeat(1.0, rays).ToArray();
         _path = new int[rays];
         _done = new bool[rays];
+        _afterFind = new bool[rays];
         _worstMiss = worstMiss;
         _cheap = cheap;
         _findEnds = findEnds;
@@ -64,10 +72,15 @@ public sealed class RayLedger
 
     public int Rays => _trailing.Length;
 
+    /// <summary>#Int (conservative) of the lattice's cheap confirmations before the budget rounds.</summary>
+    public long CheapIntersections { get; private set; }
+
     /// <summary>Takes one search of <paramref name="ray"/> with <paramref name="schedule"/> and its outcome.</summary>
     public void Record(int ray, QSearchSchedule? schedule, HitOutcome outcome)
     {
         if (_path[ray] == Unsearched) _path[ray] = _cheap is not null && schedule == _cheap ? CheapPath : FullPath;
+        if (!_frozen && !outcome.Certain && _cheap is not null && schedule == _cheap)
+            CheapIntersections += outcome.Cost.QueriesConservative + outcome.Cost.ClassicalTests;
         if (outcome.Certain)
         {
             _done[ray] = true;
@@ -75,9 +88,9 @@ public sealed class RayLedger
         }
         if (outcome.Primitive is not null)
         {
-            if (!_frozen) _found[_path[ray]]++;
+            if (!_frozen) _found[Stratum(ray)]++;
             if (_findEnds) _done[ray] = true;
-            else _trailing[ray] = 1;
+            else (_trailing[ray], _afterFind[ray]) = (1, true);
         }
         else _trailing[ray] *= _worstMiss(schedule);
     }
@@ -86,31 +99,33 @@ public sealed class RayLedger
     public void MarkCertain(int ray) => _done[ray] = true;
 
     /// <summary>
-    /// Fixes each path's π from the searches so far (the pass's own rounds): later searches (budget rounds) only
+    /// Fixes each stratum's π from the searches so far (the pass's own rounds): later searches (budget rounds) only
     /// lower the rays' trailing W, they do not change how likely a ray was to have something left.
     /// </summary>
     public void Freeze()
     {
         if (_frozen) return;
-        foreach (var path in new[] { CheapPath, FullPath })
+        for (var stratum = 0; stratum < Strata; stratum++)
         {
-            var open = Enumerable.Range(0, Rays).Where(i => _path[i] == path && !_done[i]).ToArray();
+            var open = Enumerable.Range(0, Rays).Where(i => _path[i] != Unsearched && Stratum(i) == stratum && !_done[i]).ToArray();
             var completed = open.Where(i => _trailing[i] < 1).ToArray();
-            var episodes = _found[path] + open.Length;
+            var episodes = _found[stratum] + open.Length;
             var w = completed.Length == 0 ? 0 : completed.Average(i => _trailing[i]);
-            // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a path whose searches found
+            // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a stratum whose searches found
             // nothing has not shown that its rays are right, only that few of them are wrong.
-            _prior[path] = open.Length == 0 ? 0 : Math.Min(PriorCap, (_found[path] + 0.5) / ((episodes + 1) * (1 - w)));
+            _prior[stratum] = open.Length == 0 ? 0 : Math.Min(PriorCap, (_found[stratum] + 0.5) / ((episodes + 1) * (1 - w)));
         }
         _frozen = true;
     }
+
+    private int Stratum(int ray) => 2 * _path[ray] + (_afterFind[ray] ? 1 : 0);
 
     /// <summary>The probability ray <paramref name="ray"/> is wrong (<see cref="Freeze"/> first).</summary>
     public double Expected(int ray)
     {
         if (!_frozen) throw new InvalidOperationException("freeze the ledger first");
         if (_path[ray] == Unsearched || _done[ray]) return 0;
-        var (pi, w) = (_prior[_path[ray]], _trailing[ray]);
+        var (pi, w) = (_prior[Stratum(ray)], _trailing[ray]);
         return pi * w / (1 - pi + pi * w);
     }
 

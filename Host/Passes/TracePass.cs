@@ -65,7 +65,7 @@ public static class TracePass
         }
         if (options.Allowance is { } allowance
             && BudgetRounds.Run(name, search, geometry, rays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
-            metrics = PassMetrics.Phases(metrics, rounds, 0, 0);
-        return (hits, metrics with { ExpectedWrong = ledger.ExpectedTotal });
+            metrics = PassMetrics.Phases(metrics, rounds with { RoundIntersections = rounds.IntersectionsConservative }, 0, 0);
+        return (hits, metrics with { ExpectedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
     }
 }

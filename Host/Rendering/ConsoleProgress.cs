@@ -5,7 +5,8 @@ namespace QuantumRayTracing.Rendering;
 
 /// <summary>
 /// Progress on standard error, only once work has run longer than a second: a line rewritten in place
-/// on a terminal, a line per tenth of a stage when redirected (logs stay short).
+/// on a terminal, a line per tenth of a stage when redirected (logs stay short), with the time left in the pass once
+/// it can be told.
 /// </summary>
 public sealed class ConsoleProgress(string label) : IRenderProgress
 {
@@ -13,27 +14,41 @@ public sealed class ConsoleProgress(string label) : IRenderProgress
     private readonly Stopwatch _clock = Stopwatch.StartNew();
     private readonly bool _terminal = !Console.IsErrorRedirected;
     private string _lastLine = "";
+    private string? _stage;
+    private TimeSpan _stageStart;
     private bool _wroteInPlace;
 
     public void Report(string stage, double done)
     {
+        if (stage != _stage) (_stage, _stageStart) = (stage, _clock.Elapsed);
         if (_clock.Elapsed < Delay) return;
         var percent = (int)Math.Floor(Math.Clamp(done, 0, 1) * 100);
-        var line = $"{label}: {stage} pass {(_terminal ? percent : percent / 10 * 10)}%";
-        if (line == _lastLine) return;
-        _lastLine = line;
+        // Redirected, a line per tenth of a pass: the time left rides along, it does not add lines.
+        var step = $"{label}: {stage} pass {(_terminal ? percent : percent / 10 * 10)}%";
+        var line = step + Left(done);
+        if ((_terminal ? line : step) == _lastLine) return;
+        _lastLine = _terminal ? line : step;
         if (_terminal)
         {
-            Console.Error.Write("\r" + line.PadRight(60));
+            Console.Error.Write("\r" + line.PadRight(90));
             _wroteInPlace = true;
         }
         else Console.Error.WriteLine(line);
     }
 
+    // The pass's time left at its pace so far, once it has run long enough to say (a few seconds and a tenth of its work).
+    private string Left(double done)
+    {
+        var elapsed = (_clock.Elapsed - _stageStart).TotalSeconds;
+        if (elapsed < 3 || done < 0.1 || done >= 1) return "";
+        var left = elapsed * (1 - done) / done;
+        return FormattableString.Invariant($", about {Math.Ceiling(left):F0} s left in this pass");
+    }
+
     /// <summary>Clears the in-place line so the results print on a clean line.</summary>
     public void Finish()
     {
-        if (_wroteInPlace) Console.Error.Write("\r" + new string(' ', 60) + "\r");
+        if (_wroteInPlace) Console.Error.Write("\r" + new string(' ', 90) + "\r");
         _wroteInPlace = false;
     }
 }

@@ -13,10 +13,20 @@ namespace QuantumRayTracing.Rendering;
 /// </summary>
 public static class RenderRun
 {
-    public static RenderRunResult Run(RenderRunSettings settings, IRunProgress? progress = null)
+    /// <summary>
+    /// Runs <paramref name="settings"/>. A large render (<see cref="RenderForecast.Applies"/>) is forecast first, the forecast
+    /// handed to <paramref name="onForecast"/>, and refused when its peak memory exceeds the limit.
+    /// </summary>
+    public static RenderRunResult Run(RenderRunSettings settings, IRunProgress? progress = null, Action<RenderForecast>? onForecast = null)
     {
         var (scene, options) = (settings.Scene, settings.Options);
         var plan = RenderPlan.Of(settings);
+        if (RenderForecast.Applies(settings))
+        {
+            var forecast = RenderForecast.Of(settings);
+            onForecast?.Invoke(forecast);
+            forecast.EnsureFits(settings.MaxMemory ?? AvailableMemory.Bytes(), settings.MaxMemory is not null);
+        }
         var clock = Stopwatch.StartNew();
         RenderResult result;
         try

@@ -21,6 +21,7 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model the quantum engines run under; null for the ideal machine.</param>
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+/// <param name="MaxMemory">The peak memory a large render may be forecast to need (<see cref="RenderForecast"/>); null: what the machine has available.</param>
 public sealed record RenderRunSettings(
     Scene Scene,
     RenderOptions Options,
@@ -32,7 +33,8 @@ public sealed record RenderRunSettings(
     int? Workers = null,
     int? MaxQubits = null,
     NoiseModel? Noise = null,
-    BridgePool? Pool = null)
+    BridgePool? Pool = null,
+    long? MaxMemory = null)
 {
     /// <summary>Area lights or VPLs: the render samples light, and a converged reference shows its Monte Carlo noise.</summary>
     public bool SamplesLight => RenderDefaults.SamplesLight(Scene, Options);

@@ -28,6 +28,11 @@ public static class RenderRunView
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
     }
 
+    /// <summary>A large render's forecast, printed before it starts.</summary>
+    public static void PrintForecast(RenderForecast forecast) =>
+        AnsiConsole.WriteLine(FormattableString.Invariant(
+            $"forecast: peak memory about {RenderForecast.Bytes(forecast.PeakBytes)} ({forecast.RaysPerPixel:F2} rays per pixel), at most about {forecast.Time.TotalSeconds:F0} s with the references (a line through calibration renders at {RenderForecast.CalibrationSide / 2}x{RenderForecast.CalibrationSide / 2} and {RenderForecast.CalibrationSide}x{RenderForecast.CalibrationSide}; larger renders spend less per pixel)"));
+
     /// <summary>Where the run went, the cost per pass, the error against the references and the files written.</summary>
     public static void Print(RenderRunSettings settings, RenderRunResult run)
     {

@@ -1,0 +1,106 @@
+using System.Globalization;
+using System.Text.RegularExpressions;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Reports;
+using static System.FormattableString;
+
+namespace QuantumRayTracing.Experiments;
+
+/// <summary>
+/// `bench scale`: wall time and peak memory of `render` against the pixel count, per engine, each render in a process of
+/// its own (docs/scale.md); a render the memory guard refuses is listed with its forecast.
+/// </summary>
+public static partial class ScaleExperiment
+{
+    public const string Title = "Scale: time and memory against image size";
+
+    /// <summary>One render: its engine and size, and what it took (null figures: refused, with the reason).</summary>
+    public sealed record Row(EngineKind Engine, int Size, double? RenderSeconds, double? ReferenceSeconds, long PeakBytes, double? PerRay, string? Forecast, string? Refusal)
+    {
+        public long Pixels => (long)Size * Size;
+    }
+
+    public static Report Run(ScaleSettings settings, Action<string> progress)
+    {
+        var scratch = Directory.CreateTempSubdirectory("qrt-scale-");
+        try
+        {
+            var loadBefore = LoadAverage();
+            var rows = new List<Row>();
+            foreach (var size in settings.Sizes)
+                foreach (var engine in settings.Engines)
+                {
+                    progress(Invariant($"scale: {engine.Name} at {size}x{size}"));
+                    rows.Add(Measure(settings, engine, size, scratch.FullName));
+                }
+            return Write(settings, rows, (loadBefore, LoadAverage()));
+        }
+        finally
+        {
+            scratch.Delete(recursive: true);
+        }
+    }
+
+    private static Row Measure(ScaleSettings settings, EngineKind engine, int size, string scratch)
+    {
+        var (image, json) = (Path.Combine(scratch, "render.png"), Path.Combine(scratch, "render.json"));
+        foreach (var file in Directory.EnumerateFiles(scratch)) File.Delete(file);
+        var run = RenderProcess.Run(["render", settings.SceneFile, "--engine", engine.Name, "--size", Invariant($"{size}"),
+            "--seed", Invariant($"{settings.Seed}"), "--reference-samples", "0", "-o", image], json);
+        var forecast = ForecastLine().Match(run.Output) is { Success: true } m ? m.Groups[1].Value : null;
+        if (run.Figures is not { } figures)
+        {
+            // The memory guard's refusal is a result; any other failure ends the experiment.
+            if (!run.Error.Contains("--max-memory", StringComparison.Ordinal)) throw new InvalidOperationException($"render {engine.Name} {size}x{size} failed (exit {run.ExitCode}): {run.Error}");
+            return new Row(engine, size, null, null, run.PeakBytes, null, forecast, run.Error);
+        }
+        double Seconds(string field) => figures[field]!.GetValue<double>();
+        return new Row(engine, size, Seconds("renderTime"), Seconds("referenceTime"), run.PeakBytes,
+            figures["total"]!["perRayConservative"]!.GetValue<double>(), forecast, null);
+    }
+
+    [GeneratedRegex(@"forecast: peak memory about ([0-9.]+ [MG]B)")]
+    private static partial Regex ForecastLine();
+
+    // The one-minute load average (Linux), to say how busy the machine was while it was timed; null elsewhere.
+    private static double? LoadAverage() =>
+        File.Exists("/proc/loadavg") && double.TryParse(File.ReadAllText("/proc/loadavg").Split(' ')[0], NumberStyles.Float, CultureInfo.InvariantCulture, out var load) ? load : null;
+
+    private static Report Write(ScaleSettings settings, IReadOnlyList<Row> rows, (double? Before, double? After) load)
+    {
+        var report = new Report(Title);
+        report.Text(Invariant($"""
+            `render {Path.GetFileName(settings.SceneFile)} --engine E --size S --seed {settings.Seed} --reference-samples 0`, each in a process of its own: the
+            render on the engine, then the classical reference it is compared with (same as every `render`). *Render* and *reference* are their wall
+            times as the render's JSON gives them; *peak memory* is the process's peak resident memory (Linux VmHWM, read every
+            {RenderProcess.PollInterval.TotalMilliseconds:F0} ms), over both renders. From 1024x1024 pixels `render` forecasts the run first and refuses one whose
+            forecast memory exceeds what the machine has available ([rendering.md](rendering.md#large-renders-forecast-memory-guard-and-progress)): such rows give the forecast and no times.
+            Int/Ray is conservative (docs/conventions.md; the BVH's counts node and primitive tests and its build).
+            """));
+        if (load is { Before: { } before, After: { } after })
+            report.Text(Invariant($"One-minute load average when the run started and ended: {before:F1} and {after:F1}, on {Environment.ProcessorCount} cores. Above the core count other work shared the machine, and the times are upper bounds; memory does not depend on it."));
+        var table = new TextTable("scale", ["engine", "size", "pixels", "render", "reference", "peak memory", "bytes per pixel", "forecast", "Int/Ray"]);
+        foreach (var r in rows)
+            table.Row(r.Engine.Name, Invariant($"{r.Size}x{r.Size}"), Invariant($"{r.Pixels:N0}"),
+                r.RenderSeconds is { } t ? Invariant($"{t:F2} s") : "refused", r.ReferenceSeconds is { } rt ? Invariant($"{rt:F2} s") : "",
+                r.Refusal is null ? RenderForecast.Bytes(r.PeakBytes) : "", r.Refusal is null ? Invariant($"{r.PeakBytes / (double)r.Pixels:N0}") : "",
+                r.Forecast ?? "", r.PerRay is { } p ? Invariant($"{p:F2}") : "");
+        report.Table(table.AlignRight(2, 3, 4, 5, 6, 7, 8));
+        if (rows.Any(r => r.Refusal is not null))
+            report.Text(string.Join("\n", rows.Where(r => r.Refusal is not null).Select(r => Invariant($"- {r.Engine.Name} at {r.Size}x{r.Size}: `{r.Refusal}`"))));
+
+        var measured = rows.Where(r => r.RenderSeconds is not null).ToArray();
+        PlotSeries By(EngineKind engine, Func<Row, double> value) =>
+            new(engine.Name, [.. measured.Where(r => r.Engine == engine).Select(r => ((double)r.Pixels, value(r)))]);
+        if (measured.Select(r => r.Size).Distinct().Count() > 1)
+        {
+            report.Plot("time", new PlotSpec("Render time against pixels", "pixels", "render wall time (s)", AxisScale.Log10, AxisScale.Log10,
+                [.. settings.Engines.Select(e => By(e, r => r.RenderSeconds!.Value))]), "Wall time of the render alone (not its reference) against the pixel count");
+            report.Plot("memory", new PlotSpec("Peak memory against pixels", "pixels", "peak resident memory (MB)", AxisScale.Log10, AxisScale.Log10,
+                [.. settings.Engines.Select(e => By(e, r => r.PeakBytes / (double)(1 << 20)))]), "Peak resident memory of the process (render and classical reference) against the pixel count");
+        }
+        return report;
+    }
+}

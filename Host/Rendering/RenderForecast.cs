@@ -1,0 +1,85 @@
+using System.Diagnostics;
+using QuantumRayTracing.Engines;
+using QuantumRayTracing.Output;
+using static System.FormattableString;
+
+namespace QuantumRayTracing.Rendering;
+
+/// <summary>
+/// What a large render will take, said before it starts: peak memory and wall time, from a calibration run of the same
+/// scene, engine and options at <see cref="CalibrationSide"/>² and half that (the render and its classical references), after
+/// a smaller warm-up run; the time is a line through the two, in the pixel count.
+/// </summary>
+/// <remarks>
+/// The renderer keeps every ray of a pass and every surface point until shading, so its memory grows with the rays it
+/// traces: <see cref="BytesPerRay"/> per ray above <see cref="BaseBytes"/>, both measured as peak resident memory of
+/// classical and analytic renders of the Qornell box from 256² to 2048² (docs/rendering.md), rounded up. The calibration
+/// gives the rays per pixel. Larger renders spend less time per pixel than the calibration's (measured at 1024² and 2048²:
+/// the forecast about 2 to 2.5 times the render's time), so the time is an upper estimate.
+/// </remarks>
+public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakBytes, TimeSpan Time)
+{
+    /// <summary>Renders from this many pixels (1024x1024) on are forecast first.</summary>
+    public const long LargePixels = 1L << 20;
+
+    public const int CalibrationSide = 128;
+
+    public const long BaseBytes = 256L << 20;
+
+    public const long BytesPerRay = 512;
+
+    /// <summary>Whether <paramref name="settings"/> ask for a render large enough to forecast: on an engine whose work runs here in C#.</summary>
+    public static bool Applies(RenderRunSettings settings) =>
+        (long)settings.Options.Width * settings.Options.Height >= LargePixels && !settings.Engine.RunsQSharp;
+
+    public static RenderForecast Of(RenderRunSettings settings)
+    {
+        var options = settings.Options;
+        RenderOptions At(int side)
+        {
+            var (width, height) = (Math.Min(options.Width, side), Math.Min(options.Height, side));
+            return options with { Width = width, Height = height, LatticeLevels = Math.Min(options.LatticeLevels, RenderDefaults.LatticeLevelsFor(width, height)) };
+        }
+        // A warm-up run first (it pays for compiling the renderer), then two timed sizes: a render's time is a fixed
+        // part (planning, the first lattice levels) plus a part per pixel, fitted through the two.
+        Calibrate(settings, At(CalibrationSide / 4));
+        var (small, large) = (At(CalibrationSide / 2), At(CalibrationSide));
+        var (smallTime, _) = Timed(settings, small);
+        var (largeTime, rays) = Timed(settings, large);
+        var (smallPixels, largePixels) = ((double)small.Width * small.Height, (double)large.Width * large.Height);
+        var perPixel = Math.Max(0, (largeTime - smallTime).TotalSeconds / Math.Max(1, largePixels - smallPixels));
+        var pixels = (long)options.Width * options.Height;
+        var time = largeTime + TimeSpan.FromSeconds(perPixel * (pixels - largePixels));
+        var raysPerPixel = rays / largePixels;
+        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * pixels), time);
+    }
+
+    private static (TimeSpan Time, long Rays) Timed(RenderRunSettings settings, RenderOptions options)
+    {
+        var clock = Stopwatch.StartNew();
+        var rays = Calibrate(settings, options);
+        return (clock.Elapsed, rays);
+    }
+
+    // The render and its classical references at the calibration size; the render's rays.
+    private static long Calibrate(RenderRunSettings settings, RenderOptions small)
+    {
+        var rays = Renderer.Render(settings.Scene, settings.EngineSetup, small).Total.Rays;
+        var classical = new EngineSetup(EngineKind.Classical);
+        Renderer.Render(settings.Scene, classical, RenderDefaults.Reference(small));
+        if (settings.WithConverged) Renderer.Render(settings.Scene, classical, RenderDefaults.Converged(small, Math.Max(1, settings.ReferenceSamples)));
+        return rays;
+    }
+
+    /// <summary>Refuses, naming the option, a render whose forecast peak exceeds <paramref name="limitBytes"/>.</summary>
+    public void EnsureFits(long limitBytes, bool limitGiven)
+    {
+        if (PeakBytes <= limitBytes) return;
+        var limit = limitGiven ? $"the --max-memory limit of {Bytes(limitBytes)}" : $"the {Bytes(limitBytes)} this machine has available (--max-memory sets the limit)";
+        throw new UserError(Invariant($"--size: a render of {Pixels:N0} pixels needs about {Bytes(PeakBytes)} (forecast: {RaysPerPixel:F2} rays per pixel x {BytesPerRay} bytes), more than {limit}; render a smaller size"));
+    }
+
+    /// <summary>A byte count as people read it: 512 MB, 3.2 GB.</summary>
+    public static string Bytes(long bytes) =>
+        bytes >= 1L << 30 ? Invariant($"{bytes / (double)(1L << 30):F1} GB") : Invariant($"{bytes / (double)(1L << 20):F0} MB");
+}
