@@ -102,11 +102,6 @@ public static class EstimationExperiment
     }
 
     /// <summary>Least-squares slope of log10(mean error) on log10(queries spent) over the points with budgets in [from, to]: a fit.</summary>
-    public static double Slope(IEnumerable<Point> points, long from, long to)
-    {
-        var xy = points.Where(p => p.Budget >= from && p.Budget <= to && p.Mean > 0).Select(p => (X: Math.Log10(p.Queries), Y: Math.Log10(p.Mean))).ToArray();
-        if (xy.Length < 2) return double.NaN;
-        var (mx, my) = (xy.Average(p => p.X), xy.Average(p => p.Y));
-        return xy.Sum(p => (p.X - mx) * (p.Y - my)) / xy.Sum(p => (p.X - mx) * (p.X - mx));
-    }
+    public static double Slope(IEnumerable<Point> points, long from, long to) =>
+        LogLogFit.Slope(points.Where(p => p.Budget >= from && p.Budget <= to).Select(p => (p.Queries, p.Mean)));
 }
