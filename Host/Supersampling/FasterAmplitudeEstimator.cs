@@ -7,7 +7,8 @@ namespace QuantumRayTracing.Supersampling;
 /// <para>
 /// First stage: m = 1, 2, 4, …, <see cref="FirstStageFlips"/> flips each; while 2(2m+1)θ is known to lie in [0, π] the
 /// cosine is monotone, so a confidence interval on c(m) gives an interval on θ, intersected with the last. It ends when the
-/// next m could take 2(2m+1)θ past π.
+/// next m could take 2(2m+1)θ past π, once the interval fixes the next depth's phase to ±π/3 (until then the round is
+/// repeated, its flips pooled).
 /// </para>
 /// <para>
 /// Second stage: m keeps doubling, and each round reads both c(m) and c(m + m_ν) = cos(φ + ν), φ = 2(2m+1)θ and ν = 4m_νθ,
@@ -15,7 +16,8 @@ namespace QuantumRayTracing.Supersampling;
 /// sin φ = (c(m)·cos ν − c(m + m_ν)) / sin ν, and φ = atan2(sin φ, cos φ) gives θ up to a multiple of π/(2m+1), resolved by
 /// the nearest to the last estimate. Each round doubles the depth on a fixed number of flips: near-Heisenberg scaling.
 /// </para>
-/// The depth doubles while the budget pays for its flips; then the last round takes the largest depth the budget left pays for, and what that leaves is not spent.
+/// The depth doubles while the budget pays for N flips at it; then the budget left buys more flips at the current depth,
+/// pooled with those made there, and what is left after them (less than one flip's cost) is not spent.
 /// </summary>
 public sealed class FasterAmplitudeEstimator : AdaptiveMeanEstimator
 {

@@ -12,7 +12,7 @@ namespace QuantumRayTracing.Supersampling;
 /// <remarks>
 /// The original estimate, the middle of the last interval, is biased at some means (Miyamoto, EPJ Quantum Technology 11:42,
 /// 2024): which k the last rounds take, and when the interval stops, depend on the flips the estimate is made from. The fix
-/// (the default, <see cref="RerunLastRound"/>): once the budget left is <see cref="FinalShare"/> of the whole, the k of the
+/// (the default, <see cref="RerunLastRound"/>): once another round would leave less than <see cref="FinalShare"/> of the budget, the k of the
 /// next round is fixed from the interval, all the budget left is flipped at it, and the estimate is made from those fresh
 /// flips alone, mapped into the half-period the interval has fixed. Without the fix the rounds go on until the budget
 /// cannot pay another, the last one taking the flips that are left, and the estimate is the interval's middle.
@@ -22,7 +22,7 @@ public sealed class IterativeAmplitudeEstimator : AdaptiveMeanEstimator
     /// <summary>α, the chance that the final interval misses the mean.</summary>
     public const double Alpha = 0.05;
 
-    /// <summary>The share of the budget the fixed last round takes.</summary>
+    /// <summary>With the fix, the last round starts once another round would leave less than this share of the budget, and takes all that is left.</summary>
     public const double FinalShare = 0.4;
 
     /// <param name="queries">Budget per item.</param>

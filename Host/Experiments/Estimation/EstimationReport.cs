@@ -31,7 +31,7 @@ public static class EstimationReport
             """);
         report.Text("""
             Estimators (docs/supersampling.md): Monte Carlo (MC); QCoin with the measured best k; MLAE with the default K; IQAE
-            (Clopper–Pearson, N = 32 flips per round, α = 0.05, the last round rerun at a fixed k on 40% of the budget against the
+            (Clopper–Pearson, N = 32 flips per round, α = 0.05, the last round rerun at a fixed k on at least 40% of the budget against the
             bias) and the original IQAE (no rerun, estimate the last interval's middle); FAE (N1 = N2 = 8, on the coin rescaled to
             f/4); BAE (512-point grid posterior, power by expected variance reduction per query, posterior median); power-law AE
             (β = 0.3, 2 flips per k, maximum likelihood); QSS on continuous values (t = 3..10, estimate sin²(πy/2^t)).
