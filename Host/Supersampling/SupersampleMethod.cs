@@ -24,4 +24,17 @@ public enum SupersampleMethod
     /// </summary>
     [EnumMember(Value = "mlae-noise")]
     MlaeNoise,
+
+    /// <summary>Iterative QAE with the fix against its bias (<see cref="IterativeAmplitudeEstimator"/>).</summary>
+    Iqae,
+
+    /// <summary>Faster amplitude estimation, two stages (<see cref="FasterAmplitudeEstimator"/>).</summary>
+    Fae,
+
+    /// <summary>Bayesian amplitude estimation on a grid posterior (<see cref="BayesianAmplitudeEstimator"/>).</summary>
+    Bae,
+
+    /// <summary>Power-law amplitude estimation (<see cref="PowerLawAmplitudeEstimator"/>).</summary>
+    [EnumMember(Value = "powerlaw")]
+    PowerLaw,
 }

@@ -15,9 +15,11 @@ public static class SupersampleRunView
             : $"{plan.InputName}: {input.Image.Width}x{input.Image.Height}{(input.IsGrey ? ", grey" : "")}, {s}x{s} = {input.Count} subpixels per output pixel: {input.Width}x{input.Height} output");
         if (plan.Table is { } table)
             Console.WriteLine($"QSS lookup table: {table.Readouts} readouts x {table.Subpixels + 1} hit counts, exact, {(plan.TableWasCached ? "read from" : "written to")} {plan.TablePath}");
-        Console.WriteLine($"{plan.Estimator.Name}: {plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method, settings.Device is not null)})");
+        Console.WriteLine($"{plan.Estimator.Name}: {AtMost(settings)}{plan.Estimator.Queries} queries per pixel per channel ({Registers(settings.Method, settings.Device is not null)})");
         Console.WriteLine($"noise model: {NoiseDescription(settings)}");
     }
+
+    private static string AtMost(SupersampleRunSettings settings) => settings.Method.MayStopBelowBudget ? "at most " : "";
 
     /// <summary>The queries, the error against the exact average, the confidence, the wall time and the files written.</summary>
     public static void Print(SupersampleRunSettings settings, SupersampleRunResult run)
@@ -26,7 +28,7 @@ public static class SupersampleRunView
         var (engineName, noise) = (EngineFactory.Name(settings.Engine), settings.NoiseModel);
         var error = figures.Error;
         var channels = figures.ChannelsEstimated == 1 ? "one channel (grey input), copied to R, G and B" : "R, G and B each";
-        Console.WriteLine($"queries: {figures.QueriesPerChannel} per pixel per channel, {channels}; {figures.TotalQueries:N0} in all");
+        Console.WriteLine($"queries: {AtMost(settings)}{figures.QueriesPerChannel} per pixel per channel, {channels}; {AtMost(settings)}{figures.TotalQueries:N0} in all");
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"error against the exact average: mean absolute {error.MeanLevels:0.000} levels of 255 ({error.MeanFraction:0.00000}; {error.EstimatorError:0.00000} before 8-bit rounding), zero-error pixels {error.ExactPixels} of {error.Pixels} ({error.ExactShare:P1})"));
         if (figures is { MeanConfidence: { } mean, LowestConfidence: { } lowest })

@@ -6,7 +6,7 @@ namespace QuantumRayTracing.Supersampling;
 /// </summary>
 /// <param name="Method">The estimator.</param>
 /// <param name="Side">s: each output pixel averages s x s subpixels.</param>
-/// <param name="Queries">Per pixel and channel, for mc, qcoin, mlae and mlae-noise (default <see cref="DefaultQueries"/>); QSS's follow from its counter.</param>
+/// <param name="Queries">Per pixel and channel, for every method but QSS (default <see cref="DefaultQueries"/>; an upper bound for iqae, fae and bae, which may stop below it); QSS's follow from its counter.</param>
 /// <param name="Steps">QCoin's k (default <see cref="QCoinEstimator.DefaultSteps"/>).</param>
 /// <param name="Levels">MLAE's K, plain or noise-aware (default <see cref="MaximumLikelihoodEstimator.DefaultLevels"/>).</param>
 /// <param name="CounterBits">QSS's t (default: ceil(log2 N) for bit planes, 7 for continuous values).</param>
@@ -34,6 +34,9 @@ public sealed record SupersampleSettings(
 
     /// <summary>Plain or noise-aware MLAE: the same schedule and --levels.</summary>
     public bool IsMlae => Method is SupersampleMethod.Mlae or SupersampleMethod.MlaeNoise;
+
+    /// <summary>IQAE, FAE and BAE: adaptive searches that may stop below the budget, so the budget is an upper bound.</summary>
+    public bool MayStopBelowBudget => Method is SupersampleMethod.Iqae or SupersampleMethod.Fae or SupersampleMethod.Bae;
 
     public QssValues QssValues => Values ?? QssValues.Planes;
 
@@ -72,6 +75,8 @@ public sealed record SupersampleSettings(
             if (queries < QCoinEstimator.MinimumQueries(k))
                 return $"--method qcoin with {k} step{(k == 1 ? "" : "s")} needs at least {QCoinEstimator.MinimumQueries(k)} queries, got {queries}";
         }
+        if (Method == SupersampleMethod.Fae && queries < FasterAmplitudeEstimator.MinimumQueries)
+            return $"--method fae needs at least {FasterAmplitudeEstimator.MinimumQueries} queries (one flip after one Grover operator), got {queries}";
         if (IsMlae && Levels is { } levels && queries < MaximumLikelihoodEstimator.QueriesPerShot(levels))
             return $"--method {(Method == SupersampleMethod.Mlae ? "mlae" : "mlae-noise")} with --levels {levels} needs at least {MaximumLikelihoodEstimator.QueriesPerShot(levels)} queries, got {queries}";
         return null;
@@ -88,6 +93,10 @@ public sealed record SupersampleSettings(
             SupersampleMethod.QCoin => new QCoinEstimator(queries, Steps ?? QCoinEstimator.DefaultSteps(queries)),
             SupersampleMethod.Mlae => new MaximumLikelihoodEstimator(queries, Levels ?? MaximumLikelihoodEstimator.DefaultLevels(queries)),
             SupersampleMethod.MlaeNoise => new NoiseAwareMaximumLikelihoodEstimator(queries, Levels ?? MaximumLikelihoodEstimator.DefaultLevels(queries)),
+            SupersampleMethod.Iqae => new IterativeAmplitudeEstimator(queries),
+            SupersampleMethod.Fae => new FasterAmplitudeEstimator(queries),
+            SupersampleMethod.Bae => new BayesianAmplitudeEstimator(queries),
+            SupersampleMethod.PowerLaw => new PowerLawAmplitudeEstimator(queries),
             _ when QssValues == QssValues.Continuous => new QssEstimator(CounterBitsOrDefault),
             _ => new BitPlaneQssEstimator(CheckedTable(table), PlanesOrDefault),
         };

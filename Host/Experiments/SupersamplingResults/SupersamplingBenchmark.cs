@@ -50,14 +50,8 @@ public static class SupersamplingBenchmark
         points.Where(p => p.Method == method).GroupBy(p => p.Queries).Select(g => g.MinBy(p => p.MeanError)!).OrderBy(p => p.Queries).ToList();
 
     /// <summary>Least-squares slope of log10(error) on log10(queries) over the points with queries in [from, to].</summary>
-    public static double Slope(IEnumerable<Point> points, long from, long to)
-    {
-        var xy = points.Where(p => p.Queries >= from && p.Queries <= to && p.MeanError > 0)
-            .Select(p => (X: Math.Log10(p.Queries), Y: Math.Log10(p.MeanError))).ToArray();
-        if (xy.Length < 2) return double.NaN;
-        var (mx, my) = (xy.Average(p => p.X), xy.Average(p => p.Y));
-        return xy.Sum(p => (p.X - mx) * (p.Y - my)) / xy.Sum(p => (p.X - mx) * (p.X - mx));
-    }
+    public static double Slope(IEnumerable<Point> points, long from, long to) =>
+        LogLogFit.Slope(points.Where(p => p.Queries >= from && p.Queries <= to).Select(p => ((double)p.Queries, p.MeanError)));
 
     /// <summary>Mean error in hits and share of exact readouts of a lookup table, hit counts 0..N equally likely.</summary>
     public static (double MeanError, double ExactShare) TableAccuracy(QssLookupTable table)
