@@ -147,6 +147,10 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return chunks;
     }
 
+    /// <summary>Not built on this engine: the ancilla-controlled Grover power has no Q# operation yet.</summary>
+    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests) =>
+        requests.Count == 0 ? [] : throw new ArgumentException("the fullstate engine does not run single-ancilla phase estimation (qss-bayes); use --engine analytic");
+
     public static string CoinExpression(IReadOnlyList<CoinRequest> requests)
     {
         var text = new StringBuilder(QSharpOperations.CountCoinHeadsBatch).Append("([");
