@@ -51,6 +51,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("mlae-noise")]
     [InlineData("iqae")]
     [InlineData("bae")]
+    [InlineData("qss-bayes")]
     [InlineData("powerlaw")]
     [InlineData("qss")]
     [InlineData("qss", "--qss-values", "continuous")]
@@ -144,6 +145,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("iqae")]
     [InlineData("fae")]
     [InlineData("bae")]
+    [InlineData("qss-bayes")]
     [InlineData("powerlaw")]
     [InlineData("qss")]
     public void SameSeedGivesTheSameBytes(string method)
