@@ -42,7 +42,7 @@ public sealed class SupersampleCommand : Command
         Description = "mc (Monte Carlo), qss (quantum supersampling), qcoin (QCoin, Algorithm 1), mlae (maximum-likelihood amplitude estimation), "
             + "mlae-noise (MLAE for noisy machines: each level's head probability is that of a depolarized coin, "
             + "F^m sin²((2m+1)θ) + (1 − F^m)/2, and the fidelity F per Grover operator is fitted together with the mean, so levels the noise has flattened count for little instead of biasing the estimate; the second half of the budget goes to the level the fitted noise leaves the most information per query), "
-            + "iqae (iterative QAE, rerunning its last round against its bias), fae (faster AE, two stages), bae (Bayesian AE: grid posterior, next power by expected variance reduction), qss-bayes (QSS with one ancilla and Bayesian phase estimation instead of the counter; analytic engine), powerlaw (power-law AE, m_k = floor(k^((1-b)/(2b))), b = 0.3, maximum likelihood); docs/estimation.md compares them.",
+            + "iqae (iterative QAE, rerunning its last round against its bias), fae (faster AE, two stages), bae (Bayesian AE: grid posterior, next power by expected variance reduction), qss-bayes (QSS with one ancilla and Bayesian phase estimation instead of the counter), powerlaw (power-law AE, m_k = floor(k^((1-b)/(2b))), b = 0.3, maximum likelihood); docs/estimation.md compares them.",
         DefaultValueFactory = _ => DefaultMethod,
         HelpName = "mc|qss|qcoin|mlae|mlae-noise|iqae|fae|bae|qss-bayes|powerlaw",
     };

@@ -147,9 +147,43 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return chunks;
     }
 
-    /// <summary>Not built on this engine: the ancilla-controlled Grover power has no Q# operation yet.</summary>
-    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests) =>
-        requests.Count == 0 ? [] : throw new ArgumentException("the fullstate engine does not run single-ancilla phase estimation (qss-bayes); use --engine analytic");
+    /// <summary>The single-ancilla shots, one batch; the ancilla is one qubit more than the coin.</summary>
+    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests)
+    {
+        if (requests.Count == 0) return [];
+        if (Device is not null) throw new ArgumentException(AnalyticSupersamplingEngine.DeviceNeedsDirectCoins);
+        var widest = requests.MaxBy(r => r.Amplitudes.Length)!;
+        var qubits = CoinRegisters.Coin(CoinKind.Mean, widest.Amplitudes.Length) + 1;
+        SimulatorCapacity.Check($"a single-ancilla shot over {widest.Amplitudes.Length} subpixels", qubits, qubits, MaxQubits);
+        var zeros = new int[requests.Count];
+        const string operation = QSharpOperations.CountAncillaZerosBatch;
+        Run(requests, r => (double)r.Queries * r.Amplitudes.Length, operation, AncillaExpression, (chunk, start, json) =>
+        {
+            var values = JsonSerializer.Deserialize<int[]>(json) ?? throw new BridgeException($"{operation} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{operation} returned {values.Length} counts for {chunk.Count} requests");
+            for (var k = 0; k < chunk.Count; k++)
+            {
+                if (values[k] < 0 || values[k] > chunk[k].Shots) throw new BridgeException($"{operation} returned {values[k]} zeros of {chunk[k].Shots} shots");
+                zeros[start + k] = values[k];
+            }
+        });
+        return zeros;
+    }
+
+    public static string AncillaExpression(IReadOnlyList<AncillaPhaseRequest> requests)
+    {
+        var text = new StringBuilder(QSharpOperations.CountAncillaZerosBatch).Append("([");
+        for (var k = 0; k < requests.Count; k++)
+        {
+            var r = requests[k];
+            if (k > 0) text.Append(", ");
+            text.Append('(');
+            AppendDoubles(text, r.Amplitudes);
+            text.Append(", ").Append(r.Power.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(r.Shots.ToString(CultureInfo.InvariantCulture)).Append(')');
+        }
+        return text.Append("])").ToString();
+    }
 
     public static string CoinExpression(IReadOnlyList<CoinRequest> requests)
     {
