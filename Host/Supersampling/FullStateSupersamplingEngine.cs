@@ -170,20 +170,8 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return zeros;
     }
 
-    public static string AncillaExpression(IReadOnlyList<AncillaPhaseRequest> requests)
-    {
-        var text = new StringBuilder(QSharpOperations.CountAncillaZerosBatch).Append("([");
-        for (var k = 0; k < requests.Count; k++)
-        {
-            var r = requests[k];
-            if (k > 0) text.Append(", ");
-            text.Append('(');
-            AppendDoubles(text, r.Amplitudes);
-            text.Append(", ").Append(r.Power.ToString(CultureInfo.InvariantCulture))
-                .Append(", ").Append(r.Shots.ToString(CultureInfo.InvariantCulture)).Append(')');
-        }
-        return text.Append("])").ToString();
-    }
+    public static string AncillaExpression(IReadOnlyList<AncillaPhaseRequest> requests) =>
+        AmplitudesCountsExpression(QSharpOperations.CountAncillaZerosBatch, requests.Select(r => (r.Amplitudes, r.Power, r.Shots)));
 
     public static string CoinExpression(IReadOnlyList<CoinRequest> requests)
     {
@@ -234,17 +222,21 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return text.Append("])").ToString();
     }
 
-    public static string QssExpression(IReadOnlyList<QssRequest> requests)
+    public static string QssExpression(IReadOnlyList<QssRequest> requests) =>
+        AmplitudesCountsExpression(QSharpOperations.MeasureQssBatch, requests.Select(r => (r.Amplitudes, r.CounterBits, r.Shots)));
+
+    /// <summary>A batch call whose requests are (amplitudes, an Int, an Int) tuples.</summary>
+    private static string AmplitudesCountsExpression(string operation, IEnumerable<(double[] Amplitudes, int First, int Second)> requests)
     {
-        var text = new StringBuilder(QSharpOperations.MeasureQssBatch).Append("([");
-        for (var k = 0; k < requests.Count; k++)
+        var text = new StringBuilder(operation).Append("([");
+        var separator = "";
+        foreach (var (amplitudes, first, second) in requests)
         {
-            var r = requests[k];
-            if (k > 0) text.Append(", ");
-            text.Append('(');
-            AppendDoubles(text, r.Amplitudes);
-            text.Append(", ").Append(r.CounterBits.ToString(CultureInfo.InvariantCulture))
-                .Append(", ").Append(r.Shots.ToString(CultureInfo.InvariantCulture)).Append(')');
+            text.Append(separator).Append('(');
+            AppendDoubles(text, amplitudes);
+            text.Append(", ").Append(first.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(second.ToString(CultureInfo.InvariantCulture)).Append(')');
+            separator = ", ";
         }
         return text.Append("])").ToString();
     }
