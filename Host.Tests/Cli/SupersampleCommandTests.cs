@@ -51,6 +51,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("mlae-noise")]
     [InlineData("iqae")]
     [InlineData("bae")]
+    [InlineData("qss-bayes")]
     [InlineData("powerlaw")]
     [InlineData("qss")]
     [InlineData("qss", "--qss-values", "continuous")]
@@ -144,6 +145,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("iqae")]
     [InlineData("fae")]
     [InlineData("bae")]
+    [InlineData("qss-bayes")]
     [InlineData("powerlaw")]
     [InlineData("qss")]
     public void SameSeedGivesTheSameBytes(string method)
@@ -252,7 +254,7 @@ public sealed class SupersampleCommandTests : IDisposable
     [InlineData("--counter-bits must be at most 12, got 13", "--counter-bits", "13")]
     [InlineData("--planes must be at least 1, got 0", "--planes", "0")]
     [InlineData("--engine classical is not available here", "--engine", "classical")]
-    [InlineData("--method: 'bogus' is not one of mc, qss, qcoin, mlae, mlae-noise, iqae, fae, bae, powerlaw", "-m", "bogus")]
+    [InlineData("--method: 'bogus' is not one of mc, qss, qcoin, mlae, mlae-noise, iqae, fae, bae, qss-bayes, powerlaw", "-m", "bogus")]
     [InlineData("--engine: 'bogus' is not one of", "-e", "bogus")]
     [InlineData("--qss-values: '2' is not one of planes, continuous", "--qss-values", "2")]
     public void ImpossibleCombinationsAreUsageErrors(string message, params string[] options)

@@ -4,7 +4,7 @@ using QuantumRayTracing.Supersampling;
 namespace QuantumRayTracing.Tests.Supersampling;
 
 /// <summary>
-/// IQAE, FAE, BAE and power-law AE on the analytic engine, fixed seeds, 800 uniform random means (one subpixel each).
+/// IQAE, FAE, BAE, power-law AE and QSS with Bayesian phase estimation (qss-bayes) on the analytic engine, fixed seeds, 800 uniform random means (one subpixel each).
 /// Each bound is stated against what a wrong estimator would show: Monte Carlo's exact expected error at the same
 /// queries (the quantum estimators must beat it by a margin), and the fitted log-log slope of the mean error between
 /// 400 and 3,200 queries (−0.5 is Monte Carlo's scaling, −1 Heisenberg's). The standard error of an 800-mean average
@@ -33,6 +33,7 @@ public class AmplitudeEstimatorTests
         "fae" => new FasterAmplitudeEstimator(queries),
         "bae" => new BayesianAmplitudeEstimator(queries),
         "powerlaw" => new PowerLawAmplitudeEstimator(queries),
+        "qss-bayes" => new BayesianPhaseEstimator(queries),
         "powerlaw-classical" => new PowerLawAmplitudeEstimator(queries, beta: 1),
         _ => throw new ArgumentException(method),
     };
@@ -61,8 +62,11 @@ public class AmplitudeEstimatorTests
         return errors[errors.Length / 2];
     }
 
-    // Measured ratios to Monte Carlo on these means: iqae 0.42 and bae 0.16 at 960 queries, powerlaw 0.21; fae's median 0.58 at 3,200.
+    // Measured ratios to Monte Carlo on these means: iqae 0.42 and bae 0.16 at 960 queries, powerlaw 0.21; fae's median 0.58 at 3,200;
+    // qss-bayes 0.57 at 240 and 0.33 at 960.
     [Theory]
+    [InlineData("qss-bayes", 240, 0.75)]
+    [InlineData("qss-bayes", 960, 0.45)]
     [InlineData("iqae", 960, 0.6)]
     [InlineData("bae", 960, 0.4)]
     [InlineData("powerlaw", 960, 0.4)]
@@ -78,6 +82,7 @@ public class AmplitudeEstimatorTests
     [Theory]
     [InlineData("iqae", -0.8)]
     [InlineData("bae", -0.8)]
+    [InlineData("qss-bayes", -0.8)]
     [InlineData("powerlaw", -0.8)]
     [InlineData("fae", -0.7)]
     public void ErrorFallsAboutAsOneOverQueries(string method, double bound)
@@ -122,7 +127,7 @@ public class AmplitudeEstimatorTests
             foreach (var estimator in new AdaptiveMeanEstimator[]
             {
                 new IterativeAmplitudeEstimator(queries), new IterativeAmplitudeEstimator(queries, 4, BinomialIntervalKind.Chernoff, rerunLastRound: false),
-                new FasterAmplitudeEstimator(queries), new BayesianAmplitudeEstimator(queries),
+                new FasterAmplitudeEstimator(queries), new BayesianAmplitudeEstimator(queries), new BayesianPhaseEstimator(queries),
             })
             {
                 // The engine counts what it is asked for, independently of the estimator's own tally.
@@ -142,7 +147,7 @@ public class AmplitudeEstimatorTests
     public void SameSeedGivesSameEstimates()
     {
         var inputs = Enumerable.Range(0, 40).Select(k => new[] { k / 39.0, 1 - k / 39.0, 0.3 }).ToArray();
-        foreach (var method in new[] { "iqae", "fae", "bae", "powerlaw" })
+        foreach (var method in new[] { "iqae", "fae", "bae", "powerlaw", "qss-bayes" })
             Assert.Equal(Create(method, 240).Estimate(inputs, new AnalyticSupersamplingEngine(new SeededRandom(4))),
                 Create(method, 240).Estimate(inputs, new AnalyticSupersamplingEngine(new SeededRandom(4))));
     }

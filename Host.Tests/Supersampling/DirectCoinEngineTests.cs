@@ -19,6 +19,8 @@ public class DirectCoinEngineTests
 
         public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests) => [.. requests.Select(r => new int[r.Shots])];
 
+        public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests) => new int[requests.Count];
+
         public void Dispose() { }
     }
 

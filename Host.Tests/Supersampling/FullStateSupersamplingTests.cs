@@ -51,6 +51,29 @@ public class FullStateSupersamplingTests(FullStateFixture fixture)
         }
     }
 
+    /// <summary>
+    /// The ancilla-controlled Grover power on the simulator against cos²(kθ), the closed form the analytic engine draws
+    /// from. With the wrong fringe in the expectation (cos²(2kθ)) the k = 1 case fails: 414 zeros of 800 against an
+    /// acceptance interval of [0, 12].
+    /// </summary>
+    [Fact]
+    public void AncillaZerosMatchTheClosedForm()
+    {
+        AncillaPhaseRequest[] cases =
+        [
+            new(SubpixelValues.MeanCoin([0.1, 0.9, 0.4, 0.0, 1.0]), 0, 200),
+            new(SubpixelValues.MeanCoin([0.1, 0.9, 0.4, 0.0, 1.0]), 1, 800),
+            new(SubpixelValues.MeanCoin([0.1, 0.2, 0.0, 0.05]), 3, 800),
+            new(SubpixelValues.MeanCoin([0.3, 0.6]), 2, 800),
+            new(SubpixelValues.MeanCoin([0.8]), 5, 800),
+            new(SubpixelValues.MeanCoin([1.0, 1.0]), 3, 200),
+        ];
+        var zeros = Engine.CountAncillaZeros(cases);
+        for (var k = 0; k < cases.Length; k++)
+            StatisticalBounds.AssertBinomial(zeros[k], CoinProbability.AncillaZero(CoinProbability.HeadAmplitude(CoinKind.Mean, cases[k].Amplitudes), cases[k].Power),
+                cases[k].Shots, $"ancilla case {k}, k = {cases[k].Power}");
+    }
+
     [Fact]
     public void QssReadoutsFitClosedFormAndAnalyticEngine()
     {

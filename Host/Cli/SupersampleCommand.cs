@@ -42,14 +42,14 @@ public sealed class SupersampleCommand : Command
         Description = "mc (Monte Carlo), qss (quantum supersampling), qcoin (QCoin, Algorithm 1), mlae (maximum-likelihood amplitude estimation), "
             + "mlae-noise (MLAE for noisy machines: each level's head probability is that of a depolarized coin, "
             + "F^m sin²((2m+1)θ) + (1 − F^m)/2, and the fidelity F per Grover operator is fitted together with the mean, so levels the noise has flattened count for little instead of biasing the estimate; the second half of the budget goes to the level the fitted noise leaves the most information per query), "
-            + "iqae (iterative QAE, rerunning its last round against its bias), fae (faster AE, two stages), bae (Bayesian AE: grid posterior, next power by expected variance reduction), powerlaw (power-law AE, m_k = floor(k^((1-b)/(2b))), b = 0.3, maximum likelihood); docs/estimation.md compares them.",
+            + "iqae (iterative QAE, rerunning its last round against its bias), fae (faster AE, two stages), bae (Bayesian AE: grid posterior, next power by expected variance reduction), qss-bayes (QSS with one ancilla and Bayesian phase estimation instead of the counter), powerlaw (power-law AE, m_k = floor(k^((1-b)/(2b))), b = 0.3, maximum likelihood); docs/estimation.md compares them.",
         DefaultValueFactory = _ => DefaultMethod,
-        HelpName = "mc|qss|qcoin|mlae|mlae-noise|iqae|fae|bae|powerlaw",
+        HelpName = "mc|qss|qcoin|mlae|mlae-noise|iqae|fae|bae|qss-bayes|powerlaw",
     };
 
     private readonly Option<long?> _queries = new Option<long?>("--queries", "-q")
     {
-        Description = $"Queries per pixel and channel, every method but qss (a coin flip 1, a Grover operator 2; iqae, fae and bae may stop below it). Default: {SupersampleSettings.DefaultQueries}. Not for qss, whose count follows from --counter-bits.",
+        Description = $"Queries per pixel and channel, every method but qss (a coin flip 1, a Grover operator 2; iqae, fae, bae and qss-bayes may stop below it). Default: {SupersampleSettings.DefaultQueries}. Not for qss, whose count follows from --counter-bits.",
     }.Between(1, 100_000);
 
     private readonly Option<int?> _steps = new Option<int?>("--steps")

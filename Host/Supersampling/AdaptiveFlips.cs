@@ -4,12 +4,13 @@ namespace QuantumRayTracing.Supersampling;
 /// Runs one adaptive search per item in lock step: each round gathers the next flips of every item still searching into
 /// one engine batch. The coin is the mean coin of the item's subpixel values, its amplitudes times
 /// the amplitude scale (½ gives head probability f/4, FAE's rescaled coin). No item spends more than
-/// the budget queries: a search asking for more is a programming error and throws.
+/// the budget queries: a search asking for more is a programming error and throws. A measure other than the coin flip (the
+/// single-ancilla phase-estimation shot) takes each request's m and flips as its power and shots, at the same cost, 1 + 2m each.
 /// </summary>
 public static class AdaptiveFlips
 {
     public static (double[] Estimates, QueryTally[] Spent) Run(IReadOnlyList<double[]> values, ISupersamplingEngine engine,
-        Func<IAdaptiveCoinSearch> create, long budget, double amplitudeScale = 1)
+        Func<IAdaptiveCoinSearch> create, long budget, double amplitudeScale = 1, Func<ISupersamplingEngine, IReadOnlyList<CoinRequest>, IReadOnlyList<int>>? measure = null)
     {
         foreach (var v in values) SubpixelValues.Check(v);
         var amplitudes = values.Select(v => SubpixelValues.MeanCoin(v).Select(a => a * amplitudeScale).ToArray()).ToArray();
@@ -29,7 +30,7 @@ public static class AdaptiveFlips
                 asked.Add((j, request));
             }
             if (asked.Count == 0) break;
-            var heads = engine.FlipCoins(asked.Select(a => a.Request).ToArray());
+            var heads = (measure ?? ((e, r) => e.FlipCoins(r)))(engine, asked.Select(a => a.Request).ToArray());
             for (var i = 0; i < asked.Count; i++) searches[asked[i].Item].Observe(heads[i]);
             active = asked.Select(a => a.Item).ToList();
         }

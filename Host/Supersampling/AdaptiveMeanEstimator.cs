@@ -23,9 +23,12 @@ public abstract class AdaptiveMeanEstimator : IMeanEstimator
     /// <summary>A fresh search for one item.</summary>
     protected abstract IAdaptiveCoinSearch CreateSearch();
 
+    /// <summary>How a round's requests are measured: by default flips of the coin, heads counted.</summary>
+    protected virtual IReadOnlyList<int> Measure(ISupersamplingEngine engine, IReadOnlyList<CoinRequest> requests) => engine.FlipCoins(requests);
+
     public IReadOnlyList<double> Estimate(IReadOnlyList<double[]> values, ISupersamplingEngine engine) => EstimateCounted(values, engine).Estimates;
 
     /// <summary>The estimates and the queries each item spent.</summary>
     public (double[] Estimates, QueryTally[] Spent) EstimateCounted(IReadOnlyList<double[]> values, ISupersamplingEngine engine) =>
-        AdaptiveFlips.Run(values, engine, CreateSearch, Queries, AmplitudeScale);
+        AdaptiveFlips.Run(values, engine, CreateSearch, Queries, AmplitudeScale, Measure);
 }

@@ -59,6 +59,17 @@ public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel?
         return readouts;
     }
 
+    /// <summary>Exact Bernoulli draws at P(0) = cos²(kθ) (<see cref="CoinProbability.AncillaZero"/>); noiseless only.</summary>
+    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests)
+    {
+        if (requests.Count > 0 && (Device is not null || !Noise.IsNoiseless))
+            throw new ArgumentException("single-ancilla phase estimation runs noiseless only on the analytic engine");
+        var zeros = new int[requests.Count];
+        for (var k = 0; k < requests.Count; k++)
+            zeros[k] = Binomial(requests[k].Shots, CoinProbability.AncillaZero(CoinProbability.HeadAmplitude(CoinKind.Mean, requests[k].Amplitudes), requests[k].Power));
+        return zeros;
+    }
+
     private double[] QssDistribution(QssRequest request)
     {
         var amplitude = CoinProbability.HeadAmplitude(CoinKind.Mean, request.Amplitudes);

@@ -25,6 +25,16 @@ public static class CoinProbability
         return Math.Clamp(s * s, 0, 1);
     }
 
+    /// <summary>
+    /// Probability the ancilla of the single-ancilla phase-estimation shot (<see cref="AncillaPhaseRequest"/>) reads 0 after
+    /// k controlled Grover operators on a coin of head amplitude sin θ: ½ + ½·cos(2kθ) = cos²(kθ).
+    /// </summary>
+    public static double AncillaZero(double headAmplitude, int power)
+    {
+        var c = Math.Cos(power * Math.Asin(Math.Clamp(headAmplitude, 0, 1)));
+        return Math.Clamp(c * c, 0, 1);
+    }
+
     /// <summary>The distribution of the QSS readout for a coin whose head probability is <paramref name="mean"/>.</summary>
     public static double[] QssReadout(double mean, int counterBits)
     {

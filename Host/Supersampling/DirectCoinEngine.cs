@@ -21,5 +21,9 @@ public sealed class DirectCoinEngine(ISupersamplingEngine inner) : ISupersamplin
     public IReadOnlyList<int[]> ReadCounters(IReadOnlyList<QssRequest> requests) =>
         inner.ReadCounters(requests.Select(r => r with { Coin = CoinKind.Direct, Amplitudes = [CoinProbability.HeadAmplitude(CoinKind.Mean, r.Amplitudes)] }).ToArray());
 
+    /// <summary>The ancilla's circuit needs the coin register under control; it has no single-qubit form here.</summary>
+    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests) =>
+        requests.Count == 0 ? [] : throw new ArgumentException("single-ancilla phase estimation runs on the mean coin, not on the direct single-qubit coin");
+
     public void Dispose() => inner.Dispose();
 }

@@ -147,6 +147,32 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return chunks;
     }
 
+    /// <summary>The single-ancilla shots, one batch; the ancilla is one qubit more than the coin.</summary>
+    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests)
+    {
+        if (requests.Count == 0) return [];
+        if (Device is not null) throw new ArgumentException(AnalyticSupersamplingEngine.DeviceNeedsDirectCoins);
+        var widest = requests.MaxBy(r => r.Amplitudes.Length)!;
+        var qubits = CoinRegisters.Coin(CoinKind.Mean, widest.Amplitudes.Length) + 1;
+        SimulatorCapacity.Check($"a single-ancilla shot over {widest.Amplitudes.Length} subpixels", qubits, qubits, MaxQubits);
+        var zeros = new int[requests.Count];
+        const string operation = QSharpOperations.CountAncillaZerosBatch;
+        Run(requests, r => (double)r.Queries * r.Amplitudes.Length, operation, AncillaExpression, (chunk, start, json) =>
+        {
+            var values = JsonSerializer.Deserialize<int[]>(json) ?? throw new BridgeException($"{operation} returned no value");
+            if (values.Length != chunk.Count) throw new BridgeException($"{operation} returned {values.Length} counts for {chunk.Count} requests");
+            for (var k = 0; k < chunk.Count; k++)
+            {
+                if (values[k] < 0 || values[k] > chunk[k].Shots) throw new BridgeException($"{operation} returned {values[k]} zeros of {chunk[k].Shots} shots");
+                zeros[start + k] = values[k];
+            }
+        });
+        return zeros;
+    }
+
+    public static string AncillaExpression(IReadOnlyList<AncillaPhaseRequest> requests) =>
+        AmplitudesCountsExpression(QSharpOperations.CountAncillaZerosBatch, requests.Select(r => (r.Amplitudes, r.Power, r.Shots)));
+
     public static string CoinExpression(IReadOnlyList<CoinRequest> requests)
     {
         var text = new StringBuilder(QSharpOperations.CountCoinHeadsBatch).Append("([");
@@ -196,17 +222,21 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
         return text.Append("])").ToString();
     }
 
-    public static string QssExpression(IReadOnlyList<QssRequest> requests)
+    public static string QssExpression(IReadOnlyList<QssRequest> requests) =>
+        AmplitudesCountsExpression(QSharpOperations.MeasureQssBatch, requests.Select(r => (r.Amplitudes, r.CounterBits, r.Shots)));
+
+    /// <summary>A batch call whose requests are (amplitudes, an Int, an Int) tuples.</summary>
+    private static string AmplitudesCountsExpression(string operation, IEnumerable<(double[] Amplitudes, int First, int Second)> requests)
     {
-        var text = new StringBuilder(QSharpOperations.MeasureQssBatch).Append("([");
-        for (var k = 0; k < requests.Count; k++)
+        var text = new StringBuilder(operation).Append("([");
+        var separator = "";
+        foreach (var (amplitudes, first, second) in requests)
         {
-            var r = requests[k];
-            if (k > 0) text.Append(", ");
-            text.Append('(');
-            AppendDoubles(text, r.Amplitudes);
-            text.Append(", ").Append(r.CounterBits.ToString(CultureInfo.InvariantCulture))
-                .Append(", ").Append(r.Shots.ToString(CultureInfo.InvariantCulture)).Append(')');
+            text.Append(separator).Append('(');
+            AppendDoubles(text, amplitudes);
+            text.Append(", ").Append(first.ToString(CultureInfo.InvariantCulture))
+                .Append(", ").Append(second.ToString(CultureInfo.InvariantCulture)).Append(')');
+            separator = ", ";
         }
         return text.Append("])").ToString();
     }

@@ -2,7 +2,7 @@ namespace QuantumRayTracing.Supersampling;
 
 /// <summary>
 /// Passes every request through to another engine and counts what was asked for, in both conventions: queries (a flip 1,
-/// a Grover operator 2, a QSS run 2^(t+1) − 1 per shot, docs/conventions.md) and Grover operators alone (the AE papers' oracle calls).
+/// a Grover operator 2, a QSS run 2^(t+1) − 1 per shot, a single-ancilla shot at power k 1 + 2k, docs/conventions.md) and Grover operators alone (the AE papers' oracle calls).
 /// </summary>
 public sealed class QueryCountingEngine(ISupersamplingEngine inner) : ISupersamplingEngine
 {
@@ -28,6 +28,12 @@ public sealed class QueryCountingEngine(ISupersamplingEngine inner) : ISupersamp
             (Queries, GroverOperators) = (Queries + r.Shots * (1 + 2 * operators), GroverOperators + r.Shots * operators);
         }
         return inner.ReadCounters(requests);
+    }
+
+    public IReadOnlyList<int> CountAncillaZeros(IReadOnlyList<AncillaPhaseRequest> requests)
+    {
+        foreach (var r in requests) (Queries, GroverOperators) = (Queries + r.Queries, GroverOperators + (long)r.Shots * r.Power);
+        return inner.CountAncillaZeros(requests);
     }
 
     public void Dispose() => inner.Dispose();

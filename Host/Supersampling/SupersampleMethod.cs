@@ -34,6 +34,10 @@ public enum SupersampleMethod
     /// <summary>Bayesian amplitude estimation on a grid posterior (<see cref="BayesianAmplitudeEstimator"/>).</summary>
     Bae,
 
+    /// <summary>QSS with single-ancilla Bayesian phase estimation in place of its counter (<see cref="BayesianPhaseEstimator"/>).</summary>
+    [EnumMember(Value = "qss-bayes")]
+    QssBayes,
+
     /// <summary>Power-law amplitude estimation (<see cref="PowerLawAmplitudeEstimator"/>).</summary>
     [EnumMember(Value = "powerlaw")]
     PowerLaw,

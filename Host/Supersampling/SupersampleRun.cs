@@ -27,6 +27,8 @@ public static class SupersampleRun
     {
         var (method, kind, noise) = (settings.Method, settings.Engine, settings.NoiseModel);
         EngineFactory.CheckNoise(kind, noise);
+        if (method.Method == SupersampleMethod.QssBayes && (settings.Device is not null || kind == EngineKind.Analytic && !noise.IsNoiseless))
+            throw new UserError("--method qss-bayes: its single-ancilla shot runs on the fullstate engine, or on the analytic engine without noise; not under a device model");
         var (input, inputName, renderTime) = settings.ImageFile is { } file
             ? (LoadImage(file, method.Side, kind), Path.GetFileName(file), (TimeSpan?)null)
             : RenderScene(settings.SceneFile, settings.Size, method.Side, kind, progress);

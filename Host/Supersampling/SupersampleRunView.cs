@@ -43,12 +43,17 @@ public static class SupersampleRunView
             ? $"{device.Description()}{(settings.Engine == EngineKind.Analytic ? " (global depolarizing weight; exact on one qubit)" : "")}, on single-qubit coins rotated to the mean the host computes"
             : EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
 
-    // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter.
+    // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter or qss-bayes's ancilla.
     private static string Registers(SupersampleSettings settings, bool singleQubitCoin)
     {
         // The device model's coins hold no subpixel register: one qubit rotated to the mean.
         var index = singleQubitCoin ? 0 : CoinRegisters.SubpixelQubits(settings.Subpixels);
-        var counter = settings.Method == SupersampleMethod.Qss ? $" + {settings.CounterBitsOrDefault} counter" : "";
+        var counter = settings.Method switch
+        {
+            SupersampleMethod.Qss => $" + {settings.CounterBitsOrDefault} counter",
+            SupersampleMethod.QssBayes => " + 1 ancilla",
+            _ => "",
+        };
         return settings.Method == SupersampleMethod.Mc
             ? "each query samples one random subpixel"
             : $"registers: {index} subpixel + 1 coin{counter} qubits";

@@ -6,7 +6,7 @@ namespace QuantumRayTracing.Supersampling;
 /// </summary>
 /// <param name="Method">The estimator.</param>
 /// <param name="Side">s: each output pixel averages s x s subpixels.</param>
-/// <param name="Queries">Per pixel and channel, for every method but QSS (default <see cref="DefaultQueries"/>; an upper bound for iqae, fae and bae, which may stop below it); QSS's follow from its counter.</param>
+/// <param name="Queries">Per pixel and channel, for every method but QSS (default <see cref="DefaultQueries"/>; an upper bound for iqae, fae, bae and qss-bayes, which may stop below it); QSS's follow from its counter.</param>
 /// <param name="Steps">QCoin's k (default <see cref="QCoinEstimator.DefaultSteps"/>).</param>
 /// <param name="Levels">MLAE's K, plain or noise-aware (default <see cref="MaximumLikelihoodEstimator.DefaultLevels"/>).</param>
 /// <param name="CounterBits">QSS's t (default: ceil(log2 N) for bit planes, 7 for continuous values).</param>
@@ -35,8 +35,8 @@ public sealed record SupersampleSettings(
     /// <summary>Plain or noise-aware MLAE: the same schedule and --levels.</summary>
     public bool IsMlae => Method is SupersampleMethod.Mlae or SupersampleMethod.MlaeNoise;
 
-    /// <summary>IQAE, FAE and BAE: adaptive searches that may stop below the budget, so the budget is an upper bound.</summary>
-    public bool MayStopBelowBudget => Method is SupersampleMethod.Iqae or SupersampleMethod.Fae or SupersampleMethod.Bae;
+    /// <summary>IQAE, FAE, BAE and QSS-Bayes: adaptive searches that may stop below the budget, so the budget is an upper bound.</summary>
+    public bool MayStopBelowBudget => Method is SupersampleMethod.Iqae or SupersampleMethod.Fae or SupersampleMethod.Bae or SupersampleMethod.QssBayes;
 
     public QssValues QssValues => Values ?? QssValues.Planes;
 
@@ -96,6 +96,7 @@ public sealed record SupersampleSettings(
             SupersampleMethod.Iqae => new IterativeAmplitudeEstimator(queries),
             SupersampleMethod.Fae => new FasterAmplitudeEstimator(queries),
             SupersampleMethod.Bae => new BayesianAmplitudeEstimator(queries),
+            SupersampleMethod.QssBayes => new BayesianPhaseEstimator(queries),
             SupersampleMethod.PowerLaw => new PowerLawAmplitudeEstimator(queries),
             _ when QssValues == QssValues.Continuous => new QssEstimator(CounterBitsOrDefault),
             _ => new BitPlaneQssEstimator(CheckedTable(table), PlanesOrDefault),

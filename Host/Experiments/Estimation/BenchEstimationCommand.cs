@@ -21,7 +21,7 @@ public sealed class BenchEstimationCommand : Command
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/estimation.md; the CSV goes beside it with the extension .csv, the plots as estimation-<name>.png");
 
-    public BenchEstimationCommand() : base("estimation", "Every mean estimator (MC, QCoin, MLAE, IQAE, FAE, BAE, power-law AE, QSS) by error against queries, on random means and the Qornell box's pixels, with and without noise.")
+    public BenchEstimationCommand() : base("estimation", "Every mean estimator (MC, QCoin, MLAE, IQAE, FAE, BAE, power-law AE, QSS, QSS with Bayesian phase estimation) by error against queries, on random means and the Qornell box's pixels, with and without noise.")
     {
         this.AddOptions(_trials, _imageSize, _noNoise);
         _report.Seed.Description = "Seed of the means and the analytic engines.";

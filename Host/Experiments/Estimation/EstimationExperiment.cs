@@ -36,6 +36,13 @@ public static class EstimationExperiment
         ("power-law", q => new PowerLawAmplitudeEstimator(q)),
     ];
 
+    /// <summary>QSS with single-ancilla Bayesian phase estimation: noiseless only (its shot has no noisy or single-qubit-coin form here).</summary>
+    public const string QssBayes = "QSS, Bayesian PE";
+
+    /// <summary>The estimators of the noiseless tables: <see cref="Estimators"/> and <see cref="QssBayes"/>.</summary>
+    public static readonly (string Label, Func<long, IMeanEstimator?> Create)[] NoiselessEstimators =
+        [.. Estimators, (QssBayes, q => new BayesianPhaseEstimator(q))];
+
     public const string Qss = "QSS";
 
     /// <summary>Bit-plane QSS (8 planes through the exact lookup table), on the pixels only: it needs the 8-bit subpixels of an image.</summary>
@@ -69,6 +76,10 @@ public static class EstimationExperiment
                 foreach (var budget in EstimationSettings.NoisyBudgets)
                     foreach (var (label, create) in Estimators)
                         if (create(budget) is not null) runs.Add(("means", means, decay, label, budget, () => create(budget)!));
+        // Last, so every other run keeps its index and so its engine stream.
+        foreach (var (input, values) in new[] { ("means", means), ("pixels", pixels) })
+            foreach (var budget in EstimationSettings.Budgets)
+                runs.Add((input, values, 0, QssBayes, budget, () => new BayesianPhaseEstimator(budget)));
 
         // Each run has its own engine stream, so the points do not depend on the order the two cores take them in.
         var points = new Point[runs.Count];

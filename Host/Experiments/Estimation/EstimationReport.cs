@@ -14,7 +14,7 @@ public static class EstimationReport
     /// <summary>The report's plots and data tables, by name, for checking their files before the work.</summary>
     public static readonly string[] Pictures = ["means", "pixels", "noise"], DataTables = [""];
 
-    private static readonly string[] Fitted = ["MC", "QCoin", "MLAE", "IQAE", "IQAE, original", "FAE", "BAE", "power-law", EstimationExperiment.Qss, EstimationExperiment.QssPlanes];
+    private static readonly string[] Fitted = ["MC", "QCoin", "MLAE", "IQAE", "IQAE, original", "FAE", "BAE", "power-law", EstimationExperiment.QssBayes, EstimationExperiment.Qss, EstimationExperiment.QssPlanes];
 
     public static Report Build(IReadOnlyList<Point> points, EstimationSettings settings)
     {
@@ -22,7 +22,7 @@ public static class EstimationReport
         report.Text($"""
             Every mean estimator on one harness: the analytic engine (the circuits' exact outcome distributions, seeded), the mean coin
             of each item's subpixel values, a budget of queries per estimate. Queries as docs/conventions.md (a coin flip 1, a Grover
-            operator 2, a QSS run 2^(t+1) − 1); IQAE, FAE and BAE may stop below the budget, so the plots put each point at the queries
+            operator 2, a QSS run 2^(t+1) − 1, a single-ancilla shot at power k 1 + 2k); IQAE, FAE, BAE and QSS with Bayesian PE may stop below the budget, so the plots put each point at the queries
             it spent on average, and the tables give the budget, the queries spent and the Grover operators alone (the count the AE
             papers give as oracle calls). Inputs: {settings.Trials} uniform random means in [0, 1] (one subpixel each), and the
             {settings.ImageSize}x{settings.ImageSize} pixels of the built-in Qornell box (4x4 subpixels each, rendered classically; each
@@ -34,7 +34,9 @@ public static class EstimationReport
             (Clopper–Pearson, N = 32 flips per round, α = 0.05, the last round rerun at a fixed k on at least 40% of the budget against the
             bias) and the original IQAE (no rerun, estimate the last interval's middle); FAE (N1 = N2 = 8, on the coin rescaled to
             f/4); BAE (512-point grid posterior, power by expected variance reduction per query, posterior median); power-law AE
-            (β = 0.3, 2 flips per k, maximum likelihood); QSS on continuous values (t = 3..10, estimate sin²(πy/2^t)).
+            (β = 0.3, 2 flips per k, maximum likelihood); QSS on continuous values (t = 3..10, estimate sin²(πy/2^t)); QSS with
+            Bayesian phase estimation (*QSS, Bayesian PE*, `qss-bayes`: one ancilla controlling k Grover operators, read in the X
+            basis, 0 with probability cos²(kθ); BAE's grid posterior and power choice; 1 + 2k queries a shot; noiseless only).
             """);
         foreach (var input in new[] { "means", "pixels" })
         {
@@ -80,15 +82,15 @@ public static class EstimationReport
         foreach (var (name, value) in new (string, Func<Point, double>)[] { ("mean", p => p.Mean), ("median", p => p.Median), ("95th percentile", p => p.Percentile95) })
         {
             report.Text($"{char.ToUpperInvariant(name[0])}{name[1..]} absolute error by budget:");
-            var table = new TextTable(null, ["budget", .. EstimationExperiment.Estimators.Select(e => e.Label)]);
+            var table = new TextTable(null, ["budget", .. EstimationExperiment.NoiselessEstimators.Select(e => e.Label)]);
             foreach (var budget in EstimationSettings.Budgets)
-                table.Row([N(budget), .. EstimationExperiment.Estimators.Select(e => Cell(set, 0, e.Label, budget, value))]);
+                table.Row([N(budget), .. EstimationExperiment.NoiselessEstimators.Select(e => Cell(set, 0, e.Label, budget, value))]);
             report.Table(table);
         }
         report.Text("Queries spent per estimate on average / Grover operators per estimate (the AE papers' count), where they differ from the budget:");
-        var spent = new TextTable(null, ["budget", .. EstimationExperiment.Estimators.Select(e => e.Label)]);
+        var spent = new TextTable(null, ["budget", .. EstimationExperiment.NoiselessEstimators.Select(e => e.Label)]);
         foreach (var budget in EstimationSettings.Budgets)
-            spent.Row([N(budget), .. EstimationExperiment.Estimators.Select(e => Cell(set, 0, e.Label, budget, p => p.Queries, p => $"{F(p.Queries, "0")} / {F(p.GroverOperators, "0")}"))]);
+            spent.Row([N(budget), .. EstimationExperiment.NoiselessEstimators.Select(e => Cell(set, 0, e.Label, budget, p => p.Queries, p => $"{F(p.Queries, "0")} / {F(p.GroverOperators, "0")}"))]);
         report.Table(spent);
         report.Text("QSS at its own query counts (continuous values: one run, estimate sin²(πy/2^t); bit planes: 8 runs through the lookup table, pixels only):");
         var qss = new TextTable(null, ["QSS", "counter bits t", "queries", "mean", "median", "95th percentile"]);
