@@ -30,6 +30,8 @@ public static class QSharpOperations
 
     public const string ApplyMeanCoin = "QuantumRayTracing.Supersampling.ApplyMeanCoin";
 
+    public const string ApplyQss = "QuantumRayTracing.Supersampling.ApplyQss";
+
     public const string CountCoinHeads = "QuantumRayTracing.Supersampling.CountCoinHeads";
 
     public const string CountCoinHeadsBatch = "QuantumRayTracing.Supersampling.CountCoinHeadsBatch";
