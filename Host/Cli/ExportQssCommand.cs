@@ -10,8 +10,9 @@ public sealed class ExportQssCommand : Command
 
     private readonly Option<int> _counterBits = new Option<int>("--counter-bits", "-t")
     {
-        Description = $"Counter qubits t (1 to {QssExport.MaxCounterBits}): 2^t - 1 controlled Grover operators; a run costs 2^(t+1) - 1 queries (15 at t = 3).",
+        Description = $"Counter qubits T (1 to {QssExport.MaxCounterBits}): 2^T - 1 controlled Grover operators; a run costs 2^(T+1) - 1 queries (15 at T = 3).",
         DefaultValueFactory = _ => QssExport.DefaultCounterBits,
+        HelpName = "T",
     }.Between(1, QssExport.MaxCounterBits);
 
     private readonly ExportOutputOptions _output = new();
