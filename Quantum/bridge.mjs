@@ -20,7 +20,8 @@
 //     optional "exposure":true adds the noise exposure of every location (noise-exposure.mjs)
 //   {"id":5,"method":"export","apply":"Ns.Op(8, _)","qubits":3,"profile":"adaptive_ri"}
 //                                                             -> {"id":5,"ok":true,"result":{"qir":"<QIR text>","probabilities":[p0, p1, ...]}}
-//     "apply" is a Qubit[] => Unit expression; see circuit-export.mjs
+//     "apply" is a Qubit[] => Unit expression; optional "measured":M measures the register's first M
+//     qubits only (default all); see circuit-export.mjs
 // A failure replies {"id":N,"ok":false,"error":{"kind":"qsharp"|"request","message":"...","location":"file:line:col","stack":"..."}}.
 // Requests are answered one at a time, in order; simulation runs synchronously inside WebAssembly,
 // so the host enforces time limits by killing this process.
@@ -236,9 +237,11 @@ async function answer(compiler, program, versions, request) {
       const apply = requireString(request, "apply");
       const qubits = request.qubits;
       if (!Number.isInteger(qubits) || qubits < 1 || qubits > 30) throw new RequestError(`request field "qubits" must be an integer from 1 to 30`);
+      const measured = request.measured ?? qubits;
+      if (!Number.isInteger(measured) || measured < 1 || measured > qubits) throw new RequestError(`request field "measured" must be an integer from 1 to "qubits"`);
       const profile = request.profile ?? "adaptive_ri";
       if (!["base", "adaptive_ri"].includes(profile)) throw new RequestError(`request field "profile" must be "base" or "adaptive_ri"`);
-      const withEntry = { ...program, sources: [...program.sources, ["export-entry.qs", exportEntrySource(apply, qubits)]] };
+      const withEntry = { ...program, sources: [...program.sources, ["export-entry.qs", exportEntrySource(apply, qubits, measured)]] };
       const events = new QscEventTarget(true);
       try {
         await compiler.run(withEntry, `${exportEntryNamespace}.DumpState()`, 1, events);
@@ -255,7 +258,7 @@ async function answer(compiler, program, versions, request) {
       } catch (e) {
         return { error: thrownError(e) };
       }
-      return { qir, probabilities: registerDistribution(dump, qubits) };
+      return { qir, probabilities: registerDistribution(dump, qubits, measured) };
     }
     default:
       throw new RequestError(`unknown method ${JSON.stringify(request.method)}; expected version, run, estimate, circuit or export`);

@@ -42,6 +42,15 @@ public sealed class ExportCommandTests : IDisposable
     public void CoinUsageErrors(string option, string problem, params string[] options) =>
         Outcome.Of(["export", "coin", .. options]).AssertUsageError(option, problem);
 
+    [Theory]
+    [InlineData("--values", "is required")]
+    [InlineData("--values", "1.5 is outside [0, 1]", "--values", "0.1", "1.5")]
+    [InlineData("--values", "-0.2 is outside [0, 1]", "--values", "-0.2")]
+    [InlineData("--counter-bits", "must be at most 6, got 7", "--values", "0.5", "--counter-bits", "7")]
+    [InlineData("--counter-bits", "must be at least 1, got 0", "--values", "0.5", "-t", "0")]
+    public void QssUsageErrors(string option, string problem, params string[] options) =>
+        Outcome.Of(["export", "qss", .. options]).AssertUsageError(option, problem);
+
     [Fact]
     public void PixelOutsideTheImageIsBadInput() =>
         Outcome.Of("export", "search", Scene, "--size", "8", "--pixel", "8,0").AssertBadInput("--pixel 8,0", "is outside the 8x8 image");

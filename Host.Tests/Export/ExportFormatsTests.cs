@@ -73,6 +73,31 @@ public sealed class ExportFormatsTests : IDisposable
         }
     }
 
+    [Fact]
+    public void QssQasm3RunsOnTheQdkAsItsHeaderSays()
+    {
+        // Mean 0.5: θ = π/4 sits on the grid of t = 2, so the header promises readouts 1 and 3, one half each.
+        var file = Export("qss3.qasm", "export", "qss", "--values", "0.25", "0.75", "--counter-bits", "2", "--format", "qasm3");
+        var ideal = ExportedDistribution.FromHeader(file);
+        Assert.True(Math.Abs(ideal[1] - 0.5) <= 1e-9 && Math.Abs(ideal[3] - 0.5) <= 1e-9, $"header: {string.Join(' ', ideal)}");
+        Assert.Contains("bit[2] counter;", File.ReadAllText(file), StringComparison.Ordinal);
+        // 100 shots, bit 0 first: every one must read 1 or 3 (a wrong circuit that gives 0 or 2 with probability q
+        // passes with (1 - q)^100), and both must occur (false failure 2^-99).
+        var shots = NodeScript.Run("qdk-openqasm.mjs", file, "--shots", "100")["shots"]!.AsObject();
+        Assert.Equal(["[One, One]", "[One, Zero]"], shots.Select(s => s.Key).Order(StringComparer.Ordinal));
+        Assert.Equal(100, shots.Sum(s => s.Value!.GetValue<int>()));
+    }
+
+    [Fact]
+    public void QssQirRecordsTheCounterOnly()
+    {
+        var text = File.ReadAllText(Export("qss.ll", "export", "qss", "--values", "0", "1", "1", "1", "--format", "qir"));
+        Assert.Contains("\"qir_profiles\"=\"adaptive_profile\"", text, StringComparison.Ordinal);
+        var circuit = QirReader.Read(text);
+        Assert.Equal(3, circuit.Outputs.Count);
+        Assert.True(circuit.Qubits >= 3 + 2 + 1, $"{circuit.Qubits} qubits hold no counter, subpixel and coin registers");
+    }
+
     private static string? OnPath(string tool) =>
         (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator).Select(d => Path.Combine(d, tool)).FirstOrDefault(File.Exists);
 }

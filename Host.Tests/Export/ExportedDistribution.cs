@@ -9,6 +9,9 @@ namespace QuantumRayTracing.Tests.Export;
 /// </summary>
 internal static class ExportedDistribution
 {
+    /// <summary>How far the two may differ: both are exact state vectors, so only rounding separates them.</summary>
+    public const double Tolerance = 1e-9;
+
     /// <summary>Value → probability from the header line "// ideal outcome probabilities: V:P V:P ...".</summary>
     public static IReadOnlyDictionary<int, double> FromHeader(string file)
     {
@@ -24,6 +27,18 @@ internal static class ExportedDistribution
         var reply = NodeScript.Run("check-openqasm.mjs", file);
         Assert.Equal(register, reply["register"]!.GetValue<string>());
         return reply["probabilities"]!.AsObject().ToDictionary(p => int.Parse(p.Key, CultureInfo.InvariantCulture), p => p.Value!.GetValue<double>());
+    }
+
+    /// <summary>
+    /// How far quantum-circuit's distribution for <paramref name="file"/> with its first line matching
+    /// <paramref name="dropped"/> removed (written to <paramref name="broken"/>) lies from the file's header.
+    /// </summary>
+    public static double HeaderDifferenceWithout(string file, Predicate<string> dropped, string register, string broken)
+    {
+        var lines = File.ReadAllLines(file).ToList();
+        lines.RemoveAt(lines.FindIndex(dropped));
+        File.WriteAllLines(broken, lines);
+        return MaxDifference(FromHeader(file), OnQuantumCircuit(broken, register));
     }
 
     /// <summary>The largest difference between two distributions over any value (a value one lacks has probability 0 there).</summary>

@@ -13,9 +13,6 @@ namespace QuantumRayTracing.Tests.Export;
 /// </summary>
 public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
 {
-    /// <summary>Exact state vectors on both sides: only rounding separates them.</summary>
-    private const double Tolerance = 1e-9;
-
     private readonly ScratchDirectory _scratch = new("qrt-export-qc-");
 
     public void Dispose() => _scratch.Dispose();
@@ -54,7 +51,7 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var file = Export("search.qasm", "--pixel", pixel);
         var ideal = ExportedDistribution.FromHeader(file);
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
-        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= Tolerance,
+        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
             $"pixel {pixel} ({what}): header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
         // The search amplifies: the most likely value is far above uniform (1/5), so the check is not of a flat distribution.
         Assert.True(ideal.Values.Max() > 0.35, $"pixel {pixel}: no amplified value in {string.Join(' ', ideal)}");
@@ -73,11 +70,7 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
     public void DroppedGateIsRejected()
     {
         var file = Export("search.qasm", "--pixel", "3,0");
-        var lines = File.ReadAllLines(file).ToList();
-        lines.RemoveAt(lines.FindIndex(l => l.StartsWith("ry(", StringComparison.Ordinal)));
-        var broken = _scratch.File("broken.qasm");
-        File.WriteAllLines(broken, lines);
-        var difference = ExportedDistribution.MaxDifference(ExportedDistribution.FromHeader(file), ExportedDistribution.OnQuantumCircuit(broken, "index"));
+        var difference = ExportedDistribution.HeaderDifferenceWithout(file, l => l.StartsWith("ry(", StringComparison.Ordinal), "index", _scratch.File("broken.qasm"));
         Assert.True(difference > 1e-3, $"dropping the first ry changed the distribution by only {difference}");
     }
 
@@ -88,7 +81,7 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var (code, error) = ConsoleCapture.Run("export", "coin", "--mean", "0.3", "--k", "2", "-o", file);
         Assert.True(code == 0, error);
         var ideal = ExportedDistribution.FromHeader(file);
-        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= Tolerance);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= ExportedDistribution.Tolerance);
         // sin²θ = 0.3, k = 2: heads with probability sin²(5θ).
         var heads = Math.Pow(Math.Sin(5 * Math.Asin(Math.Sqrt(0.3))), 2);
         Assert.Equal(heads, ideal[1], 1e-9);
@@ -102,7 +95,7 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var (code, error) = ConsoleCapture.Run(["export", "coin", "--values", .. values.Select(v => v.ToString(System.Globalization.CultureInfo.InvariantCulture)), "--k", "1", "-o", file]);
         Assert.True(code == 0, error);
         var ideal = ExportedDistribution.FromHeader(file);
-        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= Tolerance);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, ExportedDistribution.OnQuantumCircuit(file, "coin")) <= ExportedDistribution.Tolerance);
         // Bit 2 is the coin: heads with probability sin²(3θ), sin²θ the mean value, whatever the subpixel bits.
         var heads = Math.Pow(Math.Sin(3 * Math.Asin(Math.Sqrt(values.Average()))), 2);
         Assert.Equal(heads, ideal.Where(e => (e.Key & 4) != 0).Sum(e => e.Value), 1e-9);

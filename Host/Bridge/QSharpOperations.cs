@@ -30,6 +30,8 @@ public static class QSharpOperations
 
     public const string ApplyMeanCoin = "QuantumRayTracing.Supersampling.ApplyMeanCoin";
 
+    public const string ApplyQss = "QuantumRayTracing.Supersampling.ApplyQss";
+
     public const string CountAncillaZerosBatch = "QuantumRayTracing.Supersampling.CountAncillaZerosBatch";
 
     public const string CountCoinHeads = "QuantumRayTracing.Supersampling.CountCoinHeads";

@@ -93,6 +93,19 @@ public static class CommonOptions
         return option;
     }
 
+    /// <summary>A pixel's subpixel values, space-separated: 1 to 64 values, each in [0, 1].</summary>
+    public static Option<double[]> SubpixelValues(string description, bool required = false)
+    {
+        var option = new Option<double[]>("--values") { Description = description, AllowMultipleArgumentsPerToken = true, HelpName = "F", Required = required };
+        option.Validators.Add(r =>
+        {
+            var given = r.GetValueOrDefault<double[]>() ?? [];
+            if (given.Length is 0 or > 64) r.AddError($"--values takes 1 to 64 values, got {given.Length}");
+            else if (given.Where(v => v is not (>= 0 and <= 1)).Take(1).ToArray() is [var bad]) r.AddError($"--values: {bad} is outside [0, 1]");
+        });
+        return option;
+    }
+
     /// <summary>Square image sides, space-separated.</summary>
     public static Option<int[]> SquareSizes(string description, int[] fallback, int max = MaxSquareSide) => List("--sizes", description, fallback, "size", 1, max);
 

@@ -13,12 +13,7 @@ public sealed class ExportCoinCommand : Command
         HelpName = "F",
     };
 
-    private readonly Option<double[]> _values = new("--values")
-    {
-        Description = "The mean coin over these subpixel values, each in [0, 1], space-separated (1 to 64 values). Default: none; give --mean or --values.",
-        AllowMultipleArgumentsPerToken = true,
-        HelpName = "F",
-    };
+    private readonly Option<double[]> _values = CommonOptions.SubpixelValues("The mean coin over these subpixel values, each in [0, 1], space-separated (1 to 64 values). Default: none; give --mean or --values.");
 
     private readonly Option<int> _iterations = new Option<int>("--k")
     {
@@ -51,10 +46,5 @@ public sealed class ExportCoinCommand : Command
             return;
         }
         if (mean && r.GetValue(_mean) is not (>= 0 and <= 1)) r.AddError($"--mean must lie in [0, 1], got {r.GetValue(_mean)}");
-        if (values && r.GetValue(_values) is { } given)
-        {
-            if (given.Length is 0 or > 64) r.AddError($"--values takes 1 to 64 values, got {given.Length}");
-            else if (given.Where(v => v is not (>= 0 and <= 1)).Take(1).ToArray() is [var bad]) r.AddError($"--values: {bad} is outside [0, 1]");
-        }
     }
 }

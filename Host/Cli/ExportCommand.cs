@@ -13,5 +13,6 @@ public sealed class ExportCommand : Command
         Subcommands.Add(new ExportSearchCommand());
         Subcommands.Add(new ExportDeviceExperimentCommand());
         Subcommands.Add(new ExportCoinCommand());
+        Subcommands.Add(new ExportQssCommand());
     }
 }

@@ -5,8 +5,8 @@ namespace QuantumRayTracing.Export;
 
 /// <summary>
 /// Exports one circuit: the QDK compiles it to QIR (adaptive profile) and computes the measured register's
-/// exact distribution; OpenQASM is written from that QIR, step for step (<see cref="QirReader"/>), so every
-/// format holds the QDK's circuit and its angles to the last bit.
+/// exact distribution (its marginal, when qubits are left unmeasured); OpenQASM is written from that QIR,
+/// step for step (<see cref="QirReader"/>), so every format holds the QDK's circuit and its angles to the last bit.
 /// </summary>
 public static class CircuitExporter
 {
@@ -16,7 +16,8 @@ public static class CircuitExporter
         {
             ["method"] = "export",
             ["apply"] = subject.Apply,
-            ["qubits"] = subject.RegisterQubits,
+            ["qubits"] = subject.RegisterQubits + subject.UnmeasuredQubits,
+            ["measured"] = subject.RegisterQubits,
             ["profile"] = "adaptive_ri",
         }).AsObject();
         var qir = reply["qir"]!.GetValue<string>();

@@ -1,6 +1,6 @@
-using System.Globalization;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Supersampling;
+using static QuantumRayTracing.Export.ExportNumber;
 
 namespace QuantumRayTracing.Export;
 
@@ -19,10 +19,10 @@ public static class CoinExport
         return new ExportSubject(
             $"QCoin's direct coin, one flip ({Command} --mean)",
             [
-                $"coin: one qubit, Ry(2 asin sqrt(f)) with f = {Number(mean)}",
+                $"coin: one qubit, Ry(2 asin sqrt(f)) with f = {Text(mean)}",
                 Grover(amplitude, iterations),
             ],
-            $"{QSharpOperations.ApplyDirectCoin}({QSharpDouble(amplitude)}, {iterations.ToString(CultureInfo.InvariantCulture)}, _)",
+            $"{QSharpOperations.ApplyDirectCoin}({QSharpDouble(amplitude)}, {Text(iterations)}, _)",
             1,
             "coin");
     }
@@ -31,28 +31,30 @@ public static class CoinExport
     {
         SubpixelValues.Check(values);
         var amplitudes = SubpixelValues.MeanCoin(values);
-        var index = (int)Math.Ceiling(Math.Log2(values.Length));
+        var index = SubpixelQubits(values);
         return new ExportSubject(
             $"QCoin's mean coin over {values.Length} subpixel values, one flip ({Command} --values)",
             [
-                $"subpixel values: {string.Join(' ', values.Select(Number))} (mean {Number(SubpixelValues.Mean(values))})",
-                $"coin: {index} subpixel qubits in uniform superposition, each value's amplitude sqrt(F(i)) rotated onto the coin qubit; bits 0..{index - 1} of the register are the subpixel index, bit {index} the coin (heads: 1)",
+                ValuesLine(values),
+                $"{MeanCoinLine(index)}; bits 0..{index - 1} of the register are the subpixel index, bit {index} the coin (heads: 1)",
                 Grover(CoinProbability.HeadAmplitude(CoinKind.Mean, amplitudes), iterations),
             ],
-            $"{QSharpOperations.ApplyMeanCoin}([{string.Join(", ", amplitudes.Select(QSharpDouble))}], {iterations.ToString(CultureInfo.InvariantCulture)}, _)",
+            $"{QSharpOperations.ApplyMeanCoin}({QSharpDoubles(amplitudes)}, {Text(iterations)}, _)",
             index + 1,
             "coin");
     }
 
+    /// <summary>ceil(log2 N): the subpixel register's width for N values (Q# <c>SubpixelQubits</c>).</summary>
+    public static int SubpixelQubits(double[] values) => (int)Math.Ceiling(Math.Log2(values.Length));
+
+    /// <summary>The header line listing the subpixel values and their mean.</summary>
+    public static string ValuesLine(double[] values) =>
+        $"subpixel values: {string.Join(' ', values.Select(v => Text(v)))} (mean {Text(SubpixelValues.Mean(values))})";
+
+    /// <summary>The header's description of the mean coin's preparation on <paramref name="index"/> subpixel qubits.</summary>
+    public static string MeanCoinLine(int index) =>
+        $"coin: {ExportHeader.Plural(index, "subpixel qubit")} in uniform superposition, each value's amplitude sqrt(F(i)) rotated onto the coin qubit";
+
     private static string Grover(double headAmplitude, int iterations) =>
-        $"Grover operators k = {iterations}: P(heads) = sin^2((2k+1) theta) = {Number(CoinProbability.Head(headAmplitude, iterations))} by the closed form, sin theta = {Number(headAmplitude)}";
-
-    private static string Number(double value) => value.ToString("R", CultureInfo.InvariantCulture);
-
-    /// <summary>A Q# Double literal holding the value exactly (round-trip digits, always with a point or an exponent).</summary>
-    private static string QSharpDouble(double value)
-    {
-        var text = value.ToString("R", CultureInfo.InvariantCulture);
-        return text.Contains('.') || text.Contains('E') ? text : text + ".0";
-    }
+        $"Grover operators k = {iterations}: P(heads) = sin^2((2k+1) theta) = {Text(CoinProbability.Head(headAmplitude, iterations))} by the closed form, sin theta = {Text(headAmplitude)}";
 }

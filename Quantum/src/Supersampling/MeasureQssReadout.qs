@@ -1,12 +1,10 @@
 namespace QuantumRayTracing.Supersampling {
-    import Std.Canon.ApplyQFT;
-    import Std.Canon.SwapReverseRegister;
     import QuantumRayTracing.Search.MeasureIntegerReadingLossAsZero;
 
     /// # Summary
-    /// Quantum supersampling (paper 003 sec. 3.3, thesis 004 sec. 1.5.1): the counter register in
+    /// Quantum supersampling (paper 003 sec. 3.3, thesis 004 sec. 1.5.1): `ApplyQss` (the counter in
     /// uniform superposition, the mean coin prepared, counter qubit j controlling 2^j Grover
-    /// operators, the inverse QFT on the counter, and the counter measured.
+    /// operators, the inverse QFT on the counter), then the counter measured.
     ///
     /// # Input
     /// ## amplitudes
@@ -21,22 +19,9 @@ namespace QuantumRayTracing.Supersampling {
     /// # Remarks
     /// Registers: t counter qubits, ceil(log2 N) subpixel qubits, one coin qubit.
     operation MeasureQssReadout(amplitudes : Double[], counterBits : Int) : Int {
-        if counterBits < 1 {
-            fail $"counterBits must be at least 1, got {counterBits}";
-        }
         use counter = Qubit[counterBits];
         use register = Qubit[SubpixelQubits(Length(amplitudes)) + 1];
-        let prepare = PrepareMeanCoin(amplitudes, _);
-        ApplyToEach(H, counter);
-        prepare(register);
-        for j in 0..counterBits - 1 {
-            for _ in 1..1 <<< j {
-                Controlled ApplyCoinGroverOperator([counter[j]], (prepare, MarkMeanCoinHead, register));
-            }
-        }
-        // ApplyQFT leaves the qubits in reversed order; the inverse of the whole transform reverses first.
-        SwapReverseRegister(counter);
-        Adjoint ApplyQFT(counter);
+        ApplyQss(amplitudes, counterBits, counter + register);
         let readout = MeasureIntegerReadingLossAsZero(counter);
         ResetAll(register);
         readout
