@@ -20,8 +20,13 @@ public static class EstimationExperiment
     /// <param name="Median">Median absolute error.</param>
     /// <param name="Percentile95">95th percentile of the absolute error.</param>
     /// <param name="TailShare">The share of estimates whose error exceeds 3 times the median error.</param>
+    /// <param name="OnDevice">Measured under the device model (<see cref="EstimationSettings.DeviceRates"/>) instead of <paramref name="Decay"/>.</param>
     public sealed record Point(string Input, double Decay, string Estimator, long Budget, double Queries, double GroverOperators,
-        double Mean, double Median, double Percentile95, double TailShare);
+        double Mean, double Median, double Percentile95, double TailShare, bool OnDevice = false)
+    {
+        /// <summary>Measured on the ideal machine.</summary>
+        public bool Noiseless => Decay == 0 && !OnDevice;
+    }
 
     /// <summary>The estimators, by label, at a budget (null where the budget cannot run one).</summary>
     public static readonly (string Label, Func<long, IMeanEstimator?> Create)[] Estimators =
@@ -57,29 +62,34 @@ public static class EstimationExperiment
         var image = new SubpixelImage(SupersamplingImageBenchmark.RenderQornell(settings.ImageSize, EstimationSettings.Subpixels), EstimationSettings.Subpixels);
         var pixels = Enumerable.Range(0, image.Pixels).SelectMany(p => Enumerable.Range(0, 3).Select(c => image.Values(p, c))).ToArray();
 
-        var runs = new List<(string Input, double[][] Values, double Decay, string Label, long Budget, Func<IMeanEstimator> Create)>();
+        var runs = new List<(string Input, double[][] Values, double Decay, string Label, long Budget, Func<IMeanEstimator> Create, bool OnDevice)>();
         foreach (var (input, values) in new[] { ("means", means), ("pixels", pixels) })
         {
             foreach (var budget in EstimationSettings.Budgets)
                 foreach (var (label, create) in Estimators)
-                    if (create(budget) is not null) runs.Add((input, values, 0, label, budget, () => create(budget)!));
+                    if (create(budget) is not null) runs.Add((input, values, 0, label, budget, () => create(budget)!, false));
             foreach (var t in EstimationSettings.QssCounterBits)
-                runs.Add((input, values, 0, Qss, (2L << t) - 1, () => new QssEstimator(t)));
+                runs.Add((input, values, 0, Qss, (2L << t) - 1, () => new QssEstimator(t), false));
         }
         foreach (var t in EstimationSettings.PlaneCounterBits)
         {
             var table = QssLookupTable.Exact(image.Count, t);
-            runs.Add(("pixels", pixels, 0, QssPlanes, SupersampleSettings.DefaultPlanes * ((2L << t) - 1), () => new BitPlaneQssEstimator(table, SupersampleSettings.DefaultPlanes)));
+            runs.Add(("pixels", pixels, 0, QssPlanes, SupersampleSettings.DefaultPlanes * ((2L << t) - 1), () => new BitPlaneQssEstimator(table, SupersampleSettings.DefaultPlanes), false));
         }
         if (settings.Noise)
             foreach (var decay in EstimationSettings.Decays)
                 foreach (var budget in EstimationSettings.NoisyBudgets)
                     foreach (var (label, create) in Estimators)
-                        if (create(budget) is not null) runs.Add(("means", means, decay, label, budget, () => create(budget)!));
+                        if (create(budget) is not null) runs.Add(("means", means, decay, label, budget, () => create(budget)!, false));
         // Last, so every other run keeps its index and so its engine stream.
         foreach (var (input, values) in new[] { ("means", means), ("pixels", pixels) })
             foreach (var budget in EstimationSettings.Budgets)
-                runs.Add((input, values, 0, QssBayes, budget, () => new BayesianPhaseEstimator(budget)));
+                runs.Add((input, values, 0, QssBayes, budget, () => new BayesianPhaseEstimator(budget), false));
+        // After those, for the same reason: the direct coin at the device's rates.
+        if (settings.Noise)
+            foreach (var budget in EstimationSettings.NoisyBudgets)
+                foreach (var (label, create) in Estimators)
+                    if (create(budget) is not null) runs.Add(("means", means, 0, label, budget, () => create(budget)!, true));
 
         // Each run has its own engine stream, so the points do not depend on the order the two cores take them in.
         var points = new Point[runs.Count];
@@ -88,15 +98,17 @@ public static class EstimationExperiment
         {
             var run = runs[i];
             var random = root.Fork(RandomStreams.Supersampling + (ulong)i);
-            ISupersamplingEngine inner = run.Decay == 0
-                ? new AnalyticSupersamplingEngine(random)
-                : new DirectCoinEngine(new AnalyticSupersamplingEngine(random, Noise.NoiseModel.Depolarizing(NoiseEstimationExperiment.RateForDecay(run.Decay))));
+            ISupersamplingEngine inner = run.OnDevice
+                ? new DirectCoinEngine(new AnalyticSupersamplingEngine(random, device: EstimationSettings.DeviceRates))
+                : run.Decay == 0
+                    ? new AnalyticSupersamplingEngine(random)
+                    : new DirectCoinEngine(new AnalyticSupersamplingEngine(random, Noise.NoiseModel.Depolarizing(NoiseEstimationExperiment.RateForDecay(run.Decay))));
             using var engine = new QueryCountingEngine(inner);
             var estimates = run.Create().Estimate(run.Values, engine);
             var errors = run.Values.Select((v, j) => Math.Abs(estimates[j] - SubpixelValues.Mean(v))).Order().ToArray();
             var median = Quantile(errors, 0.5);
             points[i] = new Point(run.Input, run.Decay, run.Label, run.Budget, (double)engine.Queries / errors.Length, (double)engine.GroverOperators / errors.Length,
-                errors.Average(), median, Quantile(errors, 0.95), errors.Count(e => e > 3 * median) / (double)errors.Length);
+                errors.Average(), median, Quantile(errors, 0.95), errors.Count(e => e > 3 * median) / (double)errors.Length, run.OnDevice);
             var finished = Interlocked.Increment(ref done);
             if (finished % 20 == 0) progress($"{finished} of {runs.Count} points");
         });

@@ -1,3 +1,5 @@
+using QuantumRayTracing.Noise;
+
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>What `bench estimation` measures (docs/estimation.md).</summary>
@@ -12,6 +14,16 @@ public sealed record EstimationSettings(int Trials, int ImageSize, bool Noise, u
 
     /// <summary>The budgets of the noisy sweep.</summary>
     public static readonly long[] NoisyBudgets = [60, 240, 960, 3200];
+
+    /// <summary>
+    /// The direct coin's gate-level noise at the device's rates: the device model docs/noise-estimation.md fits to the QCoin
+    /// paper's fig. 10 (its one-qubit rate, <see cref="FittedOneQubitRate"/>, and its readout: P0 assumed, P1 from the k = 0 plateau).
+    /// </summary>
+    public static DeviceNoiseModel DeviceRates => new(FittedOneQubitRate, 0, DeviceFigures.AssumedReadZeroAsOne,
+        DeviceFigures.AssumedReadZeroAsOne + 2 * DeviceFigures.MonteCarloError(DeviceFigures.PaperPlateauQueries));
+
+    /// <summary>The one-qubit depolarizing rate the fig. 10 fit chose (docs/noise-estimation.md).</summary>
+    public const double FittedOneQubitRate = 1e-2;
 
     /// <summary>Decays γ per Grover operator of the noisy sweep (fidelity e^(−γ) per operator, on the direct coin).</summary>
     public static readonly double[] Decays = [0.01, 0.03, 0.1];
