@@ -128,17 +128,21 @@ public sealed class RayTable
     {
         ArgumentNullException.ThrowIfNull(geometry);
         ArgumentNullException.ThrowIfNull(ray);
-        var inside = new List<(int Row, int Depth, double Distance)>();
+        // It runs for every ray of every pass: the kept rows go straight into their three lists.
+        List<int> rows = [], depths = [];
+        List<double> distances = [];
         var maxDepth = 0;
         for (var p = 0; p < geometry.Count; p++)
         {
             var row = EvaluateRow(geometry, ray, p);
             if (!row.Valid) continue;
             maxDepth = Math.Max(maxDepth, row.Depth);
-            if (Inside(geometry, p, row.X, row.Y, row.Z)) inside.Add((p, row.Depth, row.Distance));
+            if (!Inside(geometry, p, row.X, row.Y, row.Z)) continue;
+            rows.Add(p);
+            depths.Add(row.Depth);
+            distances.Add(row.Distance);
         }
-        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)),
-            [.. inside.Select(r => r.Row)], [.. inside.Select(r => r.Depth)], [.. inside.Select(r => r.Distance)]);
+        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)), [.. rows], [.. depths], [.. distances]);
     }
 
     public SceneGeometry Geometry { get; }

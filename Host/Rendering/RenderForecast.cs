@@ -12,10 +12,9 @@ namespace QuantumRayTracing.Rendering;
 /// </summary>
 /// <remarks>
 /// The renderer keeps every ray of a pass and every surface point until shading, so its memory grows with the rays it
-/// traces: <see cref="BytesPerRay"/> per ray above <see cref="BaseBytes"/>, both measured as peak resident memory of
-/// classical and analytic renders of the Qornell box from 256² to 2048² (docs/rendering.md), rounded up. The calibration
-/// gives the rays per pixel. Larger renders spend less time per pixel than the calibration's (measured at 1024² and 2048²:
-/// the forecast about 2 to 2.5 times the render's time), so the time is an upper estimate.
+/// traces: <see cref="BytesPerRay"/> per ray above <see cref="BaseBytes"/>, rounded up from the peak resident memory
+/// `bench scale` measures (docs/scale.md). The calibration gives the rays per pixel. Larger renders spend less time per
+/// pixel than the calibration's, so the time is an upper estimate (docs/scale.md sets each forecast beside the measured times).
 /// </remarks>
 public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakBytes, TimeSpan Time)
 {

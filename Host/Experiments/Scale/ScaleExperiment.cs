@@ -17,7 +17,7 @@ public static partial class ScaleExperiment
     public const string Title = "Scale: time and memory against image size";
 
     /// <summary>One render: its engine and size, and what it took (null figures: refused, with the reason).</summary>
-    public sealed record Row(EngineKind Engine, int Size, double? RenderSeconds, double? ReferenceSeconds, long PeakBytes, double? PerRay, string? Forecast, string? Refusal)
+    public sealed record Row(EngineKind Engine, int Size, double? RenderSeconds, double? ReferenceSeconds, long PeakBytes, double? PerRay, string? Forecast, string? ForecastTime, string? Refusal)
     {
         public long Pixels => (long)Size * Size;
     }
@@ -49,19 +49,20 @@ public static partial class ScaleExperiment
         foreach (var file in Directory.EnumerateFiles(scratch)) File.Delete(file);
         var run = RenderProcess.Run(["render", settings.SceneFile, "--engine", engine.Name, "--size", Invariant($"{size}"),
             "--seed", Invariant($"{settings.Seed}"), "--reference-samples", "0", "-o", image], json);
-        var forecast = ForecastLine().Match(run.Output) is { Success: true } m ? m.Groups[1].Value : null;
+        var match = ForecastLine().Match(run.Output);
+        var (forecast, forecastTime) = match.Success ? (match.Groups[1].Value, match.Groups[2].Value + " s") : (null, null);
         if (run.Figures is not { } figures)
         {
             // The memory guard's refusal is a result; any other failure ends the experiment.
             if (!run.Error.Contains("--max-memory", StringComparison.Ordinal)) throw new InvalidOperationException($"render {engine.Name} {size}x{size} failed (exit {run.ExitCode}): {run.Error}");
-            return new Row(engine, size, null, null, run.PeakBytes, null, forecast, run.Error);
+            return new Row(engine, size, null, null, run.PeakBytes, null, forecast, forecastTime, run.Error);
         }
         double Seconds(string field) => figures[field]!.GetValue<double>();
         return new Row(engine, size, Seconds("renderTime"), Seconds("referenceTime"), run.PeakBytes,
-            figures["total"]!["perRayConservative"]!.GetValue<double>(), forecast, null);
+            figures["total"]!["perRayConservative"]!.GetValue<double>(), forecast, forecastTime, null);
     }
 
-    [GeneratedRegex(@"forecast: peak memory about ([0-9.]+ [MG]B)")]
+    [GeneratedRegex(@"forecast: peak memory about ([0-9.]+ [MG]B) .*?at most about ([0-9]+) s")]
     private static partial Regex ForecastLine();
 
     // The one-minute load average (Linux), to say how busy the machine was while it was timed; null elsewhere.
@@ -76,18 +77,18 @@ public static partial class ScaleExperiment
             render on the engine, then the classical reference it is compared with (same as every `render`). *Render* and *reference* are their wall
             times as the render's JSON gives them; *peak memory* is the process's peak resident memory (Linux VmHWM, read every
             {RenderProcess.PollInterval.TotalMilliseconds:F0} ms), over both renders. From 1024x1024 pixels `render` forecasts the run first and refuses one whose
-            forecast memory exceeds what the machine has available ([rendering.md](rendering.md#large-renders-forecast-memory-guard-and-progress)): such rows give the forecast and no times.
+            forecast memory exceeds what the machine has available ([rendering.md](rendering.md#large-renders-forecast-memory-guard-and-progress)): such rows give the forecast and no times. The forecast time covers the render and its reference: compare it with their sum.
             Int/Ray is conservative (docs/conventions.md; the BVH's counts node and primitive tests and its build).
             """));
         if (load is { Before: { } before, After: { } after })
             report.Text(Invariant($"One-minute load average when the run started and ended: {before:F1} and {after:F1}, on {Environment.ProcessorCount} cores. Above the core count other work shared the machine, and the times are upper bounds; memory does not depend on it."));
-        var table = new TextTable("scale", ["engine", "size", "pixels", "render", "reference", "peak memory", "bytes per pixel", "forecast", "Int/Ray"]);
+        var table = new TextTable("scale", ["engine", "size", "pixels", "render", "reference", "peak memory", "bytes per pixel", "forecast memory", "forecast time", "Int/Ray"]);
         foreach (var r in rows)
             table.Row(r.Engine.Name, Invariant($"{r.Size}x{r.Size}"), Invariant($"{r.Pixels:N0}"),
                 r.RenderSeconds is { } t ? Invariant($"{t:F2} s") : "refused", r.ReferenceSeconds is { } rt ? Invariant($"{rt:F2} s") : "",
                 r.Refusal is null ? RenderForecast.Bytes(r.PeakBytes) : "", r.Refusal is null ? Invariant($"{r.PeakBytes / (double)r.Pixels:N0}") : "",
-                r.Forecast ?? "", r.PerRay is { } p ? Invariant($"{p:F2}") : "");
-        report.Table(table.AlignRight(2, 3, 4, 5, 6, 7, 8));
+                r.Forecast ?? "", r.ForecastTime ?? "", r.PerRay is { } p ? Invariant($"{p:F2}") : "");
+        report.Table(table.AlignRight(2, 3, 4, 5, 6, 7, 8, 9));
         if (rows.Any(r => r.Refusal is not null))
             report.Text(string.Join("\n", rows.Where(r => r.Refusal is not null).Select(r => Invariant($"- {r.Engine.Name} at {r.Size}x{r.Size}: `{r.Refusal}`"))));
 
