@@ -74,12 +74,7 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
     public void RayThatHitsNothingOnQuantumCircuitIsUniform()
     {
         // Six random rectangles on a 2-bit grid; the geometry, not the circuit, picks a pixel whose ray meets none.
-        var scene = SmallGridScene.Build(2, 6, 1);
-        var (x, y, _) = SmallGridScene.PixelMarking(scene, 4, 0);
-        var file = _scratch.File("miss.qasm");
-        var (code, error) = ConsoleCapture.Run("export", "search", SmallGridScene.Write(2, 6, 1, _scratch.File("scene.json")), "--size", "4", "--pixel", $"{x},{y}", "-o", file);
-        Assert.True(code == 0, error);
-        Assert.Empty(ExportedDistribution.MarkedFromHeader(file));
+        var file = SmallGridScene.ExportSearch(_scratch, 2, 6, 1, 0, name: "miss.qasm");
         var ideal = ExportedDistribution.FromHeader(file);
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
         Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,

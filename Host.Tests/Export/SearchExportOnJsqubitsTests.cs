@@ -19,18 +19,6 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    private string ExportPixel(int bits, int count, ulong seed, int size, int marked, bool orMore, int? iterations, string name = "search.qasm")
-    {
-        var scene = SmallGridScene.Build(bits, count, seed);
-        var (x, y, found) = SmallGridScene.PixelMarking(scene, size, marked, orMore);
-        var file = _scratch.File(name);
-        string[] r = iterations is { } n ? ["--iterations", n.ToString(CultureInfo.InvariantCulture)] : [];
-        var (code, error) = ConsoleCapture.Run(["export", "search", SmallGridScene.Write(bits, count, seed, _scratch.File("scene.json")), "--size", $"{size}", "--pixel", $"{x},{y}", .. r, "-o", file]);
-        Assert.True(code == 0, error);
-        Assert.Equal(found, ExportedDistribution.MarkedFromHeader(file).Length);
-        return file;
-    }
-
     /// <summary>N and r as the header states them.</summary>
     private static (int Count, int Iterations) HeaderCountAndIterations(string file)
     {
@@ -63,7 +51,7 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     [InlineData(2, 6, 1UL, 0, false, 1)] // 2-bit grid, hits nothing, one iteration
     public void SearchOnJsqubitsIsTheHeadersAndGroversClosedForm(int bits, int count, ulong seed, int marked, bool orMore, int? iterations)
     {
-        var file = ExportPixel(bits, count, seed, 1 << bits, marked, orMore, iterations);
+        var file = SmallGridScene.ExportSearch(_scratch, bits, count, seed, marked, orMore, iterations);
         AssertJsqubitsHeaderAndClosedFormAgree(file, $"{count} rectangles, {bits}-bit grid, seed {seed}, {marked}{(orMore ? "+" : "")} marked, r {iterations?.ToString(CultureInfo.InvariantCulture) ?? "default"}");
         if (marked == 0 && iterations is null)
             Assert.Contains("iterations: 0 (no primitive is marked: every r leaves the uniform distribution as it is, so none is run)", File.ReadAllText(file), StringComparison.Ordinal);
@@ -85,8 +73,8 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     [Fact]
     public void WrongIterationCountIsRejected()
     {
-        var optimal = ExportPixel(3, 12, 3UL, 8, 1, false, null, "optimal.qasm");
-        var none = ExportPixel(3, 12, 3UL, 8, 1, false, 1, "one.qasm");
+        var optimal = SmallGridScene.ExportSearch(_scratch, 3, 12, 3UL, 1, name: "optimal.qasm");
+        var none = SmallGridScene.ExportSearch(_scratch, 3, 12, 3UL, 1, iterations: 1, name: "one.qasm");
         Assert.Equal(2, HeaderCountAndIterations(optimal).Iterations);
         var difference = ExportedDistribution.MaxDifference(ExportedDistribution.FromHeader(optimal), ExportedDistribution.OnJsqubits(none, "index"));
         Assert.True(difference > 0.3, $"r = 1 against the r = 2 header differs by only {difference}");

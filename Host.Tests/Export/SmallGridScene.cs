@@ -1,8 +1,10 @@
+using System.Globalization;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
+using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
 
@@ -65,5 +67,22 @@ internal static class SmallGridScene
                 if (count == marked || (orMore && count > marked)) return (x, y, count);
             }
         throw new InvalidOperationException($"no pixel of {size}x{size} marks {marked}{(orMore ? " or more" : "")} primitives of {scene.Name}");
+    }
+
+    /// <summary>
+    /// `qrt export search` (qasm2) of the scene at the first pixel of a grid-sized image whose ray marks <paramref name="marked"/>
+    /// primitives (or more), into <paramref name="scratch"/>; r the default unless given. The header must list as many marked.
+    /// </summary>
+    public static string ExportSearch(ScratchDirectory scratch, int integerBits, int count, ulong seed, int marked, bool orMore = false, int? iterations = null, string name = "search.qasm")
+    {
+        var size = 1 << integerBits;
+        var (x, y, found) = PixelMarking(Build(integerBits, count, seed), size, marked, orMore);
+        var file = scratch.File(name);
+        string[] r = iterations is { } n ? ["--iterations", n.ToString(CultureInfo.InvariantCulture)] : [];
+        var scene = Write(integerBits, count, seed, scratch.File("scene.json"));
+        var (code, error) = ConsoleCapture.Run(["export", "search", scene, "--size", $"{size}", "--pixel", $"{x},{y}", .. r, "-o", file]);
+        Assert.True(code == 0, error);
+        Assert.Equal(found, ExportedDistribution.MarkedFromHeader(file).Length);
+        return file;
     }
 }
