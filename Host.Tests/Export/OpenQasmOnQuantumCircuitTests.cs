@@ -7,8 +7,10 @@ namespace QuantumRayTracing.Tests.Export;
 /// `qrt export search --format qasm2` run on quantum-circuit (npm), a simulator nobody here wrote: the
 /// distribution of the index register it computes from the file's gates must equal the header's ideal
 /// probabilities, which the QDK computed from its own state vector. Both are exact state vectors, so the
-/// tolerance is 1e-9 (floating-point residue is ~1e-14). quantum-circuit loops over every basis state of
-/// the unused qubits for each gate, so the scene is one with a 2-bit grid: 20 qubits, ~30 s per circuit.
+/// tolerance is 1e-9 (floating-point residue is ~1e-14); jsqubits (the other independent simulator) must agree
+/// with quantum-circuit on the same files, and the header with Grover's closed form. quantum-circuit loops over
+/// every basis state of the unused qubits for each gate, so the scenes are on a 2-bit grid: 17 to 20 qubits,
+/// 2 to 30 s per circuit. Rays that mark one and two primitives, and one that marks none (at its default r = 0).
 /// A wrong iteration count and a dropped gate must both fail the same comparison.
 /// </summary>
 public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
@@ -53,8 +55,34 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
         Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
             $"pixel {pixel} ({what}): header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        // The second independent simulator reads the same file alike (it checks the larger circuits alone).
+        var sparse = ExportedDistribution.OnJsqubits(file, "index");
+        Assert.True(ExportedDistribution.MaxDifference(simulated, sparse) <= ExportedDistribution.Tolerance,
+            $"pixel {pixel} ({what}): quantum-circuit {string.Join(' ', simulated)} vs jsqubits {string.Join(' ', sparse)}");
         // The search amplifies: the most likely value is far above uniform (1/5), so the check is not of a flat distribution.
         Assert.True(ideal.Values.Max() > 0.35, $"pixel {pixel}: no amplified value in {string.Join(' ', ideal)}");
+        var closedForm = ExportedDistribution.GroverClosedForm(5, ExportedDistribution.MarkedFromHeader(file), 1);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, closedForm) <= ExportedDistribution.Tolerance,
+            $"pixel {pixel} ({what}): header {string.Join(' ', ideal)} vs Grover's closed form {string.Join(' ', closedForm)}");
+    }
+
+    /// <summary>
+    /// A ray that hits nothing, at the default r = 0 (the preparation alone; 17 qubits, a few seconds). The same ray
+    /// with the oracle run once (20 qubits, over a minute here on a shared machine) is checked on jsqubits instead.
+    /// </summary>
+    [Fact]
+    public void RayThatHitsNothingOnQuantumCircuitIsUniform()
+    {
+        // Six random rectangles on a 2-bit grid; the geometry, not the circuit, picks a pixel whose ray meets none.
+        var file = SmallGridScene.ExportSearch(_scratch, 2, 6, 1, 0, name: "miss.qasm");
+        var ideal = ExportedDistribution.FromHeader(file);
+        var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
+        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
+            $"header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        Assert.Contains("iterations: 0 (no primitive is marked", File.ReadAllText(file), StringComparison.Ordinal);
+        // Nothing marked: 1/6 on each of the six primitives.
+        var uniform = ExportedDistribution.GroverClosedForm(6, [], 0);
+        Assert.True(ExportedDistribution.MaxDifference(ideal, uniform) <= ExportedDistribution.Tolerance, $"header {string.Join(' ', ideal)} is not uniform over 6");
     }
 
     [Fact]

@@ -37,6 +37,10 @@ public sealed class QssExportOnQuantumCircuitTests : IDisposable
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "counter");
         Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
             $"header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        // jsqubits reads the same gates (rz, ry, controlled rotations' decompositions) alike.
+        var sparse = ExportedDistribution.OnJsqubits(file, "counter");
+        Assert.True(ExportedDistribution.MaxDifference(simulated, sparse) <= ExportedDistribution.Tolerance,
+            $"quantum-circuit {string.Join(' ', simulated)} vs jsqubits {string.Join(' ', sparse)}");
         var analytic = CoinProbability.QssReadout(values.Average(), counterBits).Select((p, y) => (y, p)).ToDictionary(e => e.y, e => e.p);
         Assert.True(ExportedDistribution.MaxDifference(ideal, analytic) <= ExportedDistribution.Tolerance,
             $"header {string.Join(' ', ideal)} vs closed form {string.Join(' ', analytic)}");

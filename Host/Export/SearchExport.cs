@@ -41,10 +41,21 @@ public static class SearchExport
                 $"scene: {scene}, N = {count} primitives",
                 $"ray: {ray}; marked primitives (hit window: the full range): {indices}",
                 $"oracle: {construction.Name} ({construction.Axes} axes tested, {construction.BoundRegisters} bound register(s), unload by {(construction.MeasuredUnload ? "measurement" : "lookup")})",
-                $"iterations: {r}{(iterations is null ? $" (the optimum for {marked.MarkedCount} of {count} marked)" : "")}; P(marked) = {GroverProbability.OfMarked(count, marked.MarkedCount, r).ToString("R", CultureInfo.InvariantCulture)} by Grover's closed form",
+                $"iterations: {r}{(iterations is null ? $" ({DefaultIterationsReason(count, marked.MarkedCount)})" : "")}; P(marked) = {GroverProbability.OfMarked(count, marked.MarkedCount, r).ToString("R", CultureInfo.InvariantCulture)} by Grover's closed form",
             ],
             $"{QSharpOperations.ApplyGateGroverSearch}({GateEngine.OracleArgument(input)}, {r.ToString(CultureInfo.InvariantCulture)}, _)",
             qubits,
             "index");
     }
+
+    /// <summary>
+    /// Why the default count is what it is. With no primitive marked (a ray that hits nothing) or every one,
+    /// no iteration changes the uniform distribution, so the default is the least circuit, none.
+    /// </summary>
+    private static string DefaultIterationsReason(int count, int marked) => marked switch
+    {
+        0 => "no primitive is marked: every r leaves the uniform distribution as it is, so none is run",
+        _ when marked == count => "every primitive is marked: every r leaves the uniform distribution as it is, so none is run",
+        _ => $"the optimum for {marked} of {count} marked",
+    };
 }
