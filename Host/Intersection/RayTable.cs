@@ -210,10 +210,16 @@ public sealed class RayTable
     /// <summary>The oracle's marked set for <paramref name="window"/>: every row verify-rpc accepts.</summary>
     public MarkedSet Marked(HitWindow window)
     {
-        var marked = new List<int>();
-        foreach (var p in _rows ?? Enumerable.Range(0, Count))
-            if (Verify(p, window)) marked.Add(p);
-        return new MarkedSet(Count, marked);
+        if (_rows is null) return new MarkedSet(Count, Enumerable.Range(0, Count).Where(p => Verify(p, window)));
+        // A compact table's rows ascend: the accepted ones are the set as it is, without a list or a sort.
+        var accepted = 0;
+        for (var k = 0; k < _rows.Length; k++)
+            if (window.Accepts(_depths[k], _rows[k])) accepted++;
+        var marked = new int[accepted];
+        accepted = 0;
+        for (var k = 0; k < _rows.Length; k++)
+            if (window.Accepts(_depths[k], _rows[k])) marked[accepted++] = _rows[k];
+        return MarkedSet.FromAscending(Count, marked);
     }
 
     private (bool[] Valid, int[] Points) Full => _valid is not null && _points is not null

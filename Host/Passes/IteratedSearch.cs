@@ -44,9 +44,11 @@ public static class IteratedSearch
         long tableRows = 0, updated = 0;
         long settledRays = 0;
         var round = 0;
+        int[]? active = null;
         for (; round < iterations; round++)
         {
-            var active = Enumerable.Range(0, rays.Count).Where(i => !finished[i] && settled?.Invoke(i) != true).ToArray();
+            // A finished or settled ray stays so: each round's rays are among the last round's.
+            active = Unfinished(active, rays.Count, finished, settled);
             if (active.Length == 0) break;
             var settledThisRound = 0;
             for (var start = 0; start < active.Length; start += BlockSize)
@@ -76,6 +78,20 @@ public static class IteratedSearch
             updated += changed;
         }
         return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated) { SettledRays = settledRays };
+    }
+
+    private static int[] Unfinished(int[]? previous, int rays, bool[] finished, Func<int, bool>? settled)
+    {
+        var unfinished = new List<int>(previous?.Length ?? rays);
+        if (previous is null)
+        {
+            for (var i = 0; i < rays; i++)
+                if (!finished[i] && settled?.Invoke(i) != true) unfinished.Add(i);
+        }
+        else
+            foreach (var i in previous)
+                if (!finished[i] && settled?.Invoke(i) != true) unfinished.Add(i);
+        return [.. unfinished];
     }
 
     // The engine answers every query but the ones settled classically, which test every primitive (the classical
