@@ -63,7 +63,7 @@ public static class SceneRenderer
         var (hits, metrics) = TracePass.Run("primary", plan.Search, plan.Geometry, cameraRays,
             plan.Trace(Enumerable.Range(0, cameraRays.Length).ToArray(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
-        var points = new List<SurfacePoint>();
+        var points = new List<SurfacePoint>(cameraRays.Length);
         var specular = new List<SpecularRayWorkItem>();
         for (var pixel = 0; pixel < cameraRays.Length; pixel++)
         {
@@ -114,7 +114,7 @@ public static class SceneRenderer
         var scene = plan.Scene;
         var pointLights = scene.Lights.Count;
         var lightCount = pointLights + scene.DirectionalLights.Count;
-        var queue = new List<ShadowRayWorkItem>();
+        var queue = new List<ShadowRayWorkItem>(points.Count * lightCount);
         for (var k = 0; k < points.Count; k++)
             for (var l = 0; l < lightCount; l++)
             {
