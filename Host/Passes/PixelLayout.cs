@@ -51,11 +51,12 @@ public sealed class PixelLayout
     /// </summary>
     public int LatticeLevel(int ray, int levels)
     {
-        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
-        var level = 0;
-        while (level < levels && x % (2 << level) == 0 && y % (2 << level) == 0) level++;
-        return level;
+        var (y, x) = Math.DivRem(_pixelOf[ray], _width);
+        return LevelAt(x, y, levels);
     }
+
+    // Both coordinates are multiples of 2^k exactly for k up to the trailing zeros they share (every k for the origin).
+    private static int LevelAt(int x, int y, int levels) => Math.Min(levels, System.Numerics.BitOperations.TrailingZeroCount(x | y));
 
     /// <summary>
     /// The rays of the same channel on the next coarser lattice around ray <paramref name="ray"/>: the
@@ -77,13 +78,14 @@ public sealed class PixelLayout
     public int CoarserNeighbours(int ray, int levels, Span<int> into)
     {
         var count = 0;
-        var step = 1 << LatticeLevel(ray, levels);
-        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
+        var (y, x) = Math.DivRem(_pixelOf[ray], _width);
+        var step = 1 << LevelAt(x, y, levels);
+        var coarse = 2 * step - 1; // a coordinate on the coarser lattice has no bit of this mask set (powers of two: no division)
         for (var dy = -step; dy <= step; dy += step)
             for (var dx = -step; dx <= step; dx += step)
             {
                 var (nx, ny) = (x + dx, y + dy);
-                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || nx % (2 * step) != 0 || ny % (2 * step) != 0) continue;
+                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || (nx & coarse) != 0 || (ny & coarse) != 0) continue;
                 if (RayAt(ny * _width + nx, _channelOf[ray]) is var neighbour and >= 0) into[count++] = neighbour;
             }
         return count;
@@ -96,9 +98,9 @@ public sealed class PixelLayout
     /// </summary>
     public int CoarserNeighbourSlots(int ray, int levels)
     {
-        var step = 1 << LatticeLevel(ray, levels);
-        var (x, y) = (_pixelOf[ray] % _width / step, _pixelOf[ray] / _width / step);
-        return (x % 2 == 1 ? 2 : 1) * (y % 2 == 1 ? 2 : 1);
+        var (y, x) = Math.DivRem(_pixelOf[ray], _width);
+        var step = 1 << LevelAt(x, y, levels);
+        return ((x & step) != 0 ? 2 : 1) * ((y & step) != 0 ? 2 : 1);
     }
 
     /// <summary>The rays of the same channel at the pixels left, right, above and below ray <paramref name="ray"/>'s.</summary>
