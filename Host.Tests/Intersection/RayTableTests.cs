@@ -273,4 +273,41 @@ public class RayTableTests
             }
         }
     }
+
+    /// <summary>
+    /// The vectorised compact build against the scalar full table on secondary rays too: rays that leave a primitive
+    /// (its row must be invalid and must not count in the depth bits), end at t = 1 like shadow rays, start inside the
+    /// grid or point along an axis; every row's depth and distance bit for bit, on every broad random scene.
+    /// </summary>
+    [Fact]
+    public void CompactBuildMatchesTheScalarRowsOnSecondaryRays()
+    {
+        var random = new QuantumRayTracing.Randomness.SeededRandom(5);
+        foreach (var kind in Scenes.BroadRandomScene.Kinds)
+        {
+            var scene = Scenes.BroadRandomScene.Build(kind, 13);
+            var geometry = new SceneGeometry(scene);
+            var side = 1 << scene.Grid.IntegerBits;
+            Vec3 Point() => new(random.NextDouble() * side, random.NextDouble() * side, random.NextDouble() * side);
+            for (var k = 0; k < 400; k++)
+            {
+                var (from, to) = (Point(), Point());
+                if (k % 4 == 1) from = new Vec3(Math.Floor(from.X), Math.Floor(from.Y), Math.Floor(from.Z)); // on grid lines: the snap decides
+                var direction = k % 10 == 0 ? new Vec3(0, 0, k % 20 == 0 ? 1 : -1) : to - from;
+                var ray = new Ray(from, direction, MaxDistance: k % 2 == 0 ? 1 : double.PositiveInfinity,
+                    ExcludedPrimitive: k % 3 == 0 ? random.NextInt(geometry.Count) : -1);
+                var (direct, full) = (RayTable.BuildCompact(geometry, ray), RayTable.Build(geometry, ray));
+                Assert.Equal(full.DepthBits, direct.DepthBits);
+                for (var p = 0; p < geometry.Count; p++)
+                {
+                    var inside = full.Verify(p, new HitWindow(0, int.MaxValue, int.MaxValue));
+                    Assert.Equal(inside, direct.Verify(p, new HitWindow(0, int.MaxValue, int.MaxValue)));
+                    if (inside) Assert.Equal((full.Depth(p), BitConverter.DoubleToInt64Bits(full.Distance(p))), (direct.Depth(p), BitConverter.DoubleToInt64Bits(direct.Distance(p))));
+                }
+                var window = new HitWindow(random.NextInt(4), random.NextInt(64), random.NextInt(geometry.Count + 1));
+                Assert.Equal(QuantumRayTracing.Search.BestAccepted.Among(full, window, Enumerable.Range(0, geometry.Count)), direct.BestAccepted(window));
+                Assert.Equal(QuantumRayTracing.Search.BestAccepted.Among(full, window, Enumerable.Range(0, geometry.Count)), full.BestAccepted(window));
+            }
+        }
+    }
 }

@@ -108,7 +108,7 @@ public sealed class RayTable
     }
 
     /// <summary>verify-rpc's bounds test: the quantised point lies in primitive <paramref name="p"/>'s cells on every axis.</summary>
-    private static bool Inside(SceneGeometry geometry, int p, int x, int y, int z) =>
+    internal static bool Inside(SceneGeometry geometry, int p, int x, int y, int z) =>
         x >= geometry.Min(p, 0) && x <= geometry.Max(p, 0)
         && y >= geometry.Min(p, 1) && y <= geometry.Max(p, 1)
         && z >= geometry.Min(p, 2) && z <= geometry.Max(p, 2);
@@ -128,22 +128,17 @@ public sealed class RayTable
     {
         ArgumentNullException.ThrowIfNull(geometry);
         ArgumentNullException.ThrowIfNull(ray);
-        // It runs for every ray of every pass: the kept rows go straight into their three lists.
-        List<int> rows = [], depths = [];
-        List<double> distances = [];
-        var maxDepth = 0;
-        for (var p = 0; p < geometry.Count; p++)
-        {
-            var row = EvaluateRow(geometry, ray, p);
-            if (!row.Valid) continue;
-            maxDepth = Math.Max(maxDepth, row.Depth);
-            if (!Inside(geometry, p, row.X, row.Y, row.Z)) continue;
-            rows.Add(p);
-            depths.Add(row.Depth);
-            distances.Add(row.Distance);
-        }
-        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)), [.. rows], [.. depths], [.. distances]);
+        // It runs for every ray of every pass: the rows go into per-thread scratch, then into arrays of their exact size.
+        var n = geometry.Count;
+        if (_scratchRows is null || _scratchRows.Length < n) (_scratchRows, _scratchDepths, _scratchDistances) = (new int[n], new int[n], new double[n]);
+        var count = CompactRows.Evaluate(geometry, ray, _scratchRows, _scratchDepths!, _scratchDistances!, out var maxDepth);
+        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)),
+            _scratchRows.AsSpan(0, count).ToArray(), _scratchDepths.AsSpan(0, count).ToArray(), _scratchDistances.AsSpan(0, count).ToArray());
     }
+
+    [ThreadStatic] private static int[]? _scratchRows;
+    [ThreadStatic] private static int[]? _scratchDepths;
+    [ThreadStatic] private static double[]? _scratchDistances;
 
     public SceneGeometry Geometry { get; }
 
@@ -192,13 +187,39 @@ public sealed class RayTable
         return valid[p] && Inside(Geometry, p, points[p * 3], points[p * 3 + 1], points[p * 3 + 2]) && window.Accepts(_depths[p], p);
     }
 
+    /// <summary>
+    /// The brute-force answer: the smallest (depth, id) that verify-rpc accepts under <paramref name="window"/>, or null.
+    /// A compact table reads only its rows (no other row can be accepted); a full one every row.
+    /// </summary>
+    public int? BestAccepted(HitWindow window)
+    {
+        int? best = null;
+        var bestDepth = 0;
+        if (_rows is not null)
+        {
+            // Rows ascend, so the first of equal depths has the smaller id.
+            for (var k = 0; k < _rows.Length; k++)
+                if (window.Accepts(_depths[k], _rows[k]) && (best is null || _depths[k] < bestDepth)) (best, bestDepth) = (_rows[k], _depths[k]);
+            return best;
+        }
+        for (var p = 0; p < Count; p++)
+            if (Verify(p, window) && (best is null || _depths[p] < bestDepth)) (best, bestDepth) = (p, _depths[p]);
+        return best;
+    }
+
     /// <summary>The oracle's marked set for <paramref name="window"/>: every row verify-rpc accepts.</summary>
     public MarkedSet Marked(HitWindow window)
     {
-        var marked = new List<int>();
-        foreach (var p in _rows ?? Enumerable.Range(0, Count))
-            if (Verify(p, window)) marked.Add(p);
-        return new MarkedSet(Count, marked);
+        if (_rows is null) return new MarkedSet(Count, Enumerable.Range(0, Count).Where(p => Verify(p, window)));
+        // A compact table's rows ascend: the accepted ones are the set as it is, without a list or a sort.
+        var accepted = 0;
+        for (var k = 0; k < _rows.Length; k++)
+            if (window.Accepts(_depths[k], _rows[k])) accepted++;
+        var marked = new int[accepted];
+        accepted = 0;
+        for (var k = 0; k < _rows.Length; k++)
+            if (window.Accepts(_depths[k], _rows[k])) marked[accepted++] = _rows[k];
+        return MarkedSet.FromAscending(Count, marked);
     }
 
     private (bool[] Valid, int[] Points) Full => _valid is not null && _points is not null

@@ -20,6 +20,13 @@ public sealed class SceneGeometry
     private readonly int[] _flat;
     private readonly double[] _plane;
 
+    // Structure-of-arrays columns for the vectorised row kernel (CompactRows): per axis, the bounds as doubles (grid
+    // integers are exact in a double) and the flat-axis masks as all-ones or zero lanes.
+    internal readonly double[][] MinColumns = [[], [], []];
+    internal readonly double[][] MaxColumns = [[], [], []];
+    internal readonly long[][] FlatMasks = [[], [], []];
+    internal readonly double[] Planes;
+
     public SceneGeometry(Scene scene)
     {
         ArgumentNullException.ThrowIfNull(scene);
@@ -37,6 +44,14 @@ public sealed class SceneGeometry
                 var max = ToGrid(scene.Rectangles[p].Max[axis], p);
                 _max[p * 3 + axis] = axis == scene.Rectangles[p].FlatAxis ? max : max - 1;
             }
+        Planes = _plane;
+        for (var axis = 0; axis < 3; axis++)
+        {
+            var a = axis;
+            MinColumns[a] = [.. Enumerable.Range(0, Count).Select(p => (double)_min[p * 3 + a])];
+            MaxColumns[a] = [.. Enumerable.Range(0, Count).Select(p => (double)_max[p * 3 + a])];
+            FlatMasks[a] = [.. _flat.Select(f => f == a ? -1L : 0L)];
+        }
     }
 
     public CoordinateGrid Grid { get; }

@@ -53,11 +53,12 @@ public static class DirectPass
             metrics = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
             {
                 vouched = agreed;
-                var inLevel = levelRays.ToHashSet();
+                var inLevel = new bool[shadowRays.Count];
+                foreach (var i in levelRays) inLevel[i] = true;
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
                 var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i), schedule: schedule,
+                    level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel[i], schedule: schedule,
                     ledger: ledger, settle: settle);
                 return (searched, tests, updated);
             });

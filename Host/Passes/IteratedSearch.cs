@@ -38,24 +38,31 @@ public static class IteratedSearch
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
         var clock = Stopwatch.StartNew();
-        var finished = new bool[rays.Count];
-        var kept = new RayTable?[rays.Count];
         var cost = default(SearchCost);
         long tableRows = 0, updated = 0;
         long settledRays = 0;
         var round = 0;
+        // This round's rays, and aligned with them the tables kept from the last round (null before the first round, or
+        // when every ray finished) and whether each ray finished. A finished or settled ray stays so: each round's rays
+        // are among the last round's.
+        int[] active = [];
+        RayTable?[]? kept = null;
+        bool[] finished = [];
         for (; round < iterations; round++)
         {
-            var active = Enumerable.Range(0, rays.Count).Where(i => !finished[i] && settled?.Invoke(i) != true).ToArray();
+            (active, kept) = round == 0 ? (Unsettled(rays.Count, settled), null) : Unfinished(active, kept, finished, settled);
             if (active.Length == 0) break;
+            finished = new bool[active.Length];
+            RayTable?[]? keep = null;
             var settledThisRound = 0;
             for (var start = 0; start < active.Length; start += BlockSize)
             {
-                var block = active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
+                var (from, block) = (start, active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray());
                 var tables = new RayTable[block.Length];
-                Parallel.For(0, block.Length, k => tables[k] = kept[block[k]] ?? RayTable.BuildCompact(geometry, rays[block[k]]));
-                tableRows += (long)block.Count(i => kept[i] is null) * geometry.Count;
-                var queries = block.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k]), schedule?.Invoke(round, ray))).ToArray();
+                Parallel.For(0, block.Length, k => tables[k] = kept?[from + k] ?? RayTable.BuildCompact(geometry, rays[block[k]]));
+                tableRows += (long)(kept is null ? block.Length : kept.AsSpan(from, block.Length).Count((RayTable?)null)) * geometry.Count;
+                var queries = new HitQuery[block.Length];
+                for (var k = 0; k < block.Length; k++) queries[k] = new HitQuery(tables[k], window(block[k], tables[k]), schedule?.Invoke(round, block[k]));
                 var classically = settle is null ? [] : Enumerable.Range(0, block.Length).Where(k => settle(round, block[k])).ToArray();
                 settledRays += classically.Length;
                 settledThisRound += classically.Length;
@@ -64,11 +71,12 @@ public static class IteratedSearch
                 {
                     cost += outcomes[k].Cost;
                     ledger?.Record(block[k], queries[k].Schedule, outcomes[k]);
-                    finished[block[k]] = observe(block[k], tables[k], outcomes[k]);
-                    kept[block[k]] = finished[block[k]] ? null : tables[k];
+                    finished[from + k] = observe(block[k], tables[k], outcomes[k]);
+                    if (!finished[from + k]) (keep ??= new RayTable?[active.Length])[from + k] = tables[k];
                 }
                 progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
             }
+            kept = keep;
             // Gathering cannot improve answers settled classically: a round that settled every ray it searched skips it.
             if (afterRound is null || settledThisRound == active.Length) continue;
             var (tests, changed) = afterRound();
@@ -76,6 +84,30 @@ public static class IteratedSearch
             updated += changed;
         }
         return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated) { SettledRays = settledRays };
+    }
+
+    // The first round's rays: every ray not settled by other means.
+    private static int[] Unsettled(int rays, Func<int, bool>? settled)
+    {
+        if (settled is null) return [.. Enumerable.Range(0, rays)];
+        var unsettled = new List<int>(rays);
+        for (var i = 0; i < rays; i++)
+            if (!settled(i)) unsettled.Add(i);
+        return [.. unsettled];
+    }
+
+    // The next round's rays among this round's, with their kept tables.
+    private static (int[] Active, RayTable?[]? Kept) Unfinished(int[] active, RayTable?[]? kept, bool[] finished, Func<int, bool>? settled)
+    {
+        var next = new List<int>();
+        var tables = new List<RayTable?>();
+        for (var k = 0; k < active.Length; k++)
+        {
+            if (finished[k] || settled?.Invoke(active[k]) == true) continue;
+            next.Add(active[k]);
+            tables.Add(kept?[k]);
+        }
+        return ([.. next], kept is null ? null : [.. tables]);
     }
 
     // The engine answers every query but the ones settled classically, which test every primitive (the classical

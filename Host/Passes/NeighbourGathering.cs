@@ -15,14 +15,17 @@ public static class NeighbourGathering
         SceneGeometry geometry, IReadOnlyList<Ray> rays, Hit?[] hits, PixelLayout layout, TieBreak tieBreak)
     {
         long tests = 0, updated = 0;
-        var tried = new HashSet<int>();
+        Span<int> neighbours = stackalloc int[4];
+        Span<int> tried = stackalloc int[4];
         for (var i = 0; i < rays.Count; i++)
         {
-            tried.Clear();
+            var triedCount = 0;
             var changed = false;
-            foreach (var neighbour in layout.Neighbours(i))
+            var count = layout.Neighbours(i, neighbours);
+            for (var n = 0; n < count; n++)
             {
-                if (hits[neighbour] is not { } held || hits[i]?.Primitive == held.Primitive || !tried.Add(held.Primitive)) continue;
+                if (hits[neighbours[n]] is not { } held || hits[i]?.Primitive == held.Primitive || tried[..triedCount].Contains(held.Primitive)) continue;
+                tried[triedCount++] = held.Primitive;
                 var window = Hit.Beyond(rays[i], hits[i], geometry.Count, tieBreak);
                 tests++;
                 if (RayTable.Test(geometry, rays[i], held.Primitive, window) is not { } row) continue;
@@ -39,14 +42,17 @@ public static class NeighbourGathering
         SceneGeometry geometry, IReadOnlyList<Ray> rays, int?[] occluders, PixelLayout layout)
     {
         long tests = 0, updated = 0;
-        var tried = new HashSet<int>();
+        Span<int> neighbours = stackalloc int[4];
+        Span<int> tried = stackalloc int[4];
         for (var i = 0; i < rays.Count; i++)
         {
             if (occluders[i] is not null) continue;
-            tried.Clear();
-            foreach (var neighbour in layout.Neighbours(i))
+            var triedCount = 0;
+            var count = layout.Neighbours(i, neighbours);
+            for (var n = 0; n < count; n++)
             {
-                if (occluders[neighbour] is not { } held || !tried.Add(held)) continue;
+                if (occluders[neighbours[n]] is not { } held || tried[..triedCount].Contains(held)) continue;
+                tried[triedCount++] = held;
                 tests++;
                 if (RayTable.Test(geometry, rays[i], held, HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count)) is null) continue;
                 occluders[i] = held;
@@ -61,50 +67,82 @@ public static class NeighbourGathering
     /// Lattice-first tracing, closest hits: every ray of one lattice level is tested against the
     /// primitives its next-coarser lattice neighbours hold. It "agrees" when it has all its lattice neighbours (a ray at the
     /// border, or beside pixels without a ray of its channel, has fewer and gets a full search), they all hold the same
-    /// result (one primitive, or all nothing) and the ray accepted that primitive.
+    /// result (one primitive, or all nothing) and the ray accepted that primitive. A level's rays read only coarser
+    /// levels' hits, so they are gathered in parallel.
     /// </summary>
     public static (long Tests, long Updated) FromLattice(
-        SceneGeometry geometry, IReadOnlyList<Ray> rays, IEnumerable<int> level, Hit?[] hits, PixelLayout layout, int levels, TieBreak tieBreak, bool[] agreed)
-    {
-        long tests = 0, updated = 0;
-        foreach (var i in level)
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, int[] level, Hit?[] hits, PixelLayout layout, int levels, TieBreak tieBreak, bool[] agreed) =>
+        InParallel(level, i =>
         {
-            var held = layout.CoarserNeighbours(i, levels).Select(j => hits[j]?.Primitive).ToArray();
-            foreach (var p in held.OfType<int>().Distinct())
+            long tests = 0;
+            Span<int> coarser = stackalloc int[PixelLayout.MostCoarserNeighbours];
+            Span<int> distinct = stackalloc int[PixelLayout.MostCoarserNeighbours];
+            var count = layout.CoarserNeighbours(i, levels, coarser);
+            var (distinctCount, allSame) = (0, true);
+            for (var n = 0; n < count; n++)
+            {
+                var held = hits[coarser[n]]?.Primitive;
+                allSame &= held == hits[coarser[0]]?.Primitive;
+                if (held is { } p && !distinct[..distinctCount].Contains(p)) distinct[distinctCount++] = p;
+            }
+            foreach (var p in distinct[..distinctCount])
             {
                 var window = Hit.Beyond(rays[i], hits[i], geometry.Count, tieBreak);
                 tests++;
                 if (RayTable.Test(geometry, rays[i], p, window) is not { } row) continue;
                 hits[i] = new Hit(p, row.Depth, row.Distance, rays[i].At(row.Distance));
             }
-            if (hits[i] is not null) updated++;
-            agreed[i] = held.Length == layout.CoarserNeighbourSlots(i, levels) && held.Distinct().Count() == 1 && hits[i]?.Primitive == held[0];
-        }
-        return (tests, updated);
-    }
+            agreed[i] = count > 0 && count == layout.CoarserNeighbourSlots(i, levels) && allSame && hits[i]?.Primitive == hits[coarser[0]]?.Primitive;
+            return (tests, hits[i] is not null);
+        });
 
     /// <summary>
     /// Lattice-first tracing, shadow rays: every unoccluded ray of one lattice level is tested against
     /// its next-coarser lattice neighbours' occluders. It "agrees" when it has all its lattice neighbours and none is occluded.
     /// </summary>
     public static (long Tests, long Updated) FromLatticeOccluders(
-        SceneGeometry geometry, IReadOnlyList<Ray> rays, IEnumerable<int> level, int?[] occluders, PixelLayout layout, int levels, bool[] agreed)
-    {
-        long tests = 0, updated = 0;
-        foreach (var i in level)
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, int[] level, int?[] occluders, PixelLayout layout, int levels, bool[] agreed) =>
+        InParallel(level, i =>
         {
-            if (occluders[i] is not null) continue;
-            var held = layout.CoarserNeighbours(i, levels).Select(j => occluders[j]).ToArray();
-            foreach (var p in held.OfType<int>().Distinct())
+            if (occluders[i] is not null) return (0, false);
+            long tests = 0;
+            var updated = false;
+            Span<int> coarser = stackalloc int[PixelLayout.MostCoarserNeighbours];
+            Span<int> tried = stackalloc int[PixelLayout.MostCoarserNeighbours];
+            var (count, triedCount, noneOccluded) = (layout.CoarserNeighbours(i, levels, coarser), 0, true);
+            for (var n = 0; n < count; n++)
             {
+                if (occluders[coarser[n]] is not { } p) continue;
+                noneOccluded = false;
+                if (updated || tried[..triedCount].Contains(p)) continue;
+                tried[triedCount++] = p;
                 tests++;
                 if (RayTable.Test(geometry, rays[i], p, HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count)) is null) continue;
                 occluders[i] = p;
-                updated++;
-                break;
+                updated = true;
             }
-            agreed[i] = held.Length == layout.CoarserNeighbourSlots(i, levels) && held.All(o => o is null);
-        }
+            agreed[i] = count == layout.CoarserNeighbourSlots(i, levels) && noneOccluded;
+            return (tests, updated);
+        });
+
+    // Gathers every ray of a level on all cores: each ray writes only its own entries, and the counts are summed.
+    private static (long Tests, long Updated) InParallel(int[] level, Func<int, (long Tests, bool Updated)> gather)
+    {
+        long tests = 0, updated = 0;
+        if (level.Length == 0) return (0, 0);
+        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, level.Length, 4096), () => (0L, 0L), (range, _, sums) =>
+        {
+            for (var k = range.Item1; k < range.Item2; k++)
+            {
+                var (t, u) = gather(level[k]);
+                sums = (sums.Item1 + t, sums.Item2 + (u ? 1 : 0));
+            }
+            return sums;
+        }, sums =>
+        {
+            Interlocked.Add(ref tests, sums.Item1);
+            Interlocked.Add(ref updated, sums.Item2);
+        });
         return (tests, updated);
     }
 }

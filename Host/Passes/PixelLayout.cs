@@ -5,13 +5,18 @@ namespace QuantumRayTracing.Passes;
 /// channel (for shadow rays, which light and which surface point of the pixel), and its neighbours are
 /// the rays of the same channel at the 4 von Neumann neighbouring pixels.
 /// </summary>
+/// <remarks>
+/// The rays are indexed by pixel (each pixel's rays listed together, an offset per pixel): a lookup scans the few rays
+/// of one pixel, and the index takes a few bytes per ray and pixel rather than a hash entry per ray.
+/// </remarks>
 public sealed class PixelLayout
 {
     private readonly int _width;
     private readonly int _height;
     private readonly int[] _pixelOf;
     private readonly int[] _channelOf;
-    private readonly Dictionary<(int Pixel, int Channel), int> _rayAt = [];
+    private readonly int[] _firstOfPixel;
+    private readonly int[] _byPixel;
 
     public PixelLayout(int width, int height, IReadOnlyList<int> pixelOfRay, IReadOnlyList<int>? channelOfRay = null)
     {
@@ -19,8 +24,20 @@ public sealed class PixelLayout
         _height = height;
         _pixelOf = [.. pixelOfRay];
         _channelOf = channelOfRay is null ? new int[_pixelOf.Length] : [.. channelOfRay];
-        for (var i = 0; i < _pixelOf.Length; i++)
-            _rayAt[(_pixelOf[i], _channelOf[i])] = i;
+        _firstOfPixel = new int[width * height + 1];
+        foreach (var pixel in _pixelOf) _firstOfPixel[pixel + 1]++;
+        for (var pixel = 0; pixel < width * height; pixel++) _firstOfPixel[pixel + 1] += _firstOfPixel[pixel];
+        _byPixel = new int[_pixelOf.Length];
+        var next = _firstOfPixel[..^1];
+        for (var i = 0; i < _pixelOf.Length; i++) _byPixel[next[_pixelOf[i]]++] = i;
+    }
+
+    // The ray of channel `channel` at `pixel` (the last listed, should two share both), or −1.
+    private int RayAt(int pixel, int channel)
+    {
+        for (var k = _firstOfPixel[pixel + 1] - 1; k >= _firstOfPixel[pixel]; k--)
+            if (_channelOf[_byPixel[k]] == channel) return _byPixel[k];
+        return -1;
     }
 
     /// <summary>One ray per pixel, ray i at pixel i (the primary pass).</summary>
@@ -34,11 +51,12 @@ public sealed class PixelLayout
     /// </summary>
     public int LatticeLevel(int ray, int levels)
     {
-        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
-        var level = 0;
-        while (level < levels && x % (2 << level) == 0 && y % (2 << level) == 0) level++;
-        return level;
+        var (y, x) = Math.DivRem(_pixelOf[ray], _width);
+        return LevelAt(x, y, levels);
     }
+
+    // Both coordinates are multiples of 2^k exactly for k up to the trailing zeros they share (every k for the origin).
+    private static int LevelAt(int x, int y, int levels) => Math.Min(levels, System.Numerics.BitOperations.TrailingZeroCount(x | y));
 
     /// <summary>
     /// The rays of the same channel on the next coarser lattice around ray <paramref name="ray"/>: the
@@ -46,36 +64,56 @@ public sealed class PixelLayout
     /// </summary>
     public IEnumerable<int> CoarserNeighbours(int ray, int levels)
     {
-        var step = 1 << LatticeLevel(ray, levels);
-        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
+        Span<int> found = stackalloc int[MostCoarserNeighbours];
+        return found[..CoarserNeighbours(ray, levels, found)].ToArray();
+    }
+
+    /// <summary>At most this many coarser lattice neighbours: the corners of a lattice cell.</summary>
+    public const int MostCoarserNeighbours = 4;
+
+    /// <summary>
+    /// <see cref="CoarserNeighbours(int, int)"/> into <paramref name="into"/> (at least <see cref="MostCoarserNeighbours"/>
+    /// long), in the same order, without allocating: returns how many.
+    /// </summary>
+    public int CoarserNeighbours(int ray, int levels, Span<int> into)
+    {
+        var count = 0;
+        var (y, x) = Math.DivRem(_pixelOf[ray], _width);
+        var step = 1 << LevelAt(x, y, levels);
+        var coarse = 2 * step - 1; // a coordinate on the coarser lattice has no bit of this mask set (powers of two: no division)
         for (var dy = -step; dy <= step; dy += step)
             for (var dx = -step; dx <= step; dx += step)
             {
                 var (nx, ny) = (x + dx, y + dy);
-                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || nx % (2 * step) != 0 || ny % (2 * step) != 0) continue;
-                if (_rayAt.TryGetValue((ny * _width + nx, _channelOf[ray]), out var neighbour)) yield return neighbour;
+                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || (nx & coarse) != 0 || (ny & coarse) != 0) continue;
+                if (RayAt(ny * _width + nx, _channelOf[ray]) is var neighbour and >= 0) into[count++] = neighbour;
             }
+        return count;
     }
 
     /// <summary>
     /// How many coarser lattice neighbours ray <paramref name="ray"/> has away from the image's border:
-    /// 2 on a lattice edge's midpoint, 4 at a cell's centre. Fewer in <see cref="CoarserNeighbours"/>
+    /// 2 on a lattice edge's midpoint, 4 at a cell's centre. Fewer in <see cref="CoarserNeighbours(int, int)"/>
     /// means the border cut some off or their pixels have no ray of this channel.
     /// </summary>
     public int CoarserNeighbourSlots(int ray, int levels)
     {
-        var step = 1 << LatticeLevel(ray, levels);
-        var (x, y) = (_pixelOf[ray] % _width / step, _pixelOf[ray] / _width / step);
-        return (x % 2 == 1 ? 2 : 1) * (y % 2 == 1 ? 2 : 1);
+        var (y, x) = Math.DivRem(_pixelOf[ray], _width);
+        var step = 1 << LevelAt(x, y, levels);
+        return ((x & step) != 0 ? 2 : 1) * ((y & step) != 0 ? 2 : 1);
     }
 
     /// <summary>The rays of the same channel at the pixels left, right, above and below ray <paramref name="ray"/>'s.</summary>
-    public IEnumerable<int> Neighbours(int ray)
+    /// <remarks>Into <paramref name="into"/> (at least 4 long) without allocating: returns how many.</remarks>
+    public int Neighbours(int ray, Span<int> into)
     {
-        var (x, y) = (_pixelOf[ray] % _width, _pixelOf[ray] / _width);
-        if (x > 0 && _rayAt.TryGetValue((_pixelOf[ray] - 1, _channelOf[ray]), out var left)) yield return left;
-        if (x < _width - 1 && _rayAt.TryGetValue((_pixelOf[ray] + 1, _channelOf[ray]), out var right)) yield return right;
-        if (y > 0 && _rayAt.TryGetValue((_pixelOf[ray] - _width, _channelOf[ray]), out var up)) yield return up;
-        if (y < _height - 1 && _rayAt.TryGetValue((_pixelOf[ray] + _width, _channelOf[ray]), out var down)) yield return down;
+        var count = 0;
+        var (pixel, channel) = (_pixelOf[ray], _channelOf[ray]);
+        var (x, y) = (pixel % _width, pixel / _width);
+        if (x > 0 && RayAt(pixel - 1, channel) is var left and >= 0) into[count++] = left;
+        if (x < _width - 1 && RayAt(pixel + 1, channel) is var right and >= 0) into[count++] = right;
+        if (y > 0 && RayAt(pixel - _width, channel) is var up and >= 0) into[count++] = up;
+        if (y < _height - 1 && RayAt(pixel + _width, channel) is var down and >= 0) into[count++] = down;
+        return count;
     }
 }

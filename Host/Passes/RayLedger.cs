@@ -105,15 +105,24 @@ public sealed class RayLedger
     public void Freeze()
     {
         if (_frozen) return;
+        // One sweep over the rays: per stratum its open rays, those with trailing misses and their trailing W summed in ray order.
+        var (open, completed, trailing) = (new long[Strata], new long[Strata], new double[Strata]);
+        for (var i = 0; i < Rays; i++)
+        {
+            if (_path[i] == Unsearched || _done[i]) continue;
+            var stratum = Stratum(i);
+            open[stratum]++;
+            if (_trailing[i] >= 1) continue;
+            completed[stratum]++;
+            trailing[stratum] += _trailing[i];
+        }
         for (var stratum = 0; stratum < Strata; stratum++)
         {
-            var open = Enumerable.Range(0, Rays).Where(i => _path[i] != Unsearched && Stratum(i) == stratum && !_done[i]).ToArray();
-            var completed = open.Where(i => _trailing[i] < 1).ToArray();
-            var episodes = _found[stratum] + open.Length;
-            var w = completed.Length == 0 ? 0 : completed.Average(i => _trailing[i]);
+            var episodes = _found[stratum] + open[stratum];
+            var w = completed[stratum] == 0 ? 0 : trailing[stratum] / completed[stratum];
             // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a stratum whose searches found
             // nothing has not shown that its rays are right, only that few of them are wrong.
-            _prior[stratum] = open.Length == 0 ? 0 : Math.Min(PriorCap, (_found[stratum] + 0.5) / ((episodes + 1) * (1 - w)));
+            _prior[stratum] = open[stratum] == 0 ? 0 : Math.Min(PriorCap, (_found[stratum] + 0.5) / ((episodes + 1) * (1 - w)));
         }
         _frozen = true;
     }

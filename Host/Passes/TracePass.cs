@@ -55,11 +55,12 @@ public static class TracePass
             metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
             {
                 vouched = agreed;
-                var inLevel = levelRays.ToHashSet();
+                var inLevel = new bool[rays.Count];
+                foreach (var i in levelRays) inLevel[i] = true;
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
                 var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, settled: i => !inLevel.Contains(i), schedule: schedule, ledger: ledger, settle: settle);
+                    level == 0 ? gather : null, settled: i => !inLevel[i], schedule: schedule, ledger: ledger, settle: settle);
                 return (searched, tests, updated);
             });
         }

@@ -20,13 +20,16 @@ public static class CameraRays
         var halfHeight = Math.Tan(camera.VerticalFov * Math.PI / 360);
         var halfWidth = halfHeight * width / height;
         var rays = new Ray[width * height];
-        for (var y = 0; y < height; y++)
+        // Rows on all cores: each ray depends only on its pixel.
+        Parallel.For(0, height, y =>
+        {
             for (var x = 0; x < width; x++)
             {
                 var u = ((x + 0.5) / width * 2 - 1) * halfWidth;
                 var v = (1 - (y + 0.5) / height * 2) * halfHeight;
                 rays[y * width + x] = new Ray(camera.Position, forward + u * right + v * up);
             }
+        });
         return rays;
     }
 }

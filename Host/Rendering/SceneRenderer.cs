@@ -63,7 +63,7 @@ public static class SceneRenderer
         var (hits, metrics) = TracePass.Run("primary", plan.Search, plan.Geometry, cameraRays,
             plan.Trace(Enumerable.Range(0, cameraRays.Length).ToArray(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
-        var points = new List<SurfacePoint>();
+        var points = new List<SurfacePoint>(cameraRays.Length);
         var specular = new List<SpecularRayWorkItem>();
         for (var pixel = 0; pixel < cameraRays.Length; pixel++)
         {
@@ -114,15 +114,19 @@ public static class SceneRenderer
         var scene = plan.Scene;
         var pointLights = scene.Lights.Count;
         var lightCount = pointLights + scene.DirectionalLights.Count;
-        var queue = new List<ShadowRayWorkItem>();
-        for (var k = 0; k < points.Count; k++)
+        // The rays on all cores, each in its (point, light) slot; then queued in that order.
+        var slots = new Ray?[points.Count * lightCount];
+        Parallel.For(0, points.Count, k =>
+        {
             for (var l = 0; l < lightCount; l++)
-            {
-                var ray = l < pointLights
+                slots[k * lightCount + l] = l < pointLights
                     ? SecondaryRays.Shadow(points[k], scene.Lights[l])
                     : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-                if (ray is not null) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1), ray));
-            }
+        });
+        var queue = new List<ShadowRayWorkItem>(slots.Length);
+        for (var k = 0; k < points.Count; k++)
+            for (var l = 0; l < lightCount; l++)
+                if (slots[k * lightCount + l] is { } ray) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1), ray));
         var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, queue.Select(w => w.Ray).ToList(),
             plan.Shadow(queue.Select(w => w.Pixel).ToList(), queue.Select(w => w.Channel).ToList(), allowance: allowance), plan.Progress);
         passes.Add(metrics);

@@ -14,8 +14,7 @@ public sealed class ClassicalHitSearch : IHitSearch
         Parallel.For(0, queries.Count, k =>
         {
             var (table, window, _) = queries[k];
-            var all = Enumerable.Range(0, table.Count);
-            outcomes[k] = new HitOutcome(BestAccepted.Among(table, window, all), true,
+            outcomes[k] = new HitOutcome(table.BestAccepted(window), true,
                 new SearchCost(0, 0, table.Count, 0));
         });
         onRound?.Invoke(1, 0);

@@ -26,6 +26,12 @@ public sealed class MarkedSet
         _indices = sorted;
     }
 
+    // Indices already sorted, distinct and in range (a ray table's accepted rows): taken as they are.
+    private MarkedSet(int count, int[] sorted) => (Count, _indices) = (count, sorted);
+
+    /// <summary>A set from indices the caller guarantees ascending, distinct and in [0, <paramref name="count"/>): no copy, no check.</summary>
+    internal static MarkedSet FromAscending(int count, int[] ascending) => new(count, ascending);
+
     /// <summary>N, the number of indices searched.</summary>
     public int Count { get; }
 

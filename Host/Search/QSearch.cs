@@ -20,7 +20,7 @@ public sealed class QSearch
     private readonly SeededRandom _random;
     private int _stage; // 0: the initial sample; l ≥ 1: the run bounded by M_l
     private int _pendingIterations = -1;
-    private readonly Queue<int> _planned = new();
+    private Queue<int>? _planned; // only an engine that plans whole searches at once fills it
 
     private readonly OracleInput? _oracle;
 
@@ -53,7 +53,7 @@ public sealed class QSearch
     {
         if (IsDone) throw new InvalidOperationException("the search has ended");
         if (_pendingIterations < 0)
-            _pendingIterations = _planned.Count > 0 ? _planned.Dequeue() : DrawIterations(_stage);
+            _pendingIterations = _planned is { Count: > 0 } ? _planned.Dequeue() : DrawIterations(_stage);
         return new GroverRequest(Marked, _pendingIterations, _oracle);
     }
 
@@ -68,6 +68,7 @@ public sealed class QSearch
     {
         if (IsDone) throw new InvalidOperationException("the search has ended");
         var runs = new List<GroverRequest> { NextRequest() };
+        _planned ??= new Queue<int>();
         for (var stage = _stage + 1 + _planned.Count; stage <= _schedule.Bounds.Count; stage++)
             _planned.Enqueue(DrawIterations(stage));
         runs.AddRange(_planned.Select(r => new GroverRequest(Marked, r, _oracle)));

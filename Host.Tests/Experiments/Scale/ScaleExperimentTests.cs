@@ -24,5 +24,20 @@ public class ScaleExperimentTests
         var intPerRay = table.Header.ToList().IndexOf("Int/Ray");
         var perRay = table.Rows.Select(r => double.Parse(r[intPerRay], System.Globalization.CultureInfo.InvariantCulture)).ToArray();
         Assert.True(perRay[0] > 40 && perRay[1] < perRay[0] / 2, string.Join(", ", perRay));
+        // Both engines search only classically: each row has its tests per second.
+        var rate = table.Header.ToList().IndexOf("tests/s");
+        Assert.All(table.Rows, r => Assert.Matches(@"^\d+ M$", r[rate]));
+    }
+
+    /// <summary>Tests per second are #C_Int over the render's wall time, and only where every search is classical.</summary>
+    [Fact]
+    public void TestsPerSecondAreTheClassicalTestsOverTheRenderTime()
+    {
+        ScaleExperiment.Row Row(EngineKind engine, double? seconds) => new(engine, 2048, seconds, 1, 0, 61, null, null, null) { ClassicalTests = 850_000_000 };
+        Assert.Equal(170e6, Row(EngineKind.Classical, 5).TestsPerSecond!.Value, 1e-3);
+        Assert.Equal(85e6, Row(EngineKind.Bvh, 10).TestsPerSecond!.Value, 1e-3);
+        // The analytic engine's #C_Int are only its verifications, not its work; a refused render has no time.
+        Assert.Null(Row(EngineKind.Analytic, 5).TestsPerSecond);
+        Assert.Null(Row(EngineKind.Classical, null).TestsPerSecond);
     }
 }

@@ -20,6 +20,15 @@ public static partial class ScaleExperiment
     public sealed record Row(EngineKind Engine, int Size, double? RenderSeconds, double? ReferenceSeconds, long PeakBytes, double? PerRay, string? Forecast, string? ForecastTime, string? Refusal)
     {
         public long Pixels => (long)Size * Size;
+
+        /// <summary>The render's classical tests (#C_Int), for its tests per second of render wall time.</summary>
+        public long? ClassicalTests { get; init; }
+
+        /// <summary>
+        /// #C_Int per second of render wall time, on the engines whose every search is classical (brute force: ray–primitive
+        /// tests, the lattice's neighbour tests among them; the BVH: node and primitive tests); null on the others.
+        /// </summary>
+        public double? TestsPerSecond => Engine is EngineKind.Classical or EngineKind.Bvh && RenderSeconds is { } t && ClassicalTests is { } n ? n / t : null;
     }
 
     public static Report Run(ScaleSettings settings, Action<string> progress)
@@ -59,7 +68,10 @@ public static partial class ScaleExperiment
         }
         double Seconds(string field) => figures[field]!.GetValue<double>();
         return new Row(engine, size, Seconds("renderTime"), Seconds("referenceTime"), run.PeakBytes,
-            figures["total"]!["perRayConservative"]!.GetValue<double>(), forecast, forecastTime, null);
+            figures["total"]!["perRayConservative"]!.GetValue<double>(), forecast, forecastTime, null)
+        {
+            ClassicalTests = figures["total"]!["cost"]!["classicalTests"]!.GetValue<long>(),
+        };
     }
 
     [GeneratedRegex(@"forecast: peak memory about ([0-9.]+ [MG]B) .*?at most about ([0-9]+) s")]
@@ -78,17 +90,20 @@ public static partial class ScaleExperiment
             times as the render's JSON gives them; *peak memory* is the process's peak resident memory (Linux VmHWM, read every
             {RenderProcess.PollInterval.TotalMilliseconds:F0} ms), over both renders. From 1024x1024 pixels `render` forecasts the run first and refuses one whose
             forecast memory exceeds what the machine has available ([rendering.md](rendering.md#large-renders-forecast-memory-guard-and-progress)): such rows give the forecast and no times. The forecast time covers the render and its reference: compare it with their sum.
-            Int/Ray is conservative (docs/conventions.md; the BVH's counts node and primitive tests and its build).
+            Int/Ray is conservative (docs/conventions.md; the BVH's counts node and primitive tests and its build). *Tests/s* is the render's #C_Int
+            per second of its wall time (planning, every pass and shading included), on the engines whose every search is classical: brute force's
+            ray–primitive tests (the lattice's neighbour tests among them) and the BVH's node and primitive tests.
             """));
         if (load is { Before: { } before, After: { } after })
             report.Text(Invariant($"One-minute load average when the run started and ended: {before:F1} and {after:F1}, on {Environment.ProcessorCount} cores. Above the core count other work shared the machine, and the times are upper bounds; memory does not depend on it."));
-        var table = new TextTable("scale", ["engine", "size", "pixels", "render", "reference", "peak memory", "bytes per pixel", "forecast memory", "forecast time", "Int/Ray"]);
+        var table = new TextTable("scale", ["engine", "size", "pixels", "render", "reference", "peak memory", "bytes per pixel", "forecast memory", "forecast time", "Int/Ray", "tests/s"]);
         foreach (var r in rows)
             table.Row(r.Engine.Name, Invariant($"{r.Size}x{r.Size}"), Invariant($"{r.Pixels:N0}"),
                 r.RenderSeconds is { } t ? Invariant($"{t:F2} s") : "refused", r.ReferenceSeconds is { } rt ? Invariant($"{rt:F2} s") : "",
                 r.Refusal is null ? RenderForecast.Bytes(r.PeakBytes) : "", r.Refusal is null ? Invariant($"{r.PeakBytes / (double)r.Pixels:N0}") : "",
-                r.Forecast ?? "", r.ForecastTime ?? "", r.PerRay is { } p ? Invariant($"{p:F2}") : "");
-        report.Table(table.AlignRight(2, 3, 4, 5, 6, 7, 8, 9));
+                r.Forecast ?? "", r.ForecastTime ?? "", r.PerRay is { } p ? Invariant($"{p:F2}") : "",
+                r.TestsPerSecond is { } rate ? Invariant($"{rate / 1e6:F0} M") : "");
+        report.Table(table.AlignRight(2, 3, 4, 5, 6, 7, 8, 9, 10));
         if (rows.Any(r => r.Refusal is not null))
             report.Text(string.Join("\n", rows.Where(r => r.Refusal is not null).Select(r => Invariant($"- {r.Engine.Name} at {r.Size}x{r.Size}: `{r.Refusal}`"))));
 

@@ -52,10 +52,14 @@ public sealed class BvhHitSearch : IHitSearch
         int? best = null;
         var bestDepth = 0;
         long tests = 0;
-        var stack = new Stack<int>();
-        if (nodes.Count > 0) stack.Push(0);
-        while (stack.TryPop(out var index))
+        // Each node is pushed at most once, so a stack of the node count never overflows; kept per thread, not per ray.
+        if (_stack is null || _stack.Length < nodes.Count) _stack = new int[nodes.Count];
+        var stack = _stack;
+        var top = 0;
+        if (nodes.Count > 0) stack[top++] = 0;
+        while (top > 0)
         {
+            var index = stack[--top];
             var node = nodes[index];
             tests++;
             if (node.Bounds.Clip(origin, inverse, 0, ray.MaxDistance) is not var (enter, exit)) continue;
@@ -76,11 +80,13 @@ public sealed class BvhHitSearch : IHitSearch
             // Front to back: the child on the side the ray comes from is walked first (pushed last).
             var (first, second) = (index + 1, node.SecondChild);
             if (direction[node.Axis] < 0) (first, second) = (second, first);
-            stack.Push(second);
-            stack.Push(first);
+            stack[top++] = second;
+            stack[top++] = first;
         }
         return (best, tests);
     }
+
+    [ThreadStatic] private static int[]? _stack;
 
     /// <summary>None: every primitive the ray can hit is tested.</summary>
     public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) => 0;
