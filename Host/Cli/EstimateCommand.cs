@@ -14,23 +14,16 @@ public sealed class EstimateCommand : Command
 {
     internal readonly Argument<FileInfo?> Scene = CommonOptions.SceneFile();
 
-    internal readonly Option<string?> Pixel = new("--pixel")
-    {
-        Description = "The camera ray through pixel X,Y (0,0 is the top left) of the image. Default: the worst case (--worst-case).",
-        HelpName = "X,Y",
-    };
+    internal readonly Option<string?> Pixel = CommonOptions.Pixel("the worst case (--worst-case)");
 
     internal readonly Option<bool> WorstCase = new("--worst-case")
     {
         Description = "The camera ray whose search needs the widest oracle (most peak qubits; ties: most depth bits, then the first pixel in row-major order). The default.",
     };
 
-    internal readonly Option<string?> Size = CommonOptions.ImageSize("Image size the camera rays are cast for, WIDTHxHEIGHT or one number. Default: the scene's.");
+    internal readonly Option<string?> Size = CommonOptions.RaySize();
 
-    internal readonly Option<int?> Iterations = new("--iterations", "-r")
-    {
-        Description = "Grover iterations r of the QSearch run row. Default: ceil(sqrt N), the largest r QSearch draws.",
-    };
+    internal readonly Option<int?> Iterations = CommonOptions.Iterations("Grover iterations r of the QSearch run row. Default: ceil(sqrt N), the largest r QSearch draws.", 100_000);
 
     internal readonly Option<int> Subpixels = new Option<int>("--subpixels")
     {
@@ -38,7 +31,7 @@ public sealed class EstimateCommand : Command
         DefaultValueFactory = _ => 16,
     }.Between(1, 1024);
 
-    internal readonly Option<int> CounterBits = new Option<int>("--counter-bits") { Description = "QSS counter register bits.", DefaultValueFactory = _ => 4 }.Between(1, 10);
+    internal readonly Option<int?> CounterBits = CommonOptions.CounterBits("QSS counter register bits.", 10, fallback: 4, shortName: false);
 
     internal readonly Option<bool> Frame = new("--frame")
     {
@@ -72,20 +65,22 @@ public sealed class EstimateCommand : Command
         this.AddOptions(Frame, ErrorBudget, Qpus, Output, Cluster, Engine.Seed);
         Render.AddTo(this);
         QSearch.AddTo(this);
-        Pixel.Validators.Add(r =>
-        {
-            if (OptionText.ParsePixel(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--pixel: {error}");
-        });
-        Iterations.Validators.Add(r =>
-        {
-            if (r.TryGetValue<int?>(out var value) && value is < 0 or > 100_000) r.AddError("--iterations must be between 0 and 100000");
-        });
         Validators.Add(EnsurePixelNotSpecifiedWithWorstCase);
         Validators.Add(EnsureOneRayOptionsNotSpecifiedWithFrame);
         Validators.Add(EnsureFrameOptionsNotSpecifiedWithoutFrame);
         Subcommands.Add(new EstimateOracleSweepCommand());
         Subcommands.Add(new EstimateFrameSweepCommand());
         SetAction(parse => parse.GetValue(Frame) ? EstimateFrameAction.Run(this, parse) : EstimateRayAction.Run(this, parse));
+    }
+
+    /// <summary>The scene and image size asked for, once the JSON file (and what <paramref name="checkOutputs"/> checks) may be written.</summary>
+    internal (Scenes.Scene Scene, int Width, int Height) LoadScene(ParseResult parse, Action? checkOutputs = null)
+    {
+        Json.EnsureWritable(parse, parse.GetValue(Scene) is { } sceneFile ? [sceneFile.FullName] : []);
+        checkOutputs?.Invoke();
+        var scene = Scenes.Generation.DefaultScene.Load(parse.GetValue(Scene));
+        var (width, height) = OptionText.SizeOr(parse.GetValue(Size), scene);
+        return (scene, width, height);
     }
 
     /// <summary>The options that choose and shape one ray's circuits.</summary>

@@ -2,7 +2,6 @@ using System.CommandLine;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
-using Spectre.Console;
 
 namespace QuantumRayTracing.Cli;
 
@@ -59,11 +58,7 @@ public sealed class SearchCommand : Command
         {
             return; // a value that does not parse has its own error
         }
-        var outside = marked.Where(m => m < 0 || m >= n).ToArray();
-        if (outside.Length > 0)
-            r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
-        else if (marked.Distinct().Count() != marked.Length)
-            r.AddError("--marked: an index is listed twice");
+        if (SearchRunSettings.MarkedProblem(n, marked) is { } problem) r.AddError(problem);
     }
 
     private int Execute(ParseResult parse)
@@ -74,13 +69,7 @@ public sealed class SearchCommand : Command
             parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges);
         SearchRunView.PrintPlan(settings);
-        var run = AnsiConsole.Profile.Capabilities.Interactive
-            ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
-            {
-                var task = progress.AddTask($"{EngineFactory.Name(settings.Engine)}: searching", maxValue: settings.Searches);
-                return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
-            })
-            : SearchRun.Run(settings);
+        var run = SearchRunView.RunWithProgress(settings);
         SearchRunView.Print(settings, run);
         _json.Write(parse, run.Figures, _engine, run.RanOn);
         return ExitCodes.Success;

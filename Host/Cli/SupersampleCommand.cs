@@ -62,10 +62,7 @@ public sealed class SupersampleCommand : Command
         Description = "mlae and mlae-noise: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
     }.Between(0, 12);
 
-    private readonly Option<int?> _counterBits = new Option<int?>("--counter-bits", "-t")
-    {
-        Description = "qss: counter qubits t; a run costs 2^(t+1) - 1 queries. Default: ceil(log2 N) for bit planes (4 for 4x4), 7 for continuous values (255 queries).",
-    }.Between(1, 12);
+    private readonly Option<int?> _counterBits = CommonOptions.CounterBits("qss: counter qubits t; a run costs 2^(t+1) - 1 queries. Default: ceil(log2 N) for bit planes (4 for 4x4), 7 for continuous values (255 queries).", 12);
 
     private readonly Option<int?> _planes = new Option<int?>("--planes")
     {
