@@ -90,15 +90,9 @@ public static class CommonOptions
         new Option<int>(name) { Description = description, DefaultValueFactory = _ => fallback }.Between(1, MaxSquareSide);
 
     /// <summary>Several values, space-separated, each <paramref name="min"/>..<paramref name="max"/>.</summary>
-    public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "")
-    {
-        var option = new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true };
-        option.Validators.Add(r =>
-        {
-            if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(n => n < min || n > max)) r.AddError($"{name}: each {each} must be between {min} and {max}{why}");
-        });
-        return option;
-    }
+    public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "") =>
+        new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true }
+            .Must(values => (values ?? []).Any(n => n < min || n > max) ? $"{name}: each {each} must be between {min} and {max}{why}" : null);
 
     /// <summary>A pixel's subpixel values, space-separated: 1 to 64 values, each in [0, 1].</summary>
     public static Option<double[]> SubpixelValues(string description, bool required = false)

@@ -84,13 +84,7 @@ public sealed class EngineOptions
     }
 
     /// <summary>The noise model a parse result asks for (validated at parse time).</summary>
-    public NoiseModel GetNoise(ParseResult parse)
-    {
-        var loss = parse.GetValue(QubitLoss);
-        if (parse.GetValue(Noise) is not { } text) return loss == 0 ? NoiseModel.None : new NoiseModel(0, 0, 0, loss);
-        var (px, py, pz) = NoiseModel.ParsePauli(text, out var problem) ?? throw new UserError($"--noise: {problem}");
-        return new NoiseModel(px, py, pz, loss);
-    }
+    public NoiseModel GetNoise(ParseResult parse) => NoiseModel.Of(parse.GetValue(Noise), parse.GetValue(QubitLoss));
 
     /// <summary>
     /// The cluster's bridges when <c>--cluster</c> names a file and the engine runs Q#; null otherwise (the

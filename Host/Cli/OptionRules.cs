@@ -32,6 +32,18 @@ public static class OptionRules
         return option;
     }
 
+    /// <summary>A rule on several options together, skipped while one of them does not parse (that has its own error).</summary>
+    public static void AddRule(this Command command, Action<CommandResult> rule) => command.Validators.Add(result =>
+    {
+        try
+        {
+            rule(result);
+        }
+        catch (InvalidOperationException)
+        {
+        }
+    });
+
     /// <summary>A probability strictly between 0 and 1, the error naming the option.</summary>
     public static Option<T> StrictProbability<T>(this Option<T> option) => option.Must(value =>
         value is not double p || p > 0 && p < 1 ? null : $"{option.Name} must lie strictly between 0 and 1, got {p}");

@@ -42,23 +42,11 @@ public sealed class SearchCommand : Command
         _qsearch.AddTo(this);
         _engine.AddTo(this);
         _json.AddTo(this);
-        Validators.Add(EnsureMarkedIndicesAreDistinctAndBelowCount);
+        this.AddRule(r =>
+        {
+            if (SearchRunSettings.MarkedProblem(r.GetValue(_count), r.GetValue(_marked) ?? []) is { } problem) r.AddError(problem);
+        });
         SetAction(Execute);
-    }
-
-    private void EnsureMarkedIndicesAreDistinctAndBelowCount(CommandResult r)
-    {
-        int n;
-        int[] marked;
-        try
-        {
-            (n, marked) = (r.GetValue(_count), r.GetValue(_marked) ?? []);
-        }
-        catch (InvalidOperationException)
-        {
-            return; // a value that does not parse has its own error
-        }
-        if (SearchRunSettings.MarkedProblem(n, marked) is { } problem) r.AddError(problem);
     }
 
     private int Execute(ParseResult parse)
