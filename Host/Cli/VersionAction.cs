@@ -9,7 +9,7 @@ public sealed class VersionAction : SynchronousCommandLineAction
 {
     public override int Invoke(ParseResult parseResult)
     {
-        foreach (var line in ToolVersions.Detect().Lines) Console.WriteLine(line);
+        foreach (var line in ToolVersions.Detect().Lines()) Console.WriteLine(line);
         return 0;
     }
 }
