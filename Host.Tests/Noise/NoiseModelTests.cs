@@ -26,6 +26,17 @@ public sealed class NoiseModelTests : IDisposable
         Assert.Equal(0.03, NoiseModel.Depolarizing(0.03).PerGate, 12);
     }
 
+    [Fact]
+    public void TheNoiseOptionsMakeOneModel()
+    {
+        Assert.Same(NoiseModel.None, NoiseModel.Of(null, 0));
+        var lossOnly = NoiseModel.Of(null, 0.1);
+        Assert.Equal((0.0, 0.0, 0.0, 0.1), (lossOnly.Px, lossOnly.Py, lossOnly.Pz, lossOnly.QubitLoss));
+        var both = NoiseModel.Of("0.001,0,0.002", 0.2);
+        Assert.Equal((0.001, 0.0, 0.002, 0.2), (both.Px, both.Py, both.Pz, both.QubitLoss));
+        Assert.Throws<ArgumentException>(() => NoiseModel.Of("0.1,0.1", 0));
+    }
+
     [Theory]
     [InlineData("-0.1", "not a probability")]
     [InlineData("NaN", "not a probability")]

@@ -24,6 +24,15 @@ public sealed class SearchRunTests
         Assert.Equal(RunPlace.NoBridges, run.RanOn);
     }
 
+    [Theory]
+    [InlineData(new[] { 3, 17 }, null)]
+    [InlineData(new int[0], null)]
+    [InlineData(new[] { 2, 64, -1 }, "--marked: index 64 is outside 0..63")]
+    [InlineData(new[] { -1 }, "--marked: index -1 is outside 0..63")]
+    [InlineData(new[] { 5, 9, 5 }, "--marked: an index is listed twice")]
+    public void MarkedIndicesMustBeDistinctAndBelowN(int[] marked, string? problem) =>
+        Assert.Equal(problem, SearchRunSettings.MarkedProblem(64, marked));
+
     [Fact]
     public void NoMarkedIndexIsNeverFound()
     {

@@ -18,6 +18,10 @@ public sealed record ToolVersions(string Program, string? QsharpLang, string? No
         typeof(ToolVersions).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion
         ?? typeof(ToolVersions).Assembly.GetName().Version?.ToString() ?? "unknown";
 
+    /// <summary>What `qrt --version` prints, one version a line; a missing Node.js is said, not an error.</summary>
+    public IReadOnlyList<string> Lines() =>
+        [$"qrt {Program}", $"QDK: qsharp-lang {QsharpLang ?? "unknown (no Quantum/package.json found)"}", Node is { } node ? $"Node.js: {node}" : $"Node.js: not found: {NodeProblem}"];
+
     /// <summary>Asks Node.js for its version; the program and QDK versions are read from files.</summary>
     public static ToolVersions Detect(BridgeOptions? options = null)
     {

@@ -57,25 +57,32 @@ public static class CommonOptions
         new("--scenes") { Description = "Directory holding the scene files.", DefaultValueFactory = _ => new DirectoryInfo("Scenes") };
 
     /// <summary>A memory limit written 512M or 4G (<see cref="OptionText.ParseBytes"/>); left out, what the machine has available.</summary>
-    public static Option<string?> MaxMemory(string description)
-    {
-        var option = new Option<string?>("--max-memory") { Description = description, HelpName = "SIZE" };
-        option.Validators.Add(r =>
-        {
-            if (OptionText.ParseBytes(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--max-memory: {error}");
-        });
-        return option;
-    }
+    public static Option<string?> MaxMemory(string description) => new Option<string?>("--max-memory") { Description = description, HelpName = "SIZE" }
+        .Must(text => OptionText.ParseBytes(text).Error is { } error ? $"--max-memory: {error}" : null);
 
     /// <summary>An image size written WIDTHxHEIGHT or as one number for a square (<see cref="OptionText.ParseSize"/>); left out, the scene's.</summary>
-    public static Option<string?> ImageSize(string description)
+    public static Option<string?> ImageSize(string description) => new Option<string?>("--size") { Description = description, HelpName = "WxH" }
+        .Must(text => OptionText.ParseSize(text).Error is { } error ? $"--size: {error}" : null);
+
+    /// <summary>The image size camera rays are cast for (`estimate`, `export search`).</summary>
+    public static Option<string?> RaySize() => ImageSize("Image size the camera rays are cast for, WIDTHxHEIGHT or one number. Default: the scene's.");
+
+    /// <summary>The camera ray through one pixel, written X,Y (<see cref="OptionText.ParsePixel"/>); <paramref name="fallback"/> says what is used without it.</summary>
+    public static Option<string?> Pixel(string fallback, bool required = false) =>
+        new Option<string?>("--pixel") { Description = $"The camera ray through pixel X,Y (0,0 is the top left) of the image. Default: {fallback}.", HelpName = "X,Y", Required = required }
+            .Must(text => OptionText.ParsePixel(text).Error is { } error ? $"--pixel: {error}" : null);
+
+    /// <summary>Grover iterations r, 0..<paramref name="max"/>; left out, the command's own count.</summary>
+    public static Option<int?> Iterations(string description, int max) =>
+        new Option<int?>("--iterations", "-r") { Description = description }.Must(r => r is < 0 || r > max ? $"--iterations must be between 0 and {max}" : null);
+
+    /// <summary>QSS counter qubits, 1..<paramref name="max"/>: `estimate` prices them, `supersample` runs them, `export qss` writes them.</summary>
+    public static Option<int?> CounterBits(string description, int max, int? fallback = null, bool shortName = true, string? helpName = null)
     {
-        var option = new Option<string?>("--size") { Description = description, HelpName = "WxH" };
-        option.Validators.Add(r =>
-        {
-            if (OptionText.ParseSize(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--size: {error}");
-        });
-        return option;
+        Option<int?> option = shortName ? new("--counter-bits", "-t") : new("--counter-bits");
+        (option.Description, option.HelpName) = (description, helpName);
+        if (fallback is { } given) option.DefaultValueFactory = _ => given;
+        return option.Between(1, max);
     }
 
     /// <summary>The side of a square image, 1..<see cref="MaxSquareSide"/>.</summary>
@@ -83,28 +90,18 @@ public static class CommonOptions
         new Option<int>(name) { Description = description, DefaultValueFactory = _ => fallback }.Between(1, MaxSquareSide);
 
     /// <summary>Several values, space-separated, each <paramref name="min"/>..<paramref name="max"/>.</summary>
-    public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "")
-    {
-        var option = new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true };
-        option.Validators.Add(r =>
-        {
-            if (r.TryGetValue<int[]>(out var values) && (values ?? []).Any(n => n < min || n > max)) r.AddError($"{name}: each {each} must be between {min} and {max}{why}");
-        });
-        return option;
-    }
+    public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "") =>
+        new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true }
+            .Must(values => (values ?? []).Any(n => n < min || n > max) ? $"{name}: each {each} must be between {min} and {max}{why}" : null);
 
     /// <summary>A pixel's subpixel values, space-separated: 1 to 64 values, each in [0, 1].</summary>
     public static Option<double[]> SubpixelValues(string description, bool required = false)
-    {
-        var option = new Option<double[]>("--values") { Description = description, AllowMultipleArgumentsPerToken = true, HelpName = "F", Required = required };
-        option.Validators.Add(r =>
-        {
-            var given = r.GetValueOrDefault<double[]>() ?? [];
-            if (given.Length is 0 or > 64) r.AddError($"--values takes 1 to 64 values, got {given.Length}");
-            else if (given.Where(v => v is not (>= 0 and <= 1)).Take(1).ToArray() is [var bad]) r.AddError($"--values: {bad} is outside [0, 1]");
-        });
-        return option;
-    }
+        => new Option<double[]>("--values") { Description = description, AllowMultipleArgumentsPerToken = true, HelpName = "F", Required = required }
+            .Must(values => (values ?? []) switch
+            {
+                { Length: 0 or > 64 } given => $"--values takes 1 to 64 values, got {given.Length}",
+                var given => given.Where(v => v is not (>= 0 and <= 1)).Take(1).Select(bad => $"--values: {bad} is outside [0, 1]").FirstOrDefault(),
+            });
 
     /// <summary>Square image sides, space-separated.</summary>
     public static Option<int[]> SquareSizes(string description, int[] fallback, int max = MaxSquareSide) => List("--sizes", description, fallback, "size", 1, max);
@@ -121,15 +118,9 @@ public static class CommonOptions
         new Option<int>("--reference-samples") { Description = description, DefaultValueFactory = _ => RenderDefaults.ReferenceSamples }.Between(min, MaxSamples);
 
     /// <summary>The largest probability that a frame fails, shared by its Grover runs (<see cref="FrameBudget"/>).</summary>
-    public static Option<double> ErrorBudget(string description)
-    {
-        var option = new Option<double>("--error-budget") { Description = description, DefaultValueFactory = _ => FrameBudget.DefaultFrame };
-        option.Validators.Add(r =>
-        {
-            if (r.TryGetValue<double>(out var budget) && FrameBudget.Problem(budget) is { } problem) r.AddError($"--error-budget {problem}");
-        });
-        return option;
-    }
+    public static Option<double> ErrorBudget(string description) =>
+        new Option<double>("--error-budget") { Description = description, DefaultValueFactory = _ => FrameBudget.DefaultFrame }
+            .Must(budget => FrameBudget.Problem(budget) is { } problem ? $"--error-budget {problem}" : null);
 
     public static Option<int> Qpus(string description, int fallback) =>
         new Option<int>("--qpus") { Description = description, DefaultValueFactory = _ => fallback }.Between(1, 1_000_000);
@@ -143,15 +134,8 @@ public static class CommonOptions
         "Readout error of the device noise model, applied to each measured bit with the seeded generator: P for both flips, or P0,P1 with P0 = P(read 1 | 0) and P1 = P(read 0 | 1). Default: none.");
 
     // One part of the device model's text, validated where it is parsed: the problem (a full line naming the option) or null.
-    private static Option<string?> DeviceModelPart(string name, string helpName, Func<string, string?> problem, string description)
-    {
-        var option = new Option<string?>(name) { Description = description, HelpName = helpName };
-        option.Validators.Add(r =>
-        {
-            if (r.GetValueOrDefault<string?>() is { } text && problem(text) is { } error) r.AddError(error);
-        });
-        return option;
-    }
+    private static Option<string?> DeviceModelPart(string name, string helpName, Func<string, string?> problem, string description) =>
+        new Option<string?>(name) { Description = description, HelpName = helpName }.Must(text => text is null ? null : problem(text));
 
     /// <summary>The device model the two options ask for (validated at parse time), or null when neither is given.</summary>
     public static DeviceNoiseModel? GetDeviceNoise(ParseResult parse, Option<string?> gates, Option<string?> readout)

@@ -3,7 +3,6 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
@@ -38,66 +37,37 @@ public sealed class EngineOptions
         HelpName = "qubits",
     }.Between(1, 100_000);
 
-    public readonly Option<string?> Noise = new("--noise")
+    public readonly Option<string?> Noise = new Option<string?>("--noise")
     {
         Description = "Pauli noise after every gate, on each qubit it touches (the QDK's noisy simulator; the analytic engine's depolarizing model): P for P/3 each of X, Y and Z, or px,py,pz. Default 0: the ideal machine.",
         HelpName = "P|px,py,pz",
-    };
+    }.Must(text => text is not null && NoiseModel.ParsePauli(text, out var problem) is null ? $"--noise: {problem}" : null);
 
-    public readonly Option<string> NoiseOracleOption = new("--noise-oracle")
+    public readonly Option<string> NoiseOracleOption = new Option<string>("--noise-oracle")
     {
         Description = "Whose circuit the analytic engine's noise model counts: gate-level (default; the oracle a machine would run, which computes every intersection in gates: the circuit `qrt estimate` prices) or lookup (an oracle over intersection answers computed classically beforehand, which leaves out the cost and the noise of computing them).",
         HelpName = "gate-level|lookup",
         DefaultValueFactory = _ => NoiseOracle.GateLevel.Name(),
-    };
+    }.Must(text => NoiseOracles.Parse(text ?? "") is null ? $"--noise-oracle: '{text}' is neither gate-level nor lookup" : null);
 
-    public readonly Option<double> QubitLoss = new("--qubit-loss")
+    public readonly Option<double> QubitLoss = new Option<double>("--qubit-loss")
     {
         Description = "Probability that an operation loses a qubit it touches, in [0, 1); a lost qubit reads Zero. Fullstate engines only. Default 0.",
         HelpName = "L",
-    };
+    }.Must(loss => NoiseModel.LossProblem(loss) is { } problem ? $"--qubit-loss: {problem}" : null);
 
     public readonly Option<FileInfo?> Cluster = CommonOptions.LocalBridgesOrCluster();
 
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
-        _accepted = accepted;
         Engine = new Option<EngineKind>("--engine", "-e")
         {
             Description = "Where searches run: " + string.Join("; ", accepted.Select(k => Descriptions[k])) + ".",
             DefaultValueFactory = _ => fallback,
             HelpName = string.Join('|', accepted.Select(EngineFactory.Name)),
-        };
-        Engine.Choices();
-        Engine.Validators.Add(result =>
-        {
-            EngineKind kind;
-            try
-            {
-                kind = result.GetValueOrDefault<EngineKind>();
-            }
-            catch (InvalidOperationException)
-            {
-                return; // a name that did not parse has its own error
-            }
-            if (!_accepted.Contains(kind))
-                result.AddError($"--engine {EngineFactory.Name(kind)} is not available here; choose {string.Join(", ", _accepted.Select(EngineFactory.Name))}");
-        });
-        NoiseOracleOption.Validators.Add(result =>
-        {
-            if (result.TryGetValue<string>(out var text) && NoiseOracles.Parse(text ?? "") is null)
-                result.AddError($"--noise-oracle: '{text}' is neither gate-level nor lookup");
-        });
-        Noise.Validators.Add(result =>
-        {
-            if (result.TryGetValue<string?>(out var text) && text is not null && NoiseModel.ParsePauli(text, out var problem) is null)
-                result.AddError($"--noise: {problem}");
-        });
-        QubitLoss.Validators.Add(result =>
-        {
-            if (result.TryGetValue<double>(out var loss) && NoiseModel.LossProblem(loss) is { } problem)
-                result.AddError($"--qubit-loss: {problem}");
-        });
+        }.Choices().Must(kind => accepted.Contains(kind) ? null
+            : $"--engine {EngineFactory.Name(kind)} is not available here; choose {string.Join(", ", accepted.Select(EngineFactory.Name))}");
+        _accepted = accepted;
     }
 
     /// <summary>
@@ -114,13 +84,7 @@ public sealed class EngineOptions
     }
 
     /// <summary>The noise model a parse result asks for (validated at parse time).</summary>
-    public NoiseModel GetNoise(ParseResult parse)
-    {
-        var loss = parse.GetValue(QubitLoss);
-        if (parse.GetValue(Noise) is not { } text) return loss == 0 ? NoiseModel.None : new NoiseModel(0, 0, 0, loss);
-        var (px, py, pz) = NoiseModel.ParsePauli(text, out var problem) ?? throw new UserError($"--noise: {problem}");
-        return new NoiseModel(px, py, pz, loss);
-    }
+    public NoiseModel GetNoise(ParseResult parse) => NoiseModel.Of(parse.GetValue(Noise), parse.GetValue(QubitLoss));
 
     /// <summary>
     /// The cluster's bridges when <c>--cluster</c> names a file and the engine runs Q#; null otherwise (the
@@ -134,16 +98,7 @@ public sealed class EngineOptions
     public void AddTo(Command command)
     {
         command.AddOptions(Engine, Seed, Workers);
-        if (_accepted.Any(k => k.RunsQSharp)) command.Options.Add(MaxQubits);
-        if (_accepted.Any(k => k.RunsQSharp)) command.Options.Add(Cluster);
-        if (_accepted.Any(k => k.SearchesWithGrover))
-        {
-            command.AddOptions(Noise, QubitLoss);
-        }
+        if (_accepted.Any(k => k.RunsQSharp)) command.AddOptions(MaxQubits, Cluster);
+        if (_accepted.Any(k => k.SearchesWithGrover)) command.AddOptions(Noise, QubitLoss);
     }
-
-    /// <summary>The Grover engine a parse result asks for; its randomness is the seed's engine stream.</summary>
-    /// <remarks>A Q# engine runs on <paramref name="pool"/> (<see cref="StartBridges"/>) when given, without stopping it.</remarks>
-    public IGroverEngine Create(ParseResult parse, BridgePool? pool = null) =>
-        EngineFactory.Create(parse.GetValue(Engine), new SeededRandom(parse.GetValue(Seed)), parse.GetValue(Workers), parse.GetValue(MaxQubits), pool, GetNoise(parse));
 }

@@ -2,114 +2,132 @@ using System.CommandLine;
 using QuantumRayTracing.Experiments;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Estimates;
+using QuantumRayTracing.Output;
+using Spectre.Console;
 
 namespace QuantumRayTracing.Cli;
 
 /// <summary>
-/// `estimate`: what the gate-level circuits for one ray would cost (<see cref="EstimateRayAction"/>), or with
-/// <c>--frame</c> every Grover run of a whole frame (<see cref="EstimateFrameAction"/>). The options of one are
-/// refused with the other.
+/// `estimate`: what the gate-level circuits for one ray would cost (options → <see cref="RayEstimateSettings"/> →
+/// <see cref="RayEstimateRun"/>), or with <c>--frame</c> every Grover run of a whole frame per pass (options →
+/// <see cref="FrameSettings"/> → <see cref="FrameEstimateRun"/>). The options of one are refused with the other.
 /// </summary>
 public sealed class EstimateCommand : Command
 {
-    internal readonly Argument<FileInfo?> Scene = CommonOptions.SceneFile();
+    private const string FrameCommandLine = "qrt estimate --frame";
 
-    internal readonly Option<string?> Pixel = new("--pixel")
-    {
-        Description = "The camera ray through pixel X,Y (0,0 is the top left) of the image. Default: the worst case (--worst-case).",
-        HelpName = "X,Y",
-    };
+    private readonly Argument<FileInfo?> _scene = CommonOptions.SceneFile();
 
-    internal readonly Option<bool> WorstCase = new("--worst-case")
+    private readonly Option<string?> _pixel = CommonOptions.Pixel("the worst case (--worst-case)");
+
+    private readonly Option<bool> _worstCase = new("--worst-case")
     {
         Description = "The camera ray whose search needs the widest oracle (most peak qubits; ties: most depth bits, then the first pixel in row-major order). The default.",
     };
 
-    internal readonly Option<string?> Size = CommonOptions.ImageSize("Image size the camera rays are cast for, WIDTHxHEIGHT or one number. Default: the scene's.");
+    private readonly Option<string?> _size = CommonOptions.RaySize();
 
-    internal readonly Option<int?> Iterations = new("--iterations", "-r")
-    {
-        Description = "Grover iterations r of the QSearch run row. Default: ceil(sqrt N), the largest r QSearch draws.",
-    };
+    private readonly Option<int?> _iterations = CommonOptions.Iterations("Grover iterations r of the QSearch run row. Default: ceil(sqrt N), the largest r QSearch draws.", 100_000);
 
-    internal readonly Option<int> Subpixels = new Option<int>("--subpixels")
+    private readonly Option<int> _subpixels = new Option<int>("--subpixels")
     {
         Description = "Subpixels of the QSS readout and QCoin step rows (4x4 = 16 in the thesis).",
         DefaultValueFactory = _ => 16,
     }.Between(1, 1024);
 
-    internal readonly Option<int> CounterBits = new Option<int>("--counter-bits") { Description = "QSS counter register bits.", DefaultValueFactory = _ => 4 }.Between(1, 10);
+    private readonly Option<int?> _counterBits = CommonOptions.CounterBits("QSS counter register bits.", 10, fallback: 4, shortName: false);
 
-    internal readonly Option<bool> Frame = new("--frame")
+    private readonly Option<bool> _frame = new("--frame")
     {
         Description = "Price a whole frame instead of one ray: render it with the analytic engine (the same scene, --size, render options and --seed as `render`), record every Grover run, and sum the runs' estimates per pass on every model, beside the classical render's time.",
     };
 
-    internal readonly Option<double> ErrorBudget = CommonOptions.ErrorBudget("With --frame: the largest probability that the whole frame fails, shared equally by its Grover runs (union bound).");
+    private readonly Option<double> _errorBudget = CommonOptions.ErrorBudget("With --frame: the largest probability that the whole frame fails, shared equally by its Grover runs (union bound).");
 
-    internal readonly Option<int> Qpus = CommonOptions.Qpus("With --frame: quantum processors running each batch of independent runs in parallel (the runtime is also given on one).", 1);
+    private readonly Option<int> _qpus = CommonOptions.Qpus("With --frame: quantum processors running each batch of independent runs in parallel (the runtime is also given on one).", 1);
 
-    internal readonly Option<FileInfo?> Output = CommonOptions.ReportOutput("With --frame: also write the table here, as Markdown, or CSV with --format csv. It replaces only a file this command wrote. Default: the table is printed only.");
+    private readonly Option<FileInfo?> _output = CommonOptions.ReportOutput("With --frame: also write the table here, as Markdown, or CSV with --format csv. It replaces only a file this command wrote. Default: the table is printed only.");
 
-    internal readonly Option<FileInfo?> Cluster = CommonOptions.Cluster("With --frame: run the pricing's Resource Estimator jobs on the workers of this cluster file (docs/cluster.md) instead of --workers local bridges. The frame's searches run on the analytic engine on this machine either way. Default: none, local bridges.");
+    private readonly Option<FileInfo?> _cluster = CommonOptions.Cluster("With --frame: run the pricing's Resource Estimator jobs on the workers of this cluster file (docs/cluster.md) instead of --workers local bridges. The frame's searches run on the analytic engine on this machine either way. Default: none, local bridges.");
 
-    internal readonly RenderOptionSet Render = new();
+    private readonly RenderOptionSet _render = new();
 
-    internal readonly QSearchOptionSet QSearch = new();
+    private readonly QSearchOptionSet _qsearch = new();
 
-    internal readonly EngineOptions Engine = new(EngineKind.Analytic, EngineKind.Analytic);
+    private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic);
 
-    internal readonly EstimateOptions Estimator = new();
+    private readonly EstimateOptions _estimator = new();
 
-    internal readonly JsonOption Json = new();
+    private readonly JsonOption _json = new();
 
     public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model. With --frame: what every Grover run of a whole frame costs, per pass.")
     {
-        Arguments.Add(Scene);
-        this.AddOptions(Pixel, WorstCase, Size, Iterations, Subpixels, CounterBits);
-        Estimator.AddTo(this);
-        Json.AddTo(this);
-        this.AddOptions(Frame, ErrorBudget, Qpus, Output, Cluster, Engine.Seed);
-        Render.AddTo(this);
-        QSearch.AddTo(this);
-        Pixel.Validators.Add(r =>
-        {
-            if (OptionText.ParsePixel(r.GetValueOrDefault<string?>()) is { Error: { } error }) r.AddError($"--pixel: {error}");
-        });
-        Iterations.Validators.Add(r =>
-        {
-            if (r.TryGetValue<int?>(out var value) && value is < 0 or > 100_000) r.AddError("--iterations must be between 0 and 100000");
-        });
+        Arguments.Add(_scene);
+        this.AddOptions(_pixel, _worstCase, _size, _iterations, _subpixels, _counterBits);
+        _estimator.AddTo(this);
+        _json.AddTo(this);
+        this.AddOptions(_frame, _errorBudget, _qpus, _output, _cluster, _engine.Seed);
+        _render.AddTo(this);
+        _qsearch.AddTo(this);
         Validators.Add(EnsurePixelNotSpecifiedWithWorstCase);
-        Validators.Add(EnsureOneRayOptionsNotSpecifiedWithFrame);
-        Validators.Add(EnsureFrameOptionsNotSpecifiedWithoutFrame);
+        Validators.Add(EnsureOptionsFitOneRayOrFrame);
         Subcommands.Add(new EstimateOracleSweepCommand());
         Subcommands.Add(new EstimateFrameSweepCommand());
-        SetAction(parse => parse.GetValue(Frame) ? EstimateFrameAction.Run(this, parse) : EstimateRayAction.Run(this, parse));
+        SetAction(parse => parse.GetValue(_frame) ? EstimateFrame(parse) : EstimateRay(parse));
+    }
+
+    private int EstimateRay(ParseResult parse)
+    {
+        var (scene, width, height) = LoadScene(parse);
+        var pixel = parse.GetValue(_pixel) is { } text ? OptionText.PixelIn(text, width, height) : ((int, int)?)null;
+        var (table, estimates) = RayEstimateRun.Run(new RayEstimateSettings(scene, width, height, pixel, parse.GetValue(_iterations), parse.GetValue(_subpixels),
+            parse.GetValue(_counterBits)!.Value, _estimator.Construction(parse), _estimator.QubitModels(parse), !parse.GetValue(_estimator.NoCircuit), parse.GetValue(_estimator.Workers)));
+        table.Write(parse.GetValue(_estimator.Format));
+        _json.Write(parse, EstimateFigures.Of(table, estimates));
+        return ExitCodes.Success;
+    }
+
+    private int EstimateFrame(ParseResult parse)
+    {
+        var (format, output) = (parse.GetValue(_estimator.Format), parse.GetValue(_output));
+        var report = new GeneratedReport(output?.FullName, format == ReportFormat.Csv ? $"# generated by `{FrameCommandLine}`" : GeneratedReport.MarkdownMarker(FrameCommandLine));
+        var (scene, width, height) = LoadScene(parse, report.EnsureWritable);
+        var settings = new FrameSettings(scene, _render.Get(parse, width, height, parse.GetValue(_engine.Seed)), _qsearch.Get(parse),
+            _estimator.Construction(parse), _estimator.QubitModels(parse), parse.GetValue(_errorBudget), parse.GetValue(_qpus));
+        var run = FrameEstimateRun.Run(settings, parse.GetValue(_cluster)?.FullName, parse.GetValue(_estimator.Workers));
+        run.Table.Write(format);
+        report.Write(format == ReportFormat.Csv ? run.Table.ToCsv() : run.Table.ToMarkdown());
+        if (output is not null) AnsiConsole.WriteLine($"wrote {output.FullName}");
+        _json.Write(parse, new { run.Frame.Cost, ClassicalSeconds = run.Frame.WallTimes.Classical.TotalSeconds }, _engine, run.PricedOn);
+        return ExitCodes.Success;
+    }
+
+    /// <summary>The scene and image size asked for, once the JSON file (and what <paramref name="checkOutputs"/> checks) may be written.</summary>
+    private (Scenes.Scene Scene, int Width, int Height) LoadScene(ParseResult parse, Action? checkOutputs = null)
+    {
+        _json.EnsureWritable(parse, parse.GetValue(_scene) is { } sceneFile ? [sceneFile.FullName] : []);
+        checkOutputs?.Invoke();
+        var scene = Scenes.Generation.DefaultScene.Load(parse.GetValue(_scene));
+        var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
+        return (scene, width, height);
     }
 
     /// <summary>The options that choose and shape one ray's circuits.</summary>
-    private IEnumerable<Option> OneRayOptions => [Pixel, WorstCase, Iterations, Subpixels, CounterBits, Estimator.NoCircuit];
+    private IEnumerable<Option> OneRayOptions => [_pixel, _worstCase, _iterations, _subpixels, _counterBits, _estimator.NoCircuit];
 
     /// <summary>The options of a frame's pricing: its budget and machine, where it runs, and the render it records.</summary>
-    private IEnumerable<Option> FrameOptions => new Option[] { ErrorBudget, Qpus, Output, Cluster, Engine.Seed, QSearch.Growth, QSearch.Rule }.Concat(Render.All);
+    private IEnumerable<Option> FrameOptions => new Option[] { _errorBudget, _qpus, _output, _cluster, _engine.Seed, _qsearch.Growth, _qsearch.Rule }.Concat(_render.All);
 
     private void EnsurePixelNotSpecifiedWithWorstCase(CommandResult r)
     {
-        if (r.GetResult(Pixel) is not null && r.GetValue(WorstCase)) r.AddError("--pixel and --worst-case choose the ray two ways; give one");
+        if (r.GetResult(_pixel) is not null && r.GetValue(_worstCase)) r.AddError("--pixel and --worst-case choose the ray two ways; give one");
     }
 
-    private void EnsureOneRayOptionsNotSpecifiedWithFrame(CommandResult r)
+    private void EnsureOptionsFitOneRayOrFrame(CommandResult r)
     {
-        if (!r.GetValue(Frame)) return;
-        foreach (var option in OneRayOptions.Where(o => r.GetResult(o) is { Implicit: false }))
-            r.AddError($"{option.Name} applies to one ray's estimates; --frame prices every run of a frame");
-    }
-
-    private void EnsureFrameOptionsNotSpecifiedWithoutFrame(CommandResult r)
-    {
-        if (r.GetValue(Frame)) return;
-        foreach (var option in FrameOptions.Where(o => r.GetResult(o) is { Implicit: false }))
-            r.AddError($"{option.Name} needs --frame");
+        var frame = r.GetValue(_frame);
+        foreach (var option in (frame ? OneRayOptions : FrameOptions).Where(o => r.GetResult(o) is { Implicit: false }))
+            r.AddError(frame ? $"{option.Name} applies to one ray's estimates; --frame prices every run of a frame" : $"{option.Name} needs --frame");
     }
 }

@@ -1,5 +1,4 @@
 using System.CommandLine;
-using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Output;
@@ -9,12 +8,12 @@ namespace QuantumRayTracing.Cli;
 /// <summary>The options `estimate` and `estimate oracle-sweep` share: oracle construction, qubit models, circuit extraction, workers, format.</summary>
 public sealed class EstimateOptions
 {
-    public readonly Option<string> Oracle = new("--oracle")
+    public readonly Option<string> Oracle = new Option<string>("--oracle")
     {
         Description = "How the oracle is built: baseline (x, y and z tested, minimum then maximum in one register), compact (only the two in-plane axes, both bounds at once; the default), narrow (compact, unloading by lookup instead of measurement: more Toffolis, fewer auxiliary qubits) or device (no bound or valid qubit: each primitive's bounds compared as constants under index control; the fewest qubits, more gates as N grows).",
         DefaultValueFactory = _ => OracleConstruction.Default.Name,
         HelpName = string.Join('|', OracleConstruction.Named.Select(c => c.Name)),
-    };
+    }.Must(name => OracleConstruction.Named.All(c => c.Name != name) ? $"--oracle: unknown construction '{name}'; choose {string.Join(", ", OracleConstruction.Named.Select(c => c.Name))}" : null);
 
     public readonly Option<string[]> Models = new("--models")
     {
@@ -37,14 +36,7 @@ public sealed class EstimateOptions
 
     public readonly Option<int> Workers = CommonOptions.Workers("Node bridge processes estimating circuits in parallel. Default: the core count.");
 
-    public EstimateOptions()
-    {
-        Oracle.Validators.Add(r =>
-        {
-            var name = r.GetValueOrDefault<string>();
-            if (OracleConstruction.Named.All(c => c.Name != name))
-                r.AddError($"--oracle: unknown construction '{name}'; choose {string.Join(", ", OracleConstruction.Named.Select(c => c.Name))}");
-        });
+    public EstimateOptions() =>
         Models.Validators.Add(r =>
         {
             var texts = r.GetValueOrDefault<string[]>() ?? [];
@@ -52,7 +44,6 @@ public sealed class EstimateOptions
             foreach (var text in texts)
                 if (QubitModel.Parse(text) is { Error: { } error }) r.AddError($"--models: {error}");
         });
-    }
 
     public void AddTo(Command command, bool withFormat = true)
     {
@@ -64,11 +55,4 @@ public sealed class EstimateOptions
     public OracleConstruction Construction(ParseResult parse) => OracleConstruction.Named.Single(c => c.Name == parse.GetValue(Oracle));
 
     public IReadOnlyList<QubitModel> QubitModels(ParseResult parse) => parse.GetValue(Models)!.Select(t => QubitModel.Parse(t).Model!).ToArray();
-
-    /// <summary>An estimator on a new pool of bridges, which the caller disposes.</summary>
-    public ResourceEstimator Create(ParseResult parse, out BridgePool pool)
-    {
-        pool = new BridgePool(parse.GetValue(Workers));
-        return new ResourceEstimator(pool, QubitModels(parse), withCircuits: !parse.GetValue(NoCircuit));
-    }
 }

@@ -26,15 +26,8 @@ public sealed class ExportCoinCommand : Command
     public ExportCoinCommand() : base("coin", "One coin flip of QCoin up to its measurement: the direct coin (--mean F) or the mean coin over subpixel values (--values), after k Grover operators; the coin register measured.")
     {
         this.AddOptions(_mean, _values, _iterations);
-        _output.AddTo(this);
+        _output.AddTo(this, parse => parse.GetValue(_mean) is { } mean ? CoinExport.Direct(mean, parse.GetValue(_iterations)) : CoinExport.Mean(parse.GetValue(_values)!, parse.GetValue(_iterations)));
         Validators.Add(EnsureOneCoinIsGiven);
-        SetAction(parse =>
-        {
-            var k = parse.GetValue(_iterations);
-            var subject = parse.GetValue(_mean) is { } mean ? CoinExport.Direct(mean, k) : CoinExport.Mean(parse.GetValue(_values)!, k);
-            ExportRun.Run(_output.Settings(parse, subject), Console.Out);
-            return ExitCodes.Success;
-        });
     }
 
     private void EnsureOneCoinIsGiven(CommandResult r)

@@ -10,11 +10,6 @@ public sealed class ExportDeviceExperimentCommand : Command
 
     public ExportDeviceExperimentCommand() : base("device-experiment", "The ray tracing paper's sec. 8 device experiment (its fig. 15): 4 primitives, the ray that meets one, one Grover iteration, with the narrow oracle.")
     {
-        _output.AddTo(this);
-        SetAction(parse =>
-        {
-            ExportRun.Run(_output.Settings(parse, DeviceExperimentExport.Subject()), Console.Out);
-            return ExitCodes.Success;
-        });
+        _output.AddTo(this, _ => DeviceExperimentExport.Subject());
     }
 }

@@ -17,8 +17,14 @@ public sealed class ExportOutputOptions
 
     public readonly Option<bool> Force = new("--force") { Description = "Replace the -o file if it exists." };
 
-    public void AddTo(Command command) => command.AddOptions(Format, Output, Force);
-
-    public ExportSettings Settings(ParseResult parse, ExportSubject subject) =>
-        new(subject, parse.GetValue(Format), parse.GetValue(Output)?.ToString(), parse.GetValue(Force));
+    /// <summary>Adds the options and the action: the subject <paramref name="subject"/> reads from the options, written as asked.</summary>
+    public void AddTo(Command command, Func<ParseResult, ExportSubject> subject)
+    {
+        command.AddOptions(Format, Output, Force);
+        command.SetAction(parse =>
+        {
+            ExportRun.Run(new ExportSettings(subject(parse), parse.GetValue(Format), parse.GetValue(Output)?.ToString(), parse.GetValue(Force)), Console.Out);
+            return ExitCodes.Success;
+        });
+    }
 }

@@ -8,23 +8,14 @@ public sealed class ExportQssCommand : Command
 {
     private readonly Option<double[]> _values = CommonOptions.SubpixelValues("The subpixel values QSS averages, each in [0, 1], space-separated (1 to 64 values). Default: none, it is required.", required: true);
 
-    private readonly Option<int> _counterBits = new Option<int>("--counter-bits", "-t")
-    {
-        Description = $"Counter qubits T (1 to {QssExport.MaxCounterBits}): 2^T - 1 controlled Grover operators; a run costs 2^(T+1) - 1 queries (15 at T = 3).",
-        DefaultValueFactory = _ => QssExport.DefaultCounterBits,
-        HelpName = "T",
-    }.Between(1, QssExport.MaxCounterBits);
+    private readonly Option<int?> _counterBits = CommonOptions.CounterBits($"Counter qubits T (1 to {QssExport.MaxCounterBits}): 2^T - 1 controlled Grover operators; a run costs 2^(T+1) - 1 queries (15 at T = 3).",
+        QssExport.MaxCounterBits, QssExport.DefaultCounterBits, helpName: "T");
 
     private readonly ExportOutputOptions _output = new();
 
     public ExportQssCommand() : base("qss", "One run of quantum supersampling: the counter in uniform superposition, the mean coin over the subpixel values, counter qubit j controlling 2^j Grover operators, the inverse QFT; the counter register measured (the coin register is not).")
     {
         this.AddOptions(_values, _counterBits);
-        _output.AddTo(this);
-        SetAction(parse =>
-        {
-            ExportRun.Run(_output.Settings(parse, QssExport.Subject(parse.GetValue(_values)!, parse.GetValue(_counterBits))), Console.Out);
-            return ExitCodes.Success;
-        });
+        _output.AddTo(this, parse => QssExport.Subject(parse.GetValue(_values)!, parse.GetValue(_counterBits)!.Value));
     }
 }

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
+using System.Globalization;
 using System.Runtime.Serialization;
 
 namespace QuantumRayTracing.Cli;
@@ -9,24 +10,43 @@ public static class OptionRules
 {
     public static Option<int> AtLeast(this Option<int> option, int min) => option.Between(min, int.MaxValue);
 
-    public static Option<int> Between(this Option<int> option, int min, int max)
+    /// <summary>An integer option's range (an option that may be left out is checked when given).</summary>
+    public static Option<T> Between<T>(this Option<T> option, long min, long max) => option.Must(value =>
+        value is null ? null : Convert.ToInt64(value, CultureInfo.InvariantCulture) switch
+        {
+            var v when v < min => $"{option.Name} must be at least {min}, got {v}",
+            var v when v > max => $"{option.Name} must be at most {max}, got {v}",
+            _ => null,
+        });
+
+    /// <summary>
+    /// A named rule: <paramref name="problem"/> gives the whole one-line error for a parsed value, or null when it is
+    /// fine. A value that does not parse is left to the parser's own error.
+    /// </summary>
+    public static Option<T> Must<T>(this Option<T> option, Func<T, string?> problem)
     {
         option.Validators.Add(result =>
         {
-            if (result.TryGetValue<int>(out var value)) Check(result, option.Name, value, min, max);
+            if (result.TryGetValue<T>(out var value) && problem(value!) is { } error) result.AddError(error);
         });
         return option;
     }
 
-    /// <summary>The same rule for an option that may be left out (null: the command picks a default).</summary>
-    public static Option<int?> Between(this Option<int?> option, int min, int max)
+    /// <summary>A rule on several options together, skipped while one of them does not parse (that has its own error).</summary>
+    public static void AddRule(this Command command, Action<CommandResult> rule) => command.Validators.Add(result =>
     {
-        option.Validators.Add(result =>
+        try
         {
-            if (result.TryGetValue<int?>(out var value) && value is { } given) Check(result, option.Name, given, min, max);
-        });
-        return option;
-    }
+            rule(result);
+        }
+        catch (InvalidOperationException)
+        {
+        }
+    });
+
+    /// <summary>A probability strictly between 0 and 1, the error naming the option.</summary>
+    public static Option<T> StrictProbability<T>(this Option<T> option) => option.Must(value =>
+        value is not double p || p > 0 && p < 1 ? null : $"{option.Name} must lie strictly between 0 and 1, got {p}");
 
     /// <summary>
     /// The option's value for a validator, or false when its text does not convert: the parser reports
@@ -44,15 +64,6 @@ public static class OptionRules
             value = default;
             return false;
         }
-    }
-
-    public static Option<long?> Between(this Option<long?> option, long min, long max)
-    {
-        option.Validators.Add(result =>
-        {
-            if (result.TryGetValue<long?>(out var value) && value is { } given) Check(result, option.Name, given, min, max);
-        });
-        return option;
     }
 
     /// <summary>Parses an enum option from its names in any case, with a one-line error listing them (the parser's own lists them one per line).</summary>
@@ -84,11 +95,5 @@ public static class OptionRules
         var name = value.ToString();
         var member = typeof(T).GetField(name)?.GetCustomAttributes(typeof(EnumMemberAttribute), false).OfType<EnumMemberAttribute>().FirstOrDefault();
         return member?.Value ?? name.ToLowerInvariant();
-    }
-
-    private static void Check(System.CommandLine.Parsing.OptionResult result, string name, long value, long min, long max)
-    {
-        if (value < min) result.AddError($"{name} must be at least {min}, got {value}");
-        else if (value > max) result.AddError($"{name} must be at most {max}, got {value}");
     }
 }

@@ -48,6 +48,13 @@ public static class OptionText
         return ((x, y), null);
     }
 
+    /// <summary>The pixel <paramref name="text"/> names (validated at parse time), refused when outside a width x height image.</summary>
+    public static (int X, int Y) PixelIn(string text, int width, int height)
+    {
+        var (x, y) = ParsePixel(text).Pixel!.Value;
+        return x < width && y < height ? (x, y) : throw new Output.UserError($"--pixel {x},{y} is outside the {width}x{height} image");
+    }
+
     /// <summary>Engine names, space- or comma-separated, each kept once, in the order of <paramref name="all"/>.</summary>
     public static EngineKind[] ParseEngines(ArgumentResult result, string name, EngineKind[] all)
     {

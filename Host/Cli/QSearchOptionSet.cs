@@ -6,11 +6,11 @@ namespace QuantumRayTracing.Cli;
 /// <summary>QSearch's options, shared by every command that runs it: --growth and --m-rule.</summary>
 public sealed class QSearchOptionSet
 {
-    public readonly Option<double> Growth = new("--growth", "-c")
+    public readonly Option<double> Growth = new Option<double>("--growth", "-c")
     {
         Description = "QSearch's growth constant c, 1 < c < 2.",
         DefaultValueFactory = _ => QSearchSchedule.DefaultGrowth,
-    };
+    }.Must(c => c > 1 && c < 2 ? null : $"--growth must satisfy 1 < c < 2, got {c}");
 
     public readonly Option<MSetRule> Rule = new("--m-rule")
     {
@@ -19,16 +19,7 @@ public sealed class QSearchOptionSet
         HelpName = "ceiling|round",
     };
 
-    public QSearchOptionSet() =>
-        Growth.Validators.Add(r =>
-        {
-            if (r.TryGetValue<double>(out var c) && !(c > 1 && c < 2)) r.AddError($"--growth must satisfy 1 < c < 2, got {c}");
-        });
-
-    public void AddTo(Command command)
-    {
-        command.AddOptions(Growth, Rule);
-    }
+    public void AddTo(Command command) => command.AddOptions(Growth, Rule);
 
     public QSearchOptions Get(ParseResult parse) => new(parse.GetValue(Growth), parse.GetValue(Rule));
 }

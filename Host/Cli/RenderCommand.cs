@@ -54,29 +54,17 @@ public sealed class RenderCommand : Command
         Description = "Plan with the noisy machine (analytic engine under --noise): the termination rule, the lattice's confirmations, the accuracy budget and the classical settling use each Grover run's noisy success probability, so a ray whose noisy search would cost more than N classical tests is settled classically.",
     };
 
-    /// <summary>--noise-aware, refused on an engine that does not sample the noise model.</summary>
-    private bool NoiseAware(ParseResult parse, Engines.EngineKind kind)
-    {
-        var aware = parse.GetValue(_noiseAware);
-        if (aware && !kind.ApproximatesNoise) throw new UserError("--noise-aware: only the analytic engine plans with its noise model; use --engine analytic");
-        return aware;
-    }
-
     private int Execute(ParseResult parse)
     {
         var sceneFile = parse.GetValue(_scene);
         var settings = Settings(parse, sceneFile);
-        // An untraced circuit shape is refused before anything is printed or written.
-        if (settings.Engine.ApproximatesNoise && !settings.NoiseModel.IsNoiseless) EngineFactory.Approximation(settings.NoiseOracle, settings.Scene);
+        settings.EnsureRunnable();
         var inputs = sceneFile is null ? Array.Empty<string>() : [sceneFile.FullName];
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         using var bridges = _engine.StartBridges(parse);
         EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
-
-        RenderRunView.PrintPlan(settings, RenderPlan.Of(settings));
-        var run = RenderRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), RenderRunView.PrintForecast);
-        RenderRunView.Print(settings, run);
+        var run = RenderRunView.RunAndPrint(settings, bridges);
         _json.Write(parse, run.Figures, _engine, run.RanOn, Output.RunNoise.Of(settings.Engine, settings.NoiseModel, settings.NoiseDescription));
         return ExitCodes.Success;
     }
@@ -86,12 +74,11 @@ public sealed class RenderCommand : Command
     {
         var scene = DefaultScene.Load(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
-        var stem = sceneFile is null ? DefaultScene.Stem : Path.GetFileNameWithoutExtension(sceneFile.Name);
         var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
         var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
         return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
-            parse.GetValue(_output) ?? $"{stem}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
+            parse.GetValue(_output) ?? $"{DefaultScene.StemOf(sceneFile?.Name)}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), MaxMemory: OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes,
-            NoiseOracle: _engine.GetNoiseOracle(parse), NoiseAware: NoiseAware(parse, kind));
+            NoiseOracle: _engine.GetNoiseOracle(parse), NoiseAware: parse.GetValue(_noiseAware));
     }
 }

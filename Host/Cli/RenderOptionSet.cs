@@ -55,24 +55,24 @@ public sealed class RenderOptionSet
         Description = $"Lattice levels traced first (0: none). With L levels the pixels on the 2^L grid are searched first; then, level by level, every other ray tests its coarser neighbours' primitives (and shadow occluders) classically and gets one confirming search: cheap where all its neighbours agree, full where they disagree or some are missing. Applies to passes with --neighbours / --shadow-neighbours. Default: from the image size, as many levels (up to {RenderDefaults.LatticeLevels}) as keep {RenderDefaults.LatticePointsPerSide} lattice points along the shorter side.",
     }.Between(0, 6);
 
-    public readonly Option<double> AgreedMiss = new("--agreed-miss")
+    public readonly Option<double> AgreedMiss = new Option<double>("--agreed-miss")
     {
         Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used).",
         DefaultValueFactory = _ => RenderDefaults.AgreedMiss,
-    };
+    }.StrictProbability();
 
-    public readonly Option<double?> PlannedMiss = new("--planned-miss")
+    public readonly Option<double?> PlannedMiss = new Option<double?>("--planned-miss")
     {
         Description = $"Replace Algorithm 1's random schedule in every search (but the cheap confirmations) by the cheapest fixed list of Grover runs that misses at most this share of rays with 1..{RenderOptions.ConfirmationMaxT} hits. Default: Algorithm 1.",
         DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
-    };
+    }.StrictProbability();
 
     /// <summary>`render`'s accuracy budget; commands that price or plan a render rather than run it leave it out.</summary>
-    public readonly Option<double> Budget = new("--budget")
+    public readonly Option<double> Budget = new Option<double>("--budget")
     {
         Description = "Accuracy budget: the share of pixels the render may leave wrong in expectation. The primary, specular and shadow passes search more where the expectation comes from until it is within, and settle classically a ray whose remaining quantum work would cost more than N tests. 0: no budget, the searches run as configured.",
         DefaultValueFactory = _ => AccuracyBudget.Target,
-    };
+    }.Must(b => b is >= 0 and < 1 ? null : $"--budget must lie in [0, 1), got {b}");
 
     public readonly Option<int> AreaSamples = new Option<int>("--area-samples")
     {
@@ -86,29 +86,10 @@ public sealed class RenderOptionSet
         DefaultValueFactory = _ => RenderDefaults.Vpl,
     }.Between(0, CommonOptions.MaxSamples);
 
-    public RenderOptionSet()
-    {
-        PlannedMiss.Validators.Add(r =>
-        {
-            if (r.TryGetValue<double?>(out var given) && given is { } p && !(p > 0 && p < 1)) r.AddError($"--planned-miss must lie strictly between 0 and 1, got {p}");
-        });
-        Budget.Validators.Add(r =>
-        {
-            if (r.TryGetValue<double>(out var b) && !(b >= 0 && b < 1)) r.AddError($"--budget must lie in [0, 1), got {b}");
-        });
-        AgreedMiss.Validators.Add(r =>
-        {
-            if (r.TryGetValue<double>(out var p) && !(p > 0 && p < 1)) r.AddError($"--agreed-miss must lie strictly between 0 and 1, got {p}");
-        });
-    }
-
     /// <summary>Every option of the set, in help order.</summary>
     public IReadOnlyList<Option> All => [Passes, ShadowPasses, TieBreak, Neighbours, ShadowNeighbours, Stop, Lattice, AgreedMiss, PlannedMiss, AreaSamples, Vpl];
 
-    public void AddTo(Command command)
-    {
-        foreach (var option in All) command.Options.Add(option);
-    }
+    public void AddTo(Command command) => command.AddOptions(All);
 
     public RenderOptions Get(ParseResult parse, int width, int height, ulong seed) => new(width, height, parse.GetValue(Passes), parse.GetValue(ShadowPasses),
         parse.GetValue(TieBreak), parse.GetValue(Neighbours), parse.GetValue(ShadowNeighbours), parse.GetValue(Stop), seed,

@@ -1,7 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
-using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
 
@@ -47,25 +46,7 @@ public sealed class ScenesCommand : Command
         public CheckCommand() : base("check", "Validate scene files and print what each holds; the first problem of each is reported with file, element and reason.")
         {
             Arguments.Add(_files);
-            SetAction(parse =>
-            {
-                var failures = 0;
-                foreach (var file in parse.GetValue(_files)!)
-                {
-                    try
-                    {
-                        var scene = SceneLoader.Load(file.FullName);
-                        var index = SearchRegisters.For(scene.Rectangles.Count).IndexQubits;
-                        Console.WriteLine($"{file}: ok: '{scene.Name}', {scene.Rectangles.Count} rectangles ({index} index qubits), {scene.Lights.Count} point, {scene.AreaLights.Count} area and {scene.DirectionalLights.Count} directional lights, {scene.Width}x{scene.Height}, {scene.Grid}");
-                    }
-                    catch (SceneError e)
-                    {
-                        Console.Error.WriteLine($"error: {e.Message}");
-                        failures++;
-                    }
-                }
-                return failures == 0 ? ExitCodes.Success : ExitCodes.BadInput;
-            });
+            SetAction(parse => SceneCheck.Run(parse.GetValue(_files)!, Console.Out, Console.Error) == 0 ? ExitCodes.Success : ExitCodes.BadInput);
         }
     }
 }

@@ -2,7 +2,6 @@ using System.CommandLine;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
-using Spectre.Console;
 
 namespace QuantumRayTracing.Cli;
 
@@ -43,27 +42,11 @@ public sealed class SearchCommand : Command
         _qsearch.AddTo(this);
         _engine.AddTo(this);
         _json.AddTo(this);
-        Validators.Add(EnsureMarkedIndicesAreDistinctAndBelowCount);
+        this.AddRule(r =>
+        {
+            if (SearchRunSettings.MarkedProblem(r.GetValue(_count), r.GetValue(_marked) ?? []) is { } problem) r.AddError(problem);
+        });
         SetAction(Execute);
-    }
-
-    private void EnsureMarkedIndicesAreDistinctAndBelowCount(CommandResult r)
-    {
-        int n;
-        int[] marked;
-        try
-        {
-            (n, marked) = (r.GetValue(_count), r.GetValue(_marked) ?? []);
-        }
-        catch (InvalidOperationException)
-        {
-            return; // a value that does not parse has its own error
-        }
-        var outside = marked.Where(m => m < 0 || m >= n).ToArray();
-        if (outside.Length > 0)
-            r.AddError($"--marked: index {outside[0]} is outside 0..{n - 1}");
-        else if (marked.Distinct().Count() != marked.Length)
-            r.AddError("--marked: an index is listed twice");
     }
 
     private int Execute(ParseResult parse)
@@ -74,13 +57,7 @@ public sealed class SearchCommand : Command
             parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges);
         SearchRunView.PrintPlan(settings);
-        var run = AnsiConsole.Profile.Capabilities.Interactive
-            ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
-            {
-                var task = progress.AddTask($"{EngineFactory.Name(settings.Engine)}: searching", maxValue: settings.Searches);
-                return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
-            })
-            : SearchRun.Run(settings);
+        var run = SearchRunView.RunWithProgress(settings);
         SearchRunView.Print(settings, run);
         _json.Write(parse, run.Figures, _engine, run.RanOn);
         return ExitCodes.Success;

@@ -2,7 +2,6 @@ using System.CommandLine;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
-using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Scenes.Generation;
 
@@ -15,10 +14,6 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class SupersampleCommand : Command
 {
-    public const SupersampleMethod DefaultMethod = SupersampleMethod.Qss;
-
-    public const int DefaultSubpixels = 4;
-
     private readonly Option<FileInfo?> _image = new("--image")
     {
         Description = "Image to supersample (PNG of any bit depth, JPEG, WebP, BMP or GIF): each output pixel averages s x s of its pixels, so both sides must be multiples of s; alpha is composited over black. Default: none, a scene is rendered (--scene).",
@@ -34,7 +29,7 @@ public sealed class SupersampleCommand : Command
     private readonly Option<int> _subpixels = new Option<int>("--subpixels")
     {
         Description = "s: each output pixel averages s x s subpixels (4: 16 subpixels, 8: 64).",
-        DefaultValueFactory = _ => DefaultSubpixels,
+        DefaultValueFactory = _ => SupersampleSettings.DefaultSide,
     }.Between(1, 16);
 
     private readonly Option<SupersampleMethod> _method = new("--method", "-m")
@@ -43,7 +38,7 @@ public sealed class SupersampleCommand : Command
             + "mlae-noise (MLAE for noisy machines: each level's head probability is that of a depolarized coin, "
             + "F^m sin²((2m+1)θ) + (1 − F^m)/2, and the fidelity F per Grover operator is fitted together with the mean, so levels the noise has flattened count for little instead of biasing the estimate; the second half of the budget goes to the level the fitted noise leaves the most information per query), "
             + "iqae (iterative QAE, rerunning its last round against its bias), fae (faster AE, two stages), bae (Bayesian AE: grid posterior, next power by expected variance reduction), qss-bayes (QSS with one ancilla and Bayesian phase estimation instead of the counter), powerlaw (power-law AE, m_k = floor(k^((1-b)/(2b))), b = 0.3, maximum likelihood); docs/estimation.md compares them.",
-        DefaultValueFactory = _ => DefaultMethod,
+        DefaultValueFactory = _ => SupersampleSettings.DefaultMethod,
         HelpName = "mc|qss|qcoin|mlae|mlae-noise|iqae|fae|bae|qss-bayes|powerlaw",
     };
 
@@ -62,10 +57,7 @@ public sealed class SupersampleCommand : Command
         Description = "mlae and mlae-noise: amplified levels K besides m = 0 (m = 1, 2, 3, 5, 8, ... growing by 1.5). Default: the largest with at least 8 flips per level (3 at 240 queries).",
     }.Between(0, 12);
 
-    private readonly Option<int?> _counterBits = new Option<int?>("--counter-bits", "-t")
-    {
-        Description = "qss: counter qubits t; a run costs 2^(t+1) - 1 queries. Default: ceil(log2 N) for bit planes (4 for 4x4), 7 for continuous values (255 queries).",
-    }.Between(1, 12);
+    private readonly Option<int?> _counterBits = CommonOptions.CounterBits("qss: counter qubits t; a run costs 2^(t+1) - 1 queries. Default: ceil(log2 N) for bit planes (4 for 4x4), 7 for continuous values (255 queries).", 12);
 
     private readonly Option<int?> _planes = new Option<int?>("--planes")
     {
@@ -96,33 +88,21 @@ public sealed class SupersampleCommand : Command
         _json.AddTo(this);
         _method.Choices();
         _qssValues.Choices();
-        Validators.Add(EnsureOneInputAndAMethodThatFits);
+        this.AddRule(EnsureOneInputAndAMethodThatFits);
         SetAction(Execute);
     }
 
     // One error at most: the inputs first, then the method's options (SupersampleSettings.Problem).
     private void EnsureOneInputAndAMethodThatFits(CommandResult r)
     {
-        SupersampleSettings settings;
-        try
-        {
-            settings = MethodSettings(r);
-        }
-        catch (InvalidOperationException)
-        {
-            // A value that does not parse (say --method bogus) has its own error; combinations need parsed values.
-            return;
-        }
-        if (r.GetValue(_image) is not null && r.GetValue(_scene) is not null) r.AddError("--image and --scene: give one input, not both");
-        else if (r.GetValue(_image) is not null && r.GetValue(_size) is not null) r.AddError("--size applies to scenes only: an image's output size is its size divided by --subpixels");
-        else if ((r.GetValue(_deviceNoise) is not null || r.GetValue(_readoutError) is not null) && r.GetValue(_engine.Noise) is not null)
-            r.AddError("--noise and --device-noise/--readout-error: give one noise model, not both");
-        else if (settings.Problem() is { } problem) r.AddError(problem);
+        var settings = MethodSettings(r);
+        if ((SupersampleRunSettings.InputProblem(r.GetValue(_image) is not null, r.GetValue(_scene) is not null, r.GetValue(_size) is not null,
+            r.GetValue(_engine.Noise) is not null, r.GetValue(_deviceNoise) is not null || r.GetValue(_readoutError) is not null) ?? settings.Problem()) is { } problem) r.AddError(problem);
     }
 
-    // Inside a command validator, an option left out reads as default(T), not its default value: those are filled in here.
+    // Inside a command validator, an option left out reads as default(T), not its default value: those are filled in here (the action reads the same).
     private SupersampleSettings MethodSettings(CommandResult r) =>
-        new(r.GetResult(_method) is null ? DefaultMethod : r.GetValue(_method), r.GetResult(_subpixels) is null ? DefaultSubpixels : r.GetValue(_subpixels),
+        new(r.GetResult(_method) is null ? SupersampleSettings.DefaultMethod : r.GetValue(_method), r.GetResult(_subpixels) is null ? SupersampleSettings.DefaultSide : r.GetValue(_subpixels),
             r.GetValue(_queries), r.GetValue(_steps), r.GetValue(_levels), r.GetValue(_counterBits), r.GetValue(_planes), r.GetValue(_qssValues));
 
     private int Execute(ParseResult parse)
@@ -133,8 +113,7 @@ public sealed class SupersampleCommand : Command
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
-        var run = SupersampleRun.Run(settings with { Pool = bridges }, new ConsoleRunProgress(), plan => SupersampleRunView.PrintPlan(settings, plan));
-        SupersampleRunView.Print(settings, run);
+        var run = SupersampleRunView.RunAndPrint(settings, bridges);
         _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Device is { } device ? RunNoise.Of(settings.Engine, device) : null);
         return ExitCodes.Success;
     }
@@ -142,14 +121,10 @@ public sealed class SupersampleCommand : Command
     /// <summary>The run the options ask for; the bridges are started after the outputs are checked.</summary>
     private SupersampleRunSettings Settings(ParseResult parse)
     {
-        var method = new SupersampleSettings(parse.GetValue(_method), parse.GetValue(_subpixels), parse.GetValue(_queries), parse.GetValue(_steps),
-            parse.GetValue(_levels), parse.GetValue(_counterBits), parse.GetValue(_planes), parse.GetValue(_qssValues));
+        var method = MethodSettings(parse.CommandResult);
         var (imageFile, sceneFile) = (parse.GetValue(_image), parse.GetValue(_scene));
-        var stem = imageFile is not null ? Path.GetFileNameWithoutExtension(imageFile.Name)
-            : sceneFile is not null ? Path.GetFileNameWithoutExtension(sceneFile.Name)
-            : DefaultScene.Stem;
-        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size,
-            parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{stem}-{OptionRules.ChoiceName(method.Method)}.png",
+        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size, parse.GetValue(_engine.Engine),
+            parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{DefaultScene.StemOf(imageFile?.Name ?? sceneFile?.Name)}-{OptionRules.ChoiceName(method.Method)}.png",
             Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse),
             Device: CommonOptions.GetDeviceNoise(parse, _deviceNoise, _readoutError));
     }

@@ -4,15 +4,12 @@ using QuantumRayTracing.Bridge;
 
 namespace QuantumRayTracing.Cli;
 
-/// <summary>`qrt --version`: the program's, the QDK's and Node.js's versions, one per line; a missing Node.js is said, not an error.</summary>
+/// <summary>`qrt --version`: the program's, the QDK's and Node.js's versions (<see cref="ToolVersions.Lines"/>).</summary>
 public sealed class VersionAction : SynchronousCommandLineAction
 {
     public override int Invoke(ParseResult parseResult)
     {
-        var versions = ToolVersions.Detect();
-        Console.WriteLine($"qrt {versions.Program}");
-        Console.WriteLine($"QDK: qsharp-lang {versions.QsharpLang ?? "unknown (no Quantum/package.json found)"}");
-        Console.WriteLine(versions.Node is { } node ? $"Node.js: {node}" : $"Node.js: not found: {versions.NodeProblem}");
+        foreach (var line in ToolVersions.Detect().Lines()) Console.WriteLine(line);
         return 0;
     }
 }

@@ -10,17 +10,9 @@ public sealed class WorkerCommand : Command
 
     private readonly Option<int> _workers = CommonOptions.Workers("Node bridge processes running Q# chunks in parallel. Default: the core count.");
 
-    private readonly Option<int?> _siloPort = new Option<int?>("--silo-port")
-    {
-        Description = "Port the workers talk to each other on. Default: the cluster file's primaryPort (the first worker on a machine); each further worker on one machine needs its own.",
-        HelpName = "port",
-    }.Between(1, 65535);
+    private readonly Option<int?> _siloPort = Port("--silo-port", "Port the workers talk to each other on. Default: the cluster file's primaryPort (the first worker on a machine); each further worker on one machine needs its own.");
 
-    private readonly Option<int?> _gatewayPort = new Option<int?>("--gateway-port")
-    {
-        Description = "Port renders connect to. Default: the first of the cluster file's gateways; each further worker on one machine needs its own (list it in gateways under localhost membership).",
-        HelpName = "port",
-    }.Between(1, 65535);
+    private readonly Option<int?> _gatewayPort = Port("--gateway-port", "Port renders connect to. Default: the first of the cluster file's gateways; each further worker on one machine needs its own (list it in gateways under localhost membership).");
 
     private readonly Option<string?> _advertise = new("--advertise")
     {
@@ -34,6 +26,8 @@ public sealed class WorkerCommand : Command
         DefaultValueFactory = _ => 10,
         HelpName = "seconds",
     }.Between(0, 86_400);
+
+    private static Option<int?> Port(string name, string description) => new Option<int?>(name) { Description = description, HelpName = "port" }.Between(1, 65535);
 
     public WorkerCommand() : base("worker", "Serve Q# chunks of renders on this machine's bridges, as a worker of a cluster (docs/cluster.md).")
     {

@@ -50,6 +50,11 @@ public sealed record NoiseModel
 
     public override string ToString() => Description();
 
+    /// <summary>The model <c>--noise</c> (<see cref="ParsePauli"/>; null: no Pauli noise) and <c>--qubit-loss</c> give.</summary>
+    public static NoiseModel Of(string? pauli, double loss) => pauli is null
+        ? loss == 0 ? None : new NoiseModel(0, 0, 0, loss)
+        : ParsePauli(pauli, out var problem) is var (px, py, pz) ? new NoiseModel(px, py, pz, loss) : throw new ArgumentException(problem, nameof(pauli));
+
     /// <summary>
     /// Parses <c>--noise</c>: one number P (P/3 each of X, Y, Z) or three, <c>px,py,pz</c>. Null and a
     /// problem naming what is wrong when the text is not a valid model.

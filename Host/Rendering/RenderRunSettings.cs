@@ -61,6 +61,13 @@ public sealed record RenderRunSettings(
         Engine.ApproximatesNoise && !NoiseModel.IsNoiseless ? EngineFactory.Approximation(NoiseOracle, Scene) : null)
         + (NoiseAware && !NoiseModel.IsNoiseless ? "; noise-aware passes (miss rates from the noisy runs' success)" : "");
 
+    /// <summary>Refuses, before anything is printed or written, planning with a noise model the engine does not sample and an untraced circuit shape.</summary>
+    public void EnsureRunnable()
+    {
+        if (NoiseAware && !Engine.ApproximatesNoise) throw new UserError("--noise-aware: only the analytic engine plans with its noise model; use --engine analytic");
+        if (Engine.ApproximatesNoise && !NoiseModel.IsNoiseless) EngineFactory.Approximation(NoiseOracle, Scene);
+    }
+
     /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>
     public IReadOnlyList<string> Files => WithReference
         ? [Output, ImageFiles.Beside(Output, "reference"), ImageFiles.Beside(Output, "difference"), .. WithConverged ? [ImageFiles.Beside(Output, "converged")] : Array.Empty<string>()]

@@ -28,6 +28,15 @@ public static class RenderRunView
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
     }
 
+    /// <summary>The run on <paramref name="pool"/> (null: local bridges): its plan first, its progress on standard error, its figures after.</summary>
+    public static RenderRunResult RunAndPrint(RenderRunSettings settings, Bridge.BridgePool? pool)
+    {
+        PrintPlan(settings, RenderPlan.Of(settings));
+        var run = RenderRun.Run(settings with { Pool = pool }, new ConsoleRunProgress(), PrintForecast);
+        Print(settings, run);
+        return run;
+    }
+
     /// <summary>A large render's forecast, printed before it starts.</summary>
     public static void PrintForecast(RenderForecast forecast) =>
         AnsiConsole.WriteLine(FormattableString.Invariant(

@@ -42,4 +42,12 @@ public sealed record SearchRunSettings(
     public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
 
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
+
+    /// <summary>What is wrong with <paramref name="marked"/> as the marked indices of <paramref name="count"/>: one naming the first outside 0..N-1, or one listed twice; null if nothing.</summary>
+    public static string? MarkedProblem(int count, IReadOnlyList<int> marked)
+    {
+        var outside = marked.Where(m => m < 0 || m >= count).Take(1).ToArray();
+        if (outside.Length > 0) return $"--marked: index {outside[0]} is outside 0..{count - 1}";
+        return marked.Distinct().Count() != marked.Count ? "--marked: an index is listed twice" : null;
+    }
 }

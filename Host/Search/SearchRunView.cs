@@ -4,9 +4,18 @@ using Spectre.Console;
 
 namespace QuantumRayTracing.Search;
 
-/// <summary>`search` on the console: the searched set and registers before the run, a table of what it found and cost after.</summary>
+/// <summary>`search` on the console: the searched set and registers before the run, a progress bar during it, a table of what it found and cost after.</summary>
 public static class SearchRunView
 {
+    /// <summary>The run, with a bar of the searches done on an interactive console (none when redirected).</summary>
+    public static SearchRunResult RunWithProgress(SearchRunSettings settings) => AnsiConsole.Profile.Capabilities.Interactive
+        ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
+        {
+            var task = progress.AddTask($"{EngineFactory.Name(settings.Engine)}: searching", maxValue: settings.Searches);
+            return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
+        })
+        : SearchRun.Run(settings);
+
     public static void PrintPlan(SearchRunSettings settings)
     {
         var (marked, registers) = (settings.MarkedSet, settings.Registers);

@@ -43,6 +43,13 @@ public sealed record SupersampleRunSettings(
 
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
+    /// <summary>What is wrong with the input and noise options given together, before the method's own (<see cref="SupersampleSettings.Problem"/>); null if nothing.</summary>
+    public static string? InputProblem(bool image, bool scene, bool size, bool pauliNoise, bool deviceNoise) =>
+        image && scene ? "--image and --scene: give one input, not both"
+        : image && size ? "--size applies to scenes only: an image's output size is its size divided by --subpixels"
+        : pauliNoise && deviceNoise ? "--noise and --device-noise/--readout-error: give one noise model, not both"
+        : null;
+
     /// <summary>The file read, if any: the image or the scene.</summary>
     public string? InputFile => ImageFile ?? SceneFile;
 

@@ -21,6 +21,14 @@ public static class SupersampleRunView
 
     private static string AtMost(SupersampleRunSettings settings) => settings.Method.MayStopBelowBudget ? "at most " : "";
 
+    /// <summary>The run on <paramref name="pool"/> (null: local bridges): its plan first, its progress on standard error, its figures after.</summary>
+    public static SupersampleRunResult RunAndPrint(SupersampleRunSettings settings, Bridge.BridgePool? pool)
+    {
+        var run = SupersampleRun.Run(settings with { Pool = pool }, new Rendering.ConsoleRunProgress(), plan => PrintPlan(settings, plan));
+        Print(settings, run);
+        return run;
+    }
+
     /// <summary>The queries, the error against the exact average, the confidence, the wall time and the files written.</summary>
     public static void Print(SupersampleRunSettings settings, SupersampleRunResult run)
     {

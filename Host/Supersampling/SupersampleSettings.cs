@@ -22,6 +22,12 @@ public sealed record SupersampleSettings(
     int? Planes = null,
     QssValues? Values = null)
 {
+    /// <summary>`supersample`'s method when none is given.</summary>
+    public const SupersampleMethod DefaultMethod = SupersampleMethod.Qss;
+
+    /// <summary>s when none is given: 4 x 4 = 16 subpixels, the thesis's.</summary>
+    public const int DefaultSide = 4;
+
     /// <summary>Paper 003's fig. 1 budget.</summary>
     public const long DefaultQueries = 240;
 

@@ -8,6 +8,9 @@ public static class DefaultScene
     /// <summary>The name outputs take after it, as a scene file's stem.</summary>
     public static string Stem => $"qornell-{QornellPrimitives}";
 
+    /// <summary>The stem default output names start with: the input file's name without extension, or the built-in scene's.</summary>
+    public static string StemOf(string? inputFile) => inputFile is null ? Stem : Path.GetFileNameWithoutExtension(inputFile);
+
     /// <summary>The scene file, or the built-in Qornell box when none is named.</summary>
     public static Scene Load(FileInfo? file) => file is null
         ? SceneLoader.Parse(QornellBox.Build(QornellPrimitives).ToJson(), $"built-in {Stem}")
