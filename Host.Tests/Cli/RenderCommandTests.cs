@@ -26,7 +26,7 @@ public sealed class RenderCommandTests : IDisposable
     public void ClassicalRenderWritesAnImageOfTheRequestedSize()
     {
         var output = _scratch.File("x.png");
-        Assert.Equal(0, CommandLine.Run(["render", Scene, "--engine", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", Scene, "--engine", "classical", "--size", "8", "-o", output]).Code);
         var image = ImageReader.Read(output);
         Assert.Equal((8, 8), (image.Width, image.Height));
         Assert.True(image.Pixels.SequenceEqual(Classical(8).Pixels));
@@ -37,7 +37,7 @@ public sealed class RenderCommandTests : IDisposable
     public void NonSquareSize()
     {
         var output = _scratch.File("wide.png");
-        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "6x3", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", Scene, "-e", "classical", "--size", "6x3", "-o", output]).Code);
         Assert.Equal((6, 3), (ImageReader.Read(output).Width, ImageReader.Read(output).Height));
     }
 
@@ -45,7 +45,7 @@ public sealed class RenderCommandTests : IDisposable
     public void ClassicalImageIsTheReference()
     {
         var output = _scratch.File("c.png");
-        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", output]).Code);
         Assert.Equal(["c-difference.png", "c-reference.png", "c.png"], _scratch.FileNames());
         Assert.Equal(File.ReadAllBytes(output), File.ReadAllBytes(_scratch.File("c-reference.png")));
         var difference = ImageReader.Read(_scratch.File("c-difference.png"));
@@ -63,8 +63,8 @@ public sealed class RenderCommandTests : IDisposable
     {
         // One pass and one shadow round on the analytic engine, without the neighbour tricks or the budget, leave wrong pixels to mark.
         var output = _scratch.File("q.png");
-        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "analytic", "--seed", "3", "--size", "12", "--passes", "1", "--shadow-passes", "1",
-            "--neighbours", "false", "--shadow-neighbours", "false", "--stop", "off", "--lattice", "0", "--budget", "0", "--reference", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", Scene, "-e", "analytic", "--seed", "3", "--size", "12", "--passes", "1", "--shadow-passes", "1",
+            "--neighbours", "false", "--shadow-neighbours", "false", "--stop", "off", "--lattice", "0", "--budget", "0", "--reference", "-o", output]).Code);
         var image = ImageReader.Read(output);
         var reference = ImageReader.Read(_scratch.File("q-reference.png"));
         var difference = ImageReader.Read(_scratch.File("q-difference.png"));
@@ -98,7 +98,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var output = _scratch.File("x.png");
         PngWriter.Write(new RgbImage(2, 2), output);
-        Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]).Code);
         Assert.Equal(8, ImageReader.Read(output).Width);
     }
 
@@ -106,7 +106,7 @@ public sealed class RenderCommandTests : IDisposable
     public void MissingDirectoryIsRefusedBeforeRendering()
     {
         var output = Path.Combine(_scratch.Path, "missing", "x.png");
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]).Code);
         Assert.False(Directory.Exists(Path.Combine(_scratch.Path, "missing")));
         Assert.Empty(_scratch.FileNames());
     }
@@ -118,7 +118,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var output = _scratch.File("x.png");
         File.WriteAllBytes(output, content);
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", Scene, "-e", "classical", "--size", "8", "-o", output]).Code);
         Assert.Equal(content, File.ReadAllBytes(output));
         Assert.Equal(["x.png"], _scratch.FileNames());
     }
@@ -128,7 +128,7 @@ public sealed class RenderCommandTests : IDisposable
     {
         var difference = _scratch.File("x-difference.png");
         File.WriteAllText(difference, "someone else's");
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", Scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]).Code);
         Assert.Equal("someone else's", File.ReadAllText(difference));
         Assert.Equal(["x-difference.png"], _scratch.FileNames());
     }
@@ -139,7 +139,7 @@ public sealed class RenderCommandTests : IDisposable
         var scene = _scratch.File("scene.json");
         File.Copy(Scene, scene);
         var before = File.ReadAllBytes(scene);
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "-o", scene]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", scene, "-e", "classical", "--size", "8", "-o", scene]).Code);
         Assert.Equal(before, File.ReadAllBytes(scene));
         Assert.Equal(["scene.json"], _scratch.FileNames());
     }
@@ -158,7 +158,7 @@ public sealed class RenderCommandTests : IDisposable
     [InlineData("--lattice", "-1")]
     public void UsageErrorsExitWithOne(string option, string value)
     {
-        Assert.Equal(1, CommandLine.Run(["render", Scene, "-e", "classical", option, value, "-o", _scratch.File("x.png")]));
+        Assert.Equal(1, ConsoleCapture.Run(["render", Scene, "-e", "classical", option, value, "-o", _scratch.File("x.png")]).Code);
         Assert.Empty(_scratch.FileNames());
     }
 
@@ -169,14 +169,14 @@ public sealed class RenderCommandTests : IDisposable
         var scene = _scratch.File("bad.json");
         File.WriteAllText(scene, File.ReadAllText(Scene).Replace("\"max\": [16, 0, 30]", "\"max\": [40, 0, 30]"));
         Assert.NotEqual(File.ReadAllText(Scene), File.ReadAllText(scene));
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", scene, "-e", "classical", "--size", "8", "--reference", "-o", _scratch.File("x.png")]).Code);
         Assert.Equal(["bad.json"], _scratch.FileNames());
     }
 
     [Fact]
     public void MissingSceneExitsWithTwo()
     {
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", _scratch.File("nowhere.json"), "-e", "classical", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", _scratch.File("nowhere.json"), "-e", "classical", "-o", _scratch.File("x.png")]).Code);
         Assert.Empty(_scratch.FileNames());
     }
 }

@@ -25,7 +25,7 @@ public sealed class RenderLightsCommandTests : IDisposable
     [InlineData("--reference-samples", "-1")]
     public void UsageErrorsExitWithOne(string option, string value)
     {
-        Assert.Equal(1, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "4", option, value, "-o", _scratch.File("x.png")]));
+        Assert.Equal(1, ConsoleCapture.Run(["render", AreaScene, "-e", "classical", "--size", "4", option, value, "-o", _scratch.File("x.png")]).Code);
         Assert.Empty(_scratch.FileNames());
     }
 
@@ -33,8 +33,8 @@ public sealed class RenderLightsCommandTests : IDisposable
     public void ReferenceWritesTheConvergedImageToo()
     {
         var output = _scratch.File("x.png");
-        Assert.Equal(0, CommandLine.Run(["render", AreaScene, "-e", "classical", "--size", "6", "--area-samples", "2", "--reference-samples", "8",
-            "--seed", "3", "--reference", "-o", output]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", AreaScene, "-e", "classical", "--size", "6", "--area-samples", "2", "--reference-samples", "8",
+            "--seed", "3", "--reference", "-o", output]).Code);
         Assert.Equal(["x-converged.png", "x-difference.png", "x-reference.png", "x.png"], _scratch.FileNames());
         using var classical = new ClassicalHitSearch();
         var converged = SceneRenderer.Render(Load("qornell-64-area.json"), classical, new RenderOptions(6, 6, Seed: 3, AreaSamples: 8)).Image;
@@ -45,8 +45,8 @@ public sealed class RenderLightsCommandTests : IDisposable
     [Fact]
     public void ZeroReferenceSamplesSkipsTheConvergedReference()
     {
-        Assert.Equal(0, CommandLine.Run(["render", TempleScene, "-e", "analytic", "--size", "6", "--vpl", "2", "--reference-samples", "0",
-            "--reference", "-o", _scratch.File("t.png")]));
+        Assert.Equal(0, ConsoleCapture.Run(["render", TempleScene, "-e", "analytic", "--size", "6", "--vpl", "2", "--reference-samples", "0",
+            "--reference", "-o", _scratch.File("t.png")]).Code);
         Assert.Equal(["t-difference.png", "t-reference.png", "t.png"], _scratch.FileNames());
     }
 
@@ -56,7 +56,7 @@ public sealed class RenderLightsCommandTests : IDisposable
         var scene = _scratch.File("bad.json");
         File.WriteAllText(scene, File.ReadAllText(AreaScene).Replace("\"radiance\": [6, 6, 6]", "\"radiance\": [6, -6, 6]"));
         Assert.NotEqual(File.ReadAllText(AreaScene), File.ReadAllText(scene));
-        Assert.Equal(ExitCodes.BadInput, CommandLine.Run(["render", scene, "-e", "classical", "--size", "4", "-o", _scratch.File("x.png")]));
+        Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run(["render", scene, "-e", "classical", "--size", "4", "-o", _scratch.File("x.png")]).Code);
         Assert.Equal(["bad.json"], _scratch.FileNames());
     }
 }

@@ -101,7 +101,7 @@ public sealed class NoiseModelTests : IDisposable
         string Render(string name, string seed)
         {
             var output = _scratch.File(name);
-            Assert.Equal(0, CommandLine.Run(["render", Scene, "-e", "analytic", "--size", "16", "--noise", "0.02", "--seed", seed, "-o", output]));
+            Assert.Equal(0, ConsoleCapture.Run(["render", Scene, "-e", "analytic", "--size", "16", "--noise", "0.02", "--seed", seed, "-o", output]).Code);
             return output;
         }
         var first = File.ReadAllBytes(Render("a.png", "7"));
