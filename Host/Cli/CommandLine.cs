@@ -20,7 +20,7 @@ public static class CommandLine
     public static RootCommand Build()
     {
         var root = new RootCommand("QuantumRayTracing: hybrid quantum-classical ray tracing on the Q# full-state simulator. "
-            + "Exit codes: 0 success, 1 usage error, 2 bad input, 3 Q#/QDK/Node bridge failure, 4 internal error.");
+            + "Exit codes: 0 success, 1 usage error, 2 bad input, 3 Q#/QDK/Node bridge failure, 4 internal error, 5 a check failed (bench soak).");
         root.Options.Add(Verbose);
         root.Options.OfType<VersionOption>().Single().Action = new VersionAction();
         root.Subcommands.Add(new RenderCommand());
