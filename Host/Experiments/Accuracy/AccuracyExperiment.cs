@@ -89,9 +89,9 @@ public static class AccuracyExperiment
         report.Text($"""
             Every kind but the 4,000-rectangle scenes, {alternativeSeeds.Length} seeds per kind and size; wrong pixels summed, Int/Ray (conservative) over all rays.
             Each keeps the budget by its rounds; they differ in what the passes do before the rounds. The default stops a ray after one empty
-            search (the paper's rule) and lets the rounds find where more search is needed; *2 required misses*: every ray its neighbours do not
-            vouch for searched until two empty searches first; *--agreed-miss 0.2*: a tighter cheap confirmation where lattice neighbours agree;
-            *one lattice level more*: fewer rays searched in full. docs/rendering.md weighs these rows and the Qornell box
+            search (the paper's rule), sizes each lattice level's cheap confirmation by the budget and lets the rounds find where more search
+            is needed; *2 required misses*: every ray its neighbours do not vouch for searched until two empty searches first; *--agreed-miss 0.4*:
+            the fixed cheap confirmation (miss at most 40 %) at every level; *one lattice level more*: fewer rays searched in full. docs/rendering.md weighs these rows and the Qornell box
             for the default's choice.
             """);
         var alternatives = AccuracyBenchmark.Alternatives;
@@ -130,9 +130,10 @@ public static class AccuracyExperiment
             default, split by where it goes (per ray of the render: the lattice's cheap confirmations where neighbours agree; every other
             search and classical test of the passes, rays settled classically included; the budget rounds), beside the same without the budget,
             and the expected and measured wrong pixels (the budget: {Invariant($"{AccuracyBudget.Target * GrowthSize * GrowthSize:0.0}")}), and the Int/Ray of the other ways to keep the budget
-            (below: more required misses, more confirmation where neighbours agree, one lattice level more). A confirmation that a ray has nothing
-            closer costs about sqrt(N) queries whatever the engine does, so every part grows with N; the rounds buy the expectation down where a
-            stratum's finds put it (docs/rendering.md).
+            (below: more required misses, the fixed cheap confirmation at every level, one lattice level more). A search that must find a hit
+            among N costs about sqrt(N) queries, and so does a confirmation that nothing is closer for a given miss rate: every part grows with N.
+            The default sizes each lattice level's cheap confirmation so that the ledger's charge for it, with the rounds it would still need,
+            costs least, and the rounds buy the expectation down where a stratum's finds put it (docs/rendering.md).
             """);
         var others = AccuracyBenchmark.Alternatives.Skip(1).ToArray();
         var growth = new TextTable("growth", ["N", "default: Int/Ray", "cheap confirmations", "other searches and tests", "budget rounds", "settled",
