@@ -62,19 +62,24 @@ public sealed class CheapConfirmation
     /// The list for a lattice level whose <paramref name="rays"/> agreeing rays it confirms: <see cref="First"/> without a
     /// <paramref name="share"/> (no allowance), else the one of least expected cost per ray. A list costs its empty search;
     /// where it would leave a ray above its share, the budget rounds' cost of bringing the ray's odds down the rest of the way
-    /// is added, ln(q / share) over the rounds' best rate of ln-odds per query. q is what the ledger charges a ray of a level
-    /// whose confirmations find nothing, π w / (1 − π + π w) with π = ½ / ((rays + 1)(1 − w)): the list is sized as though the
-    /// neighbours never misled, and the rounds buy down what the level's finds show (the ledger's strata are per level).
+    /// is added, ln(q / share) over the rounds' best rate of ln-odds per query. q = π w / (1 − π + π w) is what the ledger
+    /// will charge a ray of the level, π its estimate of how often the level's neighbours mislead, which is not known before
+    /// the level is searched: the cost is averaged over two guesses, that they never do (π is then the ledger's floor, half a
+    /// find over the level's rays, ½ / ((rays + 1)(1 − w))) and that they do half as often as the next coarser level's did
+    /// (<paramref name="coarser"/>, its neighbours being twice as far). The rounds buy down what the level's finds show.
     /// </summary>
-    public QSearchSchedule For(int rays, double? share)
+    public QSearchSchedule For(int rays, double? share, double? coarser = null)
     {
         if (share is not { } s || s <= 0 || _ladder.Length == 0) return First;
-        double Expected(double miss, double cost)
+        double Cost(double miss, double cost, double estimate)
         {
-            var pi = Math.Min(RayLedger.PriorCap, 0.5 / ((rays + 1) * (1 - miss)));
+            var pi = Math.Min(RayLedger.PriorCap, Math.Max(estimate, 0.5 / ((rays + 1) * (1 - miss))));
             var q = pi * miss / (1 - pi + pi * miss);
             return cost + (q > s && _roundRate > 0 ? Math.Log(q / s) / _roundRate : 0);
         }
+        double Expected(double miss, double cost) => coarser is { } c
+            ? (Cost(miss, cost, 0) + Cost(miss, cost, c / 2)) / 2
+            : Cost(miss, cost, 0);
         return _ladder.MinBy(l => Expected(l.Miss, l.Cost)).Schedule;
     }
 }

@@ -57,7 +57,7 @@ public static class DirectPass
                 vouched = agreed;
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
-                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, shadowRays.Count));
+                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, shadowRays.Count), ledger.CheapPrior(level + 1));
                 var inLevel = levelRays.ToHashSet();
                 var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
                     level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel.Contains(i), schedule: schedule,

@@ -119,6 +119,12 @@ public sealed class RayLedger
         _frozen = true;
     }
 
+    /// <summary>
+    /// The share of lattice level <paramref name="level"/>'s cheap confirmations estimated to have something to find, from
+    /// the searches so far; null before any (<see cref="CheapConfirmation"/> weighs it for the next finer level).
+    /// </summary>
+    public double? CheapPrior(int level) => CheapFirst + level < _prior.Length ? Prior(CheapFirst + level) : null;
+
     // A stratum's π from its finds and open episodes; null when it has no open episode.
     private double? Prior(int stratum)
     {

@@ -59,7 +59,7 @@ public static class TracePass
                 vouched = agreed;
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
-                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, rays.Count));
+                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, rays.Count), ledger.CheapPrior(level + 1));
                 var inLevel = levelRays.ToHashSet();
                 var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
                     level == 0 ? gather : null, settled: i => !inLevel.Contains(i), schedule: schedule, ledger: ledger, settle: settle);
