@@ -57,7 +57,7 @@ public sealed class RenderOptionSet
 
     public readonly Option<double> AgreedMiss = new Option<double>("--agreed-miss")
     {
-        Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used).",
+        Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used). Under the accuracy budget each lattice level's list is sized by the budget unless this option is given.",
         DefaultValueFactory = _ => RenderDefaults.AgreedMiss,
     }.StrictProbability();
 
@@ -94,7 +94,7 @@ public sealed class RenderOptionSet
     public RenderOptions Get(ParseResult parse, int width, int height, ulong seed) => new(width, height, parse.GetValue(Passes), parse.GetValue(ShadowPasses),
         parse.GetValue(TieBreak), parse.GetValue(Neighbours), parse.GetValue(ShadowNeighbours), parse.GetValue(Stop), seed,
         parse.GetValue(Lattice) ?? RenderDefaults.LatticeLevelsFor(width, height), parse.GetValue(AgreedMiss), parse.GetValue(PlannedMiss),
-        parse.GetValue(AreaSamples), parse.GetValue(Vpl), RequiredMisses: null);
+        parse.GetValue(AreaSamples), parse.GetValue(Vpl), RequiredMisses: null, SizeConfirmation: parse.GetResult(AgreedMiss) is null or { Implicit: true });
 
     /// <summary>The accuracy budget `render` holds (its own option, not in <see cref="All"/>): null for --budget 0.</summary>
     public double? BudgetShare(ParseResult parse) => parse.GetValue(Budget) is > 0 and var budget ? budget : null;

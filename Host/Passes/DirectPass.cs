@@ -25,7 +25,8 @@ public static class DirectPass
         bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[shadowRays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
-        var ledger = new RayLedger(shadowRays.Count, worstMiss, options.Lattice?.Agreed, findEnds: true);
+        var cheap = CheapConfirmation.Of(options, search, geometry.Count);
+        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, CheapConfirmation.Levels(options, shadowRays.Count));
         void Apply(int i, RayTable table, HitOutcome outcome) => occluders[i] ??= outcome.Primitive;
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
@@ -49,14 +50,16 @@ public static class DirectPass
                 settled: i => occluders[i] is not null, schedule: schedule, ledger: ledger, settle: settle);
         else
         {
-            schedule = (round, i) => round == 0 && vouched![i] ? lattice.Agreed : options.Schedule;
+            QSearchSchedule? levelCheap = null;
+            schedule = (round, i) => round == 0 && vouched![i] ? levelCheap : options.Schedule;
             metrics = LatticeOrder.Run(shadowRays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
             {
                 vouched = agreed;
-                var inLevel = new bool[shadowRays.Count];
-                foreach (var i in levelRays) inLevel[i] = true;
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
+                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, shadowRays.Count), ledger.CheapPrior(level + 1));
+                var inLevel = new bool[shadowRays.Count];
+                foreach (var i in levelRays) inLevel[i] = true;
                 var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
                     level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel[i], schedule: schedule,
                     ledger: ledger, settle: settle);

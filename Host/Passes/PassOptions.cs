@@ -28,5 +28,6 @@ public sealed record PassOptions(
 /// its next-coarser lattice neighbours' results classically and gets one confirming search, with the
 /// cheap <see cref="Agreed"/> schedule where those neighbours all agree (and it accepts what they hold)
 /// and the engine's full schedule where they disagree. Null <see cref="Agreed"/>: the full schedule everywhere.
+/// <see cref="Sized"/>: a pass with an allowance sizes each level's cheap confirmation instead (<see cref="CheapConfirmation"/>).
 /// </summary>
-public sealed record LatticePlan(int Levels, QSearchSchedule? Agreed);
+public sealed record LatticePlan(int Levels, QSearchSchedule? Agreed, bool Sized = false);

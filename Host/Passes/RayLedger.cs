@@ -11,9 +11,11 @@ namespace QuantumRayTracing.Passes;
 /// estimated per stratum from how often that stratum's searches found something (with half a find more, so a
 /// stratum that found nothing is not taken for right), a ray is wrong with probability π W / (1 − π + π W), the
 /// posterior given its trailing misses. The strata are fixed before an episode's searches: the ray's path (first
-/// searched with the lattice's cheap confirmation, or not) and whether the episode began with the ray's first search
+/// searched with the lattice's cheap confirmation, or not), whether the episode began with the ray's first search
 /// or after a find (minimum finding: a ray that has just found a closer hit often has another closer still, a ray
-/// its neighbours predicted seldom has).
+/// its neighbours predicted seldom has) and, for a cheap confirmation, the ray's lattice level (its agreeing neighbours
+/// 2^level pixels away: the nearer they are, the less often they mislead, and the budget rounds then search again
+/// only the levels whose finds ask for it).
 /// Summed over a stratum before any budget round this is about the stratum's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
 /// A certain answer (a classical test of every primitive) is never wrong.
 /// </summary>
@@ -24,17 +26,19 @@ public sealed class RayLedger
 
     private const int Unsearched = 0, CheapPath = 1, FullPath = 2;
 
-    // Per path, episodes that began with the ray's first search and episodes that began after a find.
-    private const int Strata = 2 * (FullPath + 1);
+    // The full path's first episodes and those after a find, the cheap path's episodes after a find, then the cheap
+    // path's first episodes, one stratum per lattice level: a ray whose agreeing neighbours are nearer is less often misled.
+    private const int FullFirst = 0, FullAfterFind = 1, CheapAfterFind = 2, CheapFirst = 3;
 
     private readonly double[] _trailing;
     private readonly int[] _path;
     private readonly bool[] _done;
     private readonly bool[] _afterFind;
-    private readonly long[] _found = new long[Strata];
-    private readonly double[] _prior = new double[Strata];
+    private readonly IReadOnlyList<int>? _levels;
+    private readonly long[] _found;
+    private readonly double[] _prior;
     private readonly Func<QSearchSchedule?, double> _worstMiss;
-    private readonly QSearchSchedule? _cheap;
+    private readonly CheapConfirmation? _cheap;
     private readonly bool _findEnds;
     private bool _frozen;
 
@@ -42,8 +46,13 @@ public sealed class RayLedger
     /// <param name="worstMiss">A schedule's worst miss for t ≤ 8 (null: the engine's own schedule).</param>
     /// <param name="cheap">The lattice's cheap confirmation, whose rays form their own path, or null.</param>
     /// <param name="findEnds">Whether a find settles the ray (visibility) rather than start a search for a closer one.</param>
-    public RayLedger(int rays, Func<QSearchSchedule?, double> worstMiss, QSearchSchedule? cheap, bool findEnds)
+    /// <param name="levels">Each ray's lattice level, whose cheap confirmations form a stratum of their own; null: one level.</param>
+    public RayLedger(int rays, Func<QSearchSchedule?, double> worstMiss, CheapConfirmation? cheap, bool findEnds, IReadOnlyList<int>? levels = null)
     {
+        _levels = levels;
+        var strata = CheapFirst + 1 + (levels is null || levels.Count == 0 ? 0 : levels.Max());
+        _found = new long[strata];
+        _prior = new double[strata];
         _trailing = Enumerable.Repeat(1.0, rays).ToArray();
         _path = new int[rays];
         _done = new bool[rays];
@@ -54,8 +63,8 @@ public sealed class RayLedger
     }
 
     /// <summary>A ledger whose worst misses are the engine's, for N = <paramref name="count"/>, computed once per schedule.</summary>
-    public static RayLedger For(int rays, IHitSearch search, int count, QSearchSchedule? cheap, bool findEnds) =>
-        new(rays, WorstMisses(search, count), cheap, findEnds);
+    public static RayLedger For(int rays, IHitSearch search, int count, CheapConfirmation? cheap, bool findEnds, IReadOnlyList<int>? levels = null) =>
+        new(rays, WorstMisses(search, count), cheap, findEnds, levels);
 
     /// <summary>A schedule's worst miss for t ≤ 8 (null: the engine's own), computed once per schedule.</summary>
     public static Func<QSearchSchedule?, double> WorstMisses(IHitSearch search, int count)
@@ -78,8 +87,9 @@ public sealed class RayLedger
     /// <summary>Takes one search of <paramref name="ray"/> with <paramref name="schedule"/> and its outcome.</summary>
     public void Record(int ray, QSearchSchedule? schedule, HitOutcome outcome)
     {
-        if (_path[ray] == Unsearched) _path[ray] = _cheap is not null && schedule == _cheap ? CheapPath : FullPath;
-        if (!_frozen && !outcome.Certain && _cheap is not null && schedule == _cheap)
+        var cheap = _cheap?.Contains(schedule) == true;
+        if (_path[ray] == Unsearched) _path[ray] = cheap ? CheapPath : FullPath;
+        if (!_frozen && !outcome.Certain && cheap)
             CheapIntersections += outcome.Cost.QueriesConservative + outcome.Cost.ClassicalTests;
         if (outcome.Certain)
         {
@@ -105,8 +115,23 @@ public sealed class RayLedger
     public void Freeze()
     {
         if (_frozen) return;
-        // One sweep over the rays: per stratum its open rays, those with trailing misses and their trailing W summed in ray order.
-        var (open, completed, trailing) = (new long[Strata], new long[Strata], new double[Strata]);
+        var priors = Priors();
+        for (var stratum = 0; stratum < _prior.Length; stratum++) _prior[stratum] = priors[stratum] ?? 0;
+        _frozen = true;
+    }
+
+    /// <summary>
+    /// The share of lattice level <paramref name="level"/>'s cheap confirmations estimated to have something to find, from
+    /// the searches so far; null before any (<see cref="CheapConfirmation"/> weighs it for the next finer level).
+    /// </summary>
+    public double? CheapPrior(int level) => CheapFirst + level < _prior.Length ? Priors()[CheapFirst + level] : null;
+
+    // Each stratum's π from its finds and open episodes (null when it has none), in one sweep over the rays: per stratum
+    // its open rays, those with trailing misses and their trailing W summed in ray order.
+    private double?[] Priors()
+    {
+        var strata = _prior.Length;
+        var (open, completed, trailing) = (new long[strata], new long[strata], new double[strata]);
         for (var i = 0; i < Rays; i++)
         {
             if (_path[i] == Unsearched || _done[i]) continue;
@@ -116,18 +141,26 @@ public sealed class RayLedger
             completed[stratum]++;
             trailing[stratum] += _trailing[i];
         }
-        for (var stratum = 0; stratum < Strata; stratum++)
+        var priors = new double?[strata];
+        for (var stratum = 0; stratum < strata; stratum++)
         {
+            if (open[stratum] == 0) continue;
             var episodes = _found[stratum] + open[stratum];
             var w = completed[stratum] == 0 ? 0 : trailing[stratum] / completed[stratum];
             // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a stratum whose searches found
             // nothing has not shown that its rays are right, only that few of them are wrong.
-            _prior[stratum] = open[stratum] == 0 ? 0 : Math.Min(PriorCap, (_found[stratum] + 0.5) / ((episodes + 1) * (1 - w)));
+            priors[stratum] = Math.Min(PriorCap, (_found[stratum] + 0.5) / ((episodes + 1) * (1 - w)));
         }
-        _frozen = true;
+        return priors;
     }
 
-    private int Stratum(int ray) => 2 * _path[ray] + (_afterFind[ray] ? 1 : 0);
+    private int Stratum(int ray) => (_path[ray], _afterFind[ray]) switch
+    {
+        (CheapPath, true) => CheapAfterFind,
+        (CheapPath, false) => CheapFirst + (_levels?[ray] ?? 0),
+        (_, true) => FullAfterFind,
+        _ => FullFirst,
+    };
 
     /// <summary>The probability ray <paramref name="ray"/> is wrong (<see cref="Freeze"/> first).</summary>
     public double Expected(int ray)

@@ -23,7 +23,8 @@ public static class TracePass
         bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[rays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
-        var ledger = new RayLedger(rays.Count, worstMiss, options.Lattice?.Agreed, findEnds: false);
+        var cheap = CheapConfirmation.Of(options, search, geometry.Count);
+        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, CheapConfirmation.Levels(options, rays.Count));
         HitWindow Window(int i, RayTable table) =>
             Hit.Beyond(rays[i], hits[i], table.Count, options.TieBreak);
         void Apply(int i, RayTable table, HitOutcome outcome)
@@ -51,14 +52,16 @@ public static class TracePass
                 schedule: schedule, ledger: ledger, settle: settle);
         else
         {
-            schedule = (round, i) => round == 0 && vouched![i] ? lattice.Agreed : options.Schedule;
+            QSearchSchedule? levelCheap = null;
+            schedule = (round, i) => round == 0 && vouched![i] ? levelCheap : options.Schedule;
             metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
             {
                 vouched = agreed;
-                var inLevel = new bool[rays.Count];
-                foreach (var i in levelRays) inLevel[i] = true;
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
+                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, rays.Count), ledger.CheapPrior(level + 1));
+                var inLevel = new bool[rays.Count];
+                foreach (var i in levelRays) inLevel[i] = true;
                 var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
                     level == 0 ? gather : null, settled: i => !inLevel[i], schedule: schedule, ledger: ledger, settle: settle);
                 return (searched, tests, updated);

@@ -16,7 +16,9 @@ namespace QuantumRayTracing.Rendering;
 /// the stop rule may end it (1: the paper's rule); null leaves it to the budget: 1 when <see cref="Budget"/> holds the render (its
 /// rounds search more where needed), else derived from the budget's target (<see cref="AccuracyBudget.RequiredMisses"/>). <see cref="Budget"/>: the share of pixels the render may leave wrong in expectation,
 /// held by budget rounds in the primary, specular and shadow passes, with rays settled classically where that is cheaper
-/// (<see cref="AccuracyBudget"/>); null for none (the searches run as configured, nothing more).
+/// (<see cref="AccuracyBudget"/>); null for none (the searches run as configured, nothing more). <see cref="SizeConfirmation"/>:
+/// under a budget, each lattice level's cheap confirmation is sized by the budget (<see cref="CheapConfirmation"/>) rather
+/// than the fixed <see cref="AgreedMiss"/> list.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -34,7 +36,8 @@ public sealed record RenderOptions(
     int AreaSamples = RenderDefaults.AreaSamples,
     int Vpl = RenderDefaults.Vpl,
     int? RequiredMisses = 1,
-    double? Budget = null)
+    double? Budget = null,
+    bool SizeConfirmation = true)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;

@@ -50,7 +50,8 @@ public static class SceneRenderer
             : null;
         var stop = StopRuleFor(search, geometry, cameraRays, options, planned, passes);
         var lattice = options.LatticeLevels > 0
-            ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss))
+            ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss),
+                options.SizeConfirmation)
             : null;
         return new PassPlan(scene, geometry, search, options, stop, lattice, planned, progress);
     }

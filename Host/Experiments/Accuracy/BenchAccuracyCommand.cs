@@ -16,11 +16,16 @@ public sealed class BenchAccuracyCommand : Command
 
     private readonly Option<int> _deepSize = CommonOptions.SquareSize("Largest size rendered for the 4,000-rectangle scenes (their rays each test 4,000 primitives classically).", 64, "--deep-size");
 
+    private readonly Option<int[]> _growth = CommonOptions.List("--growth", "Scattered random scene sizes N of the table of where the budget spends its queries (space-separated).",
+        AccuracySettings.DefaultGrowth, "N", 1, 8192);
+
+    private readonly Option<bool> _growthOnly = new("--growth-only") { Description = "Measure only the table of where the budget spends its queries (--growth)." };
+
     private readonly BenchReportOptions _report = new(CommandLine, "docs/accuracy.md");
 
     public BenchAccuracyCommand() : base("accuracy", "Wrong pixels and Int/Ray of the default pipeline on random scenes by size, beside --lattice 0 and the paper's plain pipeline (analytic engine).")
     {
-        this.AddOptions(_sizes, _seeds, _deepSize);
+        this.AddOptions(_sizes, _seeds, _deepSize, _growth, _growthOnly);
         _report.AddTo(this, scenes: false, seed: false, workers: false);
         SetAction(Execute);
     }
@@ -28,7 +33,11 @@ public sealed class BenchAccuracyCommand : Command
     private int Execute(ParseResult parse)
     {
         var writer = _report.Writer(parse);
-        var settings = new AccuracySettings(parse.GetValue(_sizes)!, parse.GetValue(_seeds), parse.GetValue(_deepSize), DefaultScene.Load(null));
+        var settings = new AccuracySettings(parse.GetValue(_sizes)!, parse.GetValue(_seeds), parse.GetValue(_deepSize), DefaultScene.Load(null))
+        {
+            Growth = parse.GetValue(_growth)!,
+            GrowthOnly = parse.GetValue(_growthOnly),
+        };
         var report = AccuracyExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
         return ExitCodes.Success;
