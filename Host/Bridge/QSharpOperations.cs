@@ -14,6 +14,8 @@ public static class QSharpOperations
 
     public const string ApplyGateGroverSearch = "QuantumRayTracing.Intersection.ApplyGateGroverSearch";
 
+    public const string ApplyGateGroverSearchWithUnitaryLookups = "QuantumRayTracing.Intersection.ApplyGateGroverSearchWithUnitaryLookups";
+
     public const string ApplyIntersectionOracleOnNewRegisters = "QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters";
 
     public const string MeasureGateGroverBatch = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";

@@ -10,7 +10,8 @@ namespace QuantumRayTracing.Export;
 /// <summary>
 /// One ray's Grover search as an export: the uniform superposition over the ray's primitives, r iterations
 /// of the gate-level oracle and the diffusion (Q# <c>ApplyGateGroverSearch</c>, the circuit the gate
-/// engine runs), the index register measured.
+/// engine runs), the index register measured. OpenQASM 2 compiles the same search with its table lookups
+/// uncomputed by Toffoli gates (Q# <c>ApplyGateGroverSearchWithUnitaryLookups</c>), which measures less.
 /// </summary>
 public static class SearchExport
 {
@@ -44,10 +45,14 @@ public static class SearchExport
                 $"oracle: {construction.Name} ({construction.Axes} axes tested, {construction.BoundRegisters} bound register(s), unload by {(construction.MeasuredUnload ? "measurement" : "lookup")})",
                 $"iterations: {r}{(iterations is null ? $" ({DefaultIterationsReason(count, marked.MarkedCount)})" : "")}; P(marked) = {GroverProbability.OfMarked(count, marked.MarkedCount, r).ToString("R", CultureInfo.InvariantCulture)} by Grover's closed form",
             ],
-            $"{QSharpOperations.ApplyGateGroverSearch}({GateEngine.OracleArgument(input)}, {r.ToString(CultureInfo.InvariantCulture)}, _)",
+            Apply(QSharpOperations.ApplyGateGroverSearch, input, r),
             qubits,
-            "index");
+            "index",
+            UnitaryApply: Apply(QSharpOperations.ApplyGateGroverSearchWithUnitaryLookups, input, r));
     }
+
+    private static string Apply(string operation, OracleInput input, int iterations) =>
+        $"{operation}({GateEngine.OracleArgument(input)}, {iterations.ToString(CultureInfo.InvariantCulture)}, _)";
 
     /// <summary>
     /// Why the default count is what it is. With no primitive marked (a ray that hits nothing) or every one,

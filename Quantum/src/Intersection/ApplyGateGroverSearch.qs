@@ -16,14 +16,47 @@ namespace QuantumRayTracing.Intersection {
     /// ## index
     /// Index register of ceil(log2 N) qubits, in |0⟩.
     operation ApplyGateGroverSearch(input : IntersectionInput, iterations : Int, index : Qubit[]) : Unit {
+        ApplyGateGroverSearchWith(PrepareIntersectionTables(input), Length(input.Bounds), iterations, index);
+    }
+
+    /// # Summary
+    /// `ApplyGateGroverSearch` with every table lookup uncomputed by Toffoli gates instead of by
+    /// measurement and feedback: the same state, and the same gates once `qrt export` has made the
+    /// library's measured AND uncomputations unitary. It is what the OpenQASM 2 export compiles:
+    /// the QDK's QIR compile takes time quadratic in the number of feedback branches, and the
+    /// lookups hold most of them.
+    ///
+    /// # Input
+    /// ## input
+    /// The ray's bounds, table and window constants.
+    /// ## iterations
+    /// Number of Grover iterations r ≥ 0.
+    /// ## index
+    /// Index register of ceil(log2 N) qubits, in |0⟩.
+    operation ApplyGateGroverSearchWithUnitaryLookups(input : IntersectionInput, iterations : Int, index : Qubit[]) : Unit {
+        let tables = PrepareIntersectionTables(input);
+        ApplyGateGroverSearchWith(new IntersectionTables { ...tables, UnitaryLookups = true }, Length(input.Bounds), iterations, index);
+    }
+
+    /// # Summary
+    /// The search of `ApplyGateGroverSearch` on prepared tables.
+    ///
+    /// # Input
+    /// ## tables
+    /// The ray's tables, from `PrepareIntersectionTables`.
+    /// ## count
+    /// Number of primitives N.
+    /// ## iterations
+    /// Number of Grover iterations r ≥ 0.
+    /// ## index
+    /// Index register of `tables.IndexBits` qubits, in |0⟩.
+    internal operation ApplyGateGroverSearchWith(tables : IntersectionTables, count : Int, iterations : Int, index : Qubit[]) : Unit {
         if iterations < 0 {
             fail $"iterations must be non-negative, got {iterations}";
         }
-        let tables = PrepareIntersectionTables(input);
         if Length(index) != tables.IndexBits {
-            fail $"the index register has {Length(index)} qubits; {Length(input.Bounds)} primitives need {tables.IndexBits}";
+            fail $"the index register has {Length(index)} qubits; {count} primitives need {tables.IndexBits}";
         }
-        let count = Length(input.Bounds);
         use work = Qubit[IntersectionWorkQubits(tables)];
         use flag = Qubit();
         let registers = IntersectionRegistersOf(tables, work);

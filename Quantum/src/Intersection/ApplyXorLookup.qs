@@ -6,6 +6,10 @@ namespace QuantumRayTracing.Intersection {
     /// need not start in |0⟩, declared self-adjoint.
     ///
     /// # Input
+    /// ## byGates
+    /// Whether the lookup's ANDs are uncomputed by Toffoli gates (`ApplyUnitaryXorLookup`) instead
+    /// of `Select`'s measurement and feedback: the same gates once the feedback is made unitary,
+    /// without the measurements, which the QDK's QIR compile pays for (one branch each).
     /// ## data
     /// One bit string per address, each as long as `target`.
     /// ## address
@@ -17,9 +21,13 @@ namespace QuantumRayTracing.Intersection {
     /// `Adjoint Select` uncomputes by measurement, which is only right when the target returns to
     /// |0…0⟩. A lookup that changes a loaded value into another (minimum into maximum) must be undone
     /// by applying it again.
-    internal operation ApplyXorLookup(data : Bool[][], address : Qubit[], target : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyXorLookup(byGates : Bool, data : Bool[][], address : Qubit[], target : Qubit[]) : Unit is Adj {
         body (...) {
-            Select(data, address, target);
+            if byGates {
+                ApplyUnitaryXorLookup(data, address, target);
+            } else {
+                Select(data, address, target);
+            }
         }
         adjoint self;
     }

@@ -51,14 +51,14 @@ namespace QuantumRayTracing.Intersection {
         if tables.MeasuredUnload {
             Select(tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
         } else {
-            ApplyXorLookup(tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
+            ApplyXorLookup(tables.UnitaryLookups, tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
         }
         ApplyIfLessOrEqualL(X, tables.Near, registers.Depth, registers.DepthFlags[0]);
         ApplyIfGreaterL(X, tables.Limit, index + registers.Depth, registers.DepthFlags[1]);
         for s in 0..tables.Axes - 1 {
             let flag = registers.AxisFlags[s];
             if s > 0 {
-                ApplyXorLookup(tables.NextAxis[s - 1], index, rpc + coord);
+                ApplyXorLookup(tables.UnitaryLookups, tables.NextAxis[s - 1], index, rpc + coord);
             }
             X(flag);
             if tables.BoundRegisters == 0 {
@@ -82,7 +82,7 @@ namespace QuantumRayTracing.Intersection {
             } else {
                 ApplyIfLessOrEqualLE(X, low, rpc, flag);
                 if tables.BoundRegisters == 1 {
-                    ApplyXorLookup(tables.MinsToMaxes[s], index, coord);
+                    ApplyXorLookup(tables.UnitaryLookups, tables.MinsToMaxes[s], index, coord);
                 }
                 ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
             }
@@ -90,7 +90,7 @@ namespace QuantumRayTracing.Intersection {
         if tables.MeasuredUnload {
             Adjoint Select(tables.Unload, index, rpc + coord + registers.Depth);
         } else {
-            ApplyXorLookup(tables.Unload, index, rpc + coord + registers.Depth);
+            ApplyXorLookup(tables.UnitaryLookups, tables.Unload, index, rpc + coord + registers.Depth);
         }
     }
 }

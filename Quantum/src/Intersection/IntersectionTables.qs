@@ -19,6 +19,9 @@ namespace QuantumRayTracing.Intersection {
     /// bounds are the constants of `AxisBounds`.
     /// ## MeasuredUnload
     /// Whether `Load` is cleared by measurement (`Adjoint Select`) or by a second lookup.
+    /// ## UnitaryLookups
+    /// Whether the lookups uncompute their ANDs by Toffoli gates instead of by measurement and
+    /// feedback (`ApplyXorLookup`): set for circuits exported to formats without feedback.
     /// ## Load
     /// The first tested axis's point and bound(s), the depth and the validity bit (none with constant
     /// bounds), loaded into rpc + coord + depth + valid from |0⟩.
@@ -45,6 +48,7 @@ namespace QuantumRayTracing.Intersection {
         Axes : Int,
         BoundRegisters : Int,
         MeasuredUnload : Bool,
+        UnitaryLookups : Bool,
         Load : Bool[][],
         MinsToMaxes : Bool[][][],
         NextAxis : Bool[][][],

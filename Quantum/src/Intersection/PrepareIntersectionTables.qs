@@ -95,6 +95,7 @@ namespace QuantumRayTracing.Intersection {
             Axes = axes,
             BoundRegisters = boundRegisters,
             MeasuredUnload = construction.MeasuredUnload,
+            UnitaryLookups = false,
             Load = load,
             MinsToMaxes = minsToMaxes,
             NextAxis = nextAxis,
