@@ -146,6 +146,27 @@ export function product(tracker, qubits) {
   return out;
 }
 
+/** A superposing gate whose dirty targets the caller has judged: both runs take the error-free run's targets after it. */
+export function superposeBoth(clean, faulty, op, dirty) {
+  clean.apply(op);
+  for (const t of op.targets) {
+    faulty.values.set(t, clean.value(t).slice());
+    if (clean.tainted.has(t)) faulty.tainted.add(t);
+    dirty.delete(t);
+  }
+  faulty.sources = clean.sources;
+}
+
+/** Applies `op` to the error-free and the faulty run and updates which of its qubits differ. */
+export function applyBoth(clean, faulty, op, dirty) {
+  clean.apply(op);
+  faulty.apply(op);
+  for (const x of op.qubits) {
+    if (differs(clean.value(x), faulty.value(x))) dirty.add(x);
+    else dirty.delete(x);
+  }
+}
+
 const checkpointEvery = 32;
 
 export class Circuit {
@@ -215,21 +236,10 @@ export class Circuit {
           if (!(measuredNext && uniformDifference(clean.value(t), faulty.value(t)))) return true;
         }
         if (op.controls.some((c) => dirty.has(c))) return true;
-        clean.apply(op);
-        for (const t of op.targets) {
-          faulty.values.set(t, clean.value(t).slice());
-          if (clean.tainted.has(t)) faulty.tainted.add(t);
-          dirty.delete(t);
-        }
-        faulty.sources = clean.sources;
+        superposeBoth(clean, faulty, op, dirty);
         continue;
       }
-      clean.apply(op);
-      faulty.apply(op);
-      for (const x of op.qubits) {
-        if (differs(clean.value(x), faulty.value(x))) dirty.add(x);
-        else dirty.delete(x);
-      }
+      applyBoth(clean, faulty, op, dirty);
     }
     // What is left is harmless only as the same flip on every branch (a product state).
     for (const x of dirty) if (!uniformDifference(clean.value(x), faulty.value(x))) return true;

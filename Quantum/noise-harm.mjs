@@ -14,7 +14,7 @@
 // The tables track the support of the state, not its amplitudes; the index register's amplitudes are simulated exactly
 // (2^n values, the oracle's marking read from its diagonal gates). Negative harm (an error that helps) is counted as none.
 
-import { Circuit, diagonal, locationPatterns, product, uniformDifference } from "./noise-exposure.mjs";
+import { applyBoth, Circuit, diagonal, locationPatterns, product, superposeBoth, uniformDifference } from "./noise-exposure.mjs";
 
 /**
  * The graded harm of `ops` (as noise-exposure.mjs takes them), a search for `marked` (its marked indices; empty or null: read
@@ -381,23 +381,10 @@ class SearchStructure {
           if (!((after?.measurement || after?.reset) && uniformDifference(clean.value(t), faulty.value(t)))) return FULL;
         }
         if (next.controls.some((c) => dirty.has(c))) return FULL;
-        clean.apply(next);
-        for (const t of next.targets) {
-          faulty.values.set(t, clean.value(t).slice());
-          if (clean.tainted.has(t)) faulty.tainted.add(t);
-          dirty.delete(t);
-        }
-        faulty.sources = clean.sources;
+        superposeBoth(clean, faulty, next, dirty);
         continue;
       }
-      clean.apply(next);
-      faulty.apply(next);
-      for (const x of next.qubits) {
-        const v = clean.value(x);
-        const w = faulty.value(x);
-        if (v.some((bit, i) => bit !== w[i])) dirty.add(x);
-        else dirty.delete(x);
-      }
+      applyBoth(clean, faulty, next, dirty);
     }
     // What is left differs on some branches and not others: garbage that splits the branches from this section's diffusion on.
     const left = [...dirty].filter((x) => !uniformDifference(clean.value(x), faulty.value(x)));

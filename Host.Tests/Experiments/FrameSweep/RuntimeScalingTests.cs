@@ -23,13 +23,17 @@ public class RuntimeScalingTests
     }
 
     [Fact]
-    public void ACrossingBeyondTheMeasuredNIsCalledAnExtrapolationAndParallelFitsNeverCross()
+    public void CrossingsBelowOneAreNoneBeyondTheMeasuredNAnExtrapolationAndParallelFitsNeverCross()
     {
         var quantum = Primitives.Select(n => 1e3 * Math.Pow(n, 1.2)).ToArray();
         var classical = Primitives.Select(n => 1e-4 * Math.Pow(n, 0.7)).ToArray();
         var row = Assert.Single(RuntimeScaling.Fit(Primitives, [("model", quantum)], classical));
         Assert.Equal(Math.Pow(1e-7, 1 / 0.5), row.Crossing!.Value, 1e-20);
-        Assert.Contains("outside the measured range", row.CrossingText(), StringComparison.Ordinal);
+        Assert.StartsWith("none at any N ≥ 1", row.CrossingText(), StringComparison.Ordinal);
+        // Meeting beyond the measured N is an extrapolation: classical 1e-4 · N^0.7 against 1e-6 · N^1.2 meet at N = 1e4.
+        var late = Assert.Single(RuntimeScaling.Fit(Primitives, [("model", Primitives.Select(n => 1e-6 * Math.Pow(n, 1.2)).ToArray())], classical));
+        Assert.Equal(1e4, late.Crossing!.Value, 1e-6);
+        Assert.Contains("outside the measured range (an extrapolation of the fits); quantum faster below it", late.CrossingText(), StringComparison.Ordinal);
 
         var parallel = Assert.Single(RuntimeScaling.Fit(Primitives, [("model", classical.Select(c => 5 * c).ToArray())], classical));
         Assert.Null(parallel.Crossing);

@@ -22,6 +22,8 @@ public static class RuntimeScaling
             var quantumFaster = Quantum.Exponent > Classical.Exponent;
             if (Crossing is not { } n || double.IsNaN(n) || double.IsInfinity(n))
                 return "none: the fits are parallel";
+            var faster = quantumFaster ? "quantum" : "classical";
+            if (n < 1) return $"none at any N ≥ 1 (the fits meet at N ≈ {G(n)}); {faster} grows faster, so the gap widens with N";
             var where = n >= Quantum.From && n <= Quantum.To ? "inside the measured range" : "outside the measured range (an extrapolation of the fits)";
             var side = quantumFaster ? "quantum faster below it" : "quantum faster above it";
             return $"N ≈ {G(n)}, {where}; {side}";

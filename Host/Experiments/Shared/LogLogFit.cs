@@ -9,7 +9,8 @@ public static class LogLogFit
     /// <summary>The fitted power law over the points with positive x and y; null with fewer than two distinct x.</summary>
     public static PowerLawFit? Of(IEnumerable<(double X, double Y)> points)
     {
-        var xy = points.Where(p => p.X > 0 && p.Y > 0).Select(p => (X: Math.Log10(p.X), Y: Math.Log10(p.Y))).ToArray();
+        var kept = points.Where(p => p.X > 0 && p.Y > 0).ToArray();
+        var xy = kept.Select(p => (X: Math.Log10(p.X), Y: Math.Log10(p.Y))).ToArray();
         if (xy.Length < 2) return null;
         var (mx, my) = (xy.Average(p => p.X), xy.Average(p => p.Y));
         var spread = xy.Sum(p => (p.X - mx) * (p.X - mx));
@@ -17,7 +18,7 @@ public static class LogLogFit
         var slope = xy.Sum(p => (p.X - mx) * (p.Y - my)) / spread;
         var intercept = my - slope * mx;
         var residual = Math.Sqrt(xy.Average(p => Math.Pow(p.Y - (intercept + slope * p.X), 2)));
-        return new PowerLawFit(slope, intercept, residual, Math.Pow(10, xy.Min(p => p.X)), Math.Pow(10, xy.Max(p => p.X)));
+        return new PowerLawFit(slope, intercept, residual, kept.Min(p => p.X), kept.Max(p => p.X));
     }
 }
 
