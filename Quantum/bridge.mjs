@@ -17,7 +17,8 @@
 //   {"id":3,"method":"estimate","expr":"Ns.Op(8)","params":[{}]} -> {"id":3,"ok":true,"result":[<estimator result per params item>]}
 //   {"id":4,"method":"circuit","expr":"Ns.Op(8)","maxOperations":1000000}
 //                                                             -> {"id":4,"ok":true,"result":<circuit summary, see circuit-summary.mjs>}
-//     optional "exposure":true adds the noise exposure of every location (noise-exposure.mjs)
+//     optional "exposure":true adds the noise exposure of every location (noise-exposure.mjs); with "harm":true also its
+//     graded harm (noise-harm.mjs) for a search marking "marked":[indices] (far slower: it grows as the circuit's square)
 //   {"id":5,"method":"export","apply":"Ns.Op(8, _)","qubits":3,"profile":"adaptive_ri"}
 //                                                             -> {"id":5,"ok":true,"result":{"qir":"<QIR text>","probabilities":[p0, p1, ...]}}
 //     "apply" is a Qubit[] => Unit expression; optional "measured":M measures the register's first M
@@ -227,7 +228,9 @@ async function answer(compiler, program, versions, request) {
       } catch (e) {
         return { error: thrownError(e) };
       }
-      const summary = summariseCircuit(group, request.exposure === true);
+      const marked = request.marked ?? null;
+      if (marked !== null && !(Array.isArray(marked) && marked.every(Number.isInteger))) throw new RequestError(`request field "marked" must be an array of integers`);
+      const summary = summariseCircuit(group, request.exposure === true, request.harm === true ? marked ?? [] : null);
       if (summary.operations > limit) {
         return { error: { kind: "qsharp", message: `the circuit has more than ${limit} operations (maxOperations); ask for a smaller circuit or raise the limit` } };
       }

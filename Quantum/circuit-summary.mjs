@@ -13,7 +13,8 @@
 // On request, the native circuit's noise exposure (noise-exposure.mjs): per gate kind, the noise locations at which
 // no Pauli error, only X and Y, or every Pauli can harm the run.
 
-import { noiseExposure } from "./noise-exposure.mjs";
+import { Circuit, noiseExposure } from "./noise-exposure.mjs";
+import { gradedHarm } from "./noise-harm.mjs";
 
 /** Qiskit's CCXGate definition on controls a, b and target c, as [gate, qubits] pairs. */
 function qiskitCcx(a, b, c) {
@@ -24,7 +25,7 @@ function qiskitCcx(a, b, c) {
 }
 
 /** An operation's kind name and every qubit it touches. */
-function describe(op) {
+export function describe(op) {
   if (op.kind === "measurement") return { kind: "M", qubits: op.qubits.map((r) => r.qubit), measurement: true };
   if (op.kind === "ket") return { kind: "Reset", qubits: op.targets.map((r) => r.qubit), reset: true };
   const controls = (op.controls ?? []).filter((r) => r.result === undefined).map((r) => r.qubit);
@@ -64,9 +65,10 @@ class Tally {
 /**
  * Summarises circuit.circuits[0]: qubits, gates by kind, measurements, resets and depth in the QDK's
  * gate set ("native") and with CCX expanded as Qiskit defines it ("qiskitCcx"); with `withExposure` also the noise
- * exposure ("exposure", noise-exposure.mjs), which takes far longer than the rest.
+ * exposure ("exposure", noise-exposure.mjs) and, given `marked` (the search's marked indices), its graded harm ("harm",
+ * noise-harm.mjs), which take far longer than the rest.
  */
-export function summariseCircuit(group, withExposure = false) {
+export function summariseCircuit(group, withExposure = false, marked = null) {
   const circuit = group.circuits[0];
   const native = new Tally();
   const expanded = new Tally();
@@ -87,6 +89,13 @@ export function summariseCircuit(group, withExposure = false) {
   }
   return {
     qubits: circuit.qubits.length, operations, conditional, native: native.result(), qiskitCcx: expanded.result(),
-    ...(withExposure ? { exposure: noiseExposure(described) } : {}),
+    ...(withExposure ? exposureOf(described, marked) : {}),
   };
+}
+
+/** The exposure, and the graded harm when `marked` (the search's marked indices) is given. */
+function exposureOf(ops, marked) {
+  const circuit = new Circuit(ops);
+  const harm = marked ? gradedHarm(ops, marked, circuit) : null;
+  return { exposure: noiseExposure(ops, circuit), ...(harm ? { harm } : {}) };
 }

@@ -23,9 +23,9 @@
 //               diffusion's H, or meets a tainted qubit;
 //   Y           harmful when X or Z is (Y = iXZ).
 
-const diagonal = new Set(["Z", "S", "T", "Rz", "R1", "I"]);
+export const diagonal = new Set(["Z", "S", "T", "Rz", "R1", "I"]);
 
-class Tracker {
+export class Tracker {
   constructor(branches, maxSources) {
     this.branches = branches;
     this.maxSources = maxSources;
@@ -125,19 +125,19 @@ class Tracker {
   }
 }
 
-function differs(a, b) {
+export function differs(a, b) {
   for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return true;
   return false;
 }
 
 // Whether the branchwise difference of two tables is the same on every branch (nothing, or a flip everywhere).
-function uniformDifference(a, b) {
+export function uniformDifference(a, b) {
   const d = a[0] ^ b[0];
   for (let i = 1; i < a.length; i++) if ((a[i] ^ b[i]) !== d) return false;
   return true;
 }
 
-function product(tracker, qubits) {
+export function product(tracker, qubits) {
   const out = new Uint8Array(tracker.branches).fill(1);
   for (const q of qubits) {
     const v = tracker.value(q);
@@ -146,9 +146,30 @@ function product(tracker, qubits) {
   return out;
 }
 
+/** A superposing gate whose dirty targets the caller has judged: both runs take the error-free run's targets after it. */
+export function superposeBoth(clean, faulty, op, dirty) {
+  clean.apply(op);
+  for (const t of op.targets) {
+    faulty.values.set(t, clean.value(t).slice());
+    if (clean.tainted.has(t)) faulty.tainted.add(t);
+    dirty.delete(t);
+  }
+  faulty.sources = clean.sources;
+}
+
+/** Applies `op` to the error-free and the faulty run and updates which of its qubits differ. */
+export function applyBoth(clean, faulty, op, dirty) {
+  clean.apply(op);
+  faulty.apply(op);
+  for (const x of op.qubits) {
+    if (differs(clean.value(x), faulty.value(x))) dirty.add(x);
+    else dirty.delete(x);
+  }
+}
+
 const checkpointEvery = 32;
 
-class Circuit {
+export class Circuit {
   constructor(ops) {
     this.ops = ops;
     // The number of sources the circuit creates, then the tables sized for them.
@@ -215,21 +236,10 @@ class Circuit {
           if (!(measuredNext && uniformDifference(clean.value(t), faulty.value(t)))) return true;
         }
         if (op.controls.some((c) => dirty.has(c))) return true;
-        clean.apply(op);
-        for (const t of op.targets) {
-          faulty.values.set(t, clean.value(t).slice());
-          if (clean.tainted.has(t)) faulty.tainted.add(t);
-          dirty.delete(t);
-        }
-        faulty.sources = clean.sources;
+        superposeBoth(clean, faulty, op, dirty);
         continue;
       }
-      clean.apply(op);
-      faulty.apply(op);
-      for (const x of op.qubits) {
-        if (differs(clean.value(x), faulty.value(x))) dirty.add(x);
-        else dirty.delete(x);
-      }
+      applyBoth(clean, faulty, op, dirty);
     }
     // What is left is harmless only as the same flip on every branch (a product state).
     for (const x of dirty) if (!uniformDifference(clean.value(x), faulty.value(x))) return true;
@@ -238,9 +248,18 @@ class Circuit {
 }
 
 /** The operations' noise exposure. `ops` are { kind, gate, qubits, controls, targets, measurement, reset } in order. */
-export function noiseExposure(ops) {
-  const circuit = new Circuit(ops);
+export function noiseExposure(ops, circuit = new Circuit(ops)) {
   const exposure = {};
+  for (const { kind, pattern } of locationPatterns(ops, circuit)) {
+    const tally = (exposure[kind] ??= {});
+    tally[pattern] = (tally[pattern] ?? 0) + 1;
+  }
+  return exposure;
+}
+
+/** Every noise location (op k, qubit q, the op's kind) with the pattern of Paulis harmful there, last operation first. */
+export function locationPatterns(ops, circuit) {
+  const found = [];
   // Backward, for Z: whether a Z just after the current point reaches a measurement or reset ("readout") or a reset
   // next ("reset"), through diagonal gates and control roles only.
   const zPath = new Map();
@@ -250,7 +269,6 @@ export function noiseExposure(ops) {
       for (const q of op.qubits) zPath.set(q, "reset");
       continue;
     }
-    const tally = (exposure[op.kind] ??= {});
     op.qubits.forEach((q, j) => {
       const after = op.measurement ? "readout" : zPath.get(q) ?? "readout";
       let pattern;
@@ -260,10 +278,10 @@ export function noiseExposure(ops) {
         const x = op.measurement ? true : circuit.xHarms(k, q);
         pattern = (x ? "X" : "") + (x || z ? "Y" : "") + (z ? "Z" : "");
       }
-      tally[pattern] = (tally[pattern] ?? 0) + 1;
+      found.push({ k, q, kind: op.kind, pattern });
       const commutes = op.controls?.includes(q) || diagonal.has(op.gate);
       zPath.set(q, op.measurement ? "readout" : commutes ? (after === "reset" ? "readout" : after) : "other");
     });
   }
-  return exposure;
+  return found;
 }

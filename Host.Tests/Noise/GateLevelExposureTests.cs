@@ -38,7 +38,10 @@ public class GateLevelExposureTests(FullStateFixture fixture)
         var traced = GateLevelExposure.Trace(Pool, GateLevelExposure.RepresentativeRay(scene), "test");
         // Z and CZ counts vary with the uncomputation's measured outcomes; everything else is fixed by the program.
         Assert.Equal(traced.Iteration.Locations, table.Iteration.Locations, 0.02 * traced.Iteration.Locations);
-        Assert.Equal(traced.Iteration.HarmWeight, table.Iteration.HarmWeight, 0.02 * traced.Iteration.HarmWeight);
+        // The graded harm reads the corrections a trace's measured outcomes left in it, so two traces' differ more (by up to
+        // about a tenth here); the table must be graded, as the bench grades shapes up to N = 16.
+        Assert.NotNull(table.Iteration.Harm);
+        Assert.Equal(traced.Iteration.HarmWeight, table.Iteration.HarmWeight, 0.15 * traced.Iteration.HarmWeight);
         Assert.Equal(traced.Outside.Locations, table.Outside.Locations);
     }
 }

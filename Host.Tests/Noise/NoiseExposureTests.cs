@@ -30,4 +30,29 @@ public class NoiseExposureTests
         Assert.Equal(run.Run(3).Fidelity(noise), run.RunFidelity(noise, 3), 12);
         Assert.Equal(run.Outside.Fidelity(noise), run.RunFidelity(noise, 0), 12);
     }
+
+    [Fact]
+    public void GradedHarmReplacesThePatternsAndAWholeHarmGivesThePatternsFactor()
+    {
+        var patterns = Of(("CX", "XYZ", 10), ("M", "XY", 20));
+        // The same locations graded, every harmful Pauli a whole harm: each Pauli its own factor (1 − p_P), the patterns'
+        // (1 − Σ p_P) to first order.
+        Dictionary<string, IReadOnlyDictionary<string, double>> whole = new()
+        {
+            ["CX"] = new Dictionary<string, double> { ["X"] = 10, ["Y"] = 10, ["Z"] = 10 },
+            ["M"] = new Dictionary<string, double> { ["X"] = 20, ["Y"] = 20, ["Z"] = 0 },
+        };
+        var noise = new NoiseModel(0.01, 0.02, 0.005);
+        Assert.Equal(Math.Pow(0.99, 30) * Math.Pow(0.98, 30) * Math.Pow(0.995, 10), (patterns with { Harm = whole }).Fidelity(noise), 12);
+        Assert.Equal(patterns.Fidelity(noise), (patterns with { Harm = whole }).Fidelity(noise), 2);
+        // Half the harm: Φ^(1/2) per Pauli; a third of the summed harm is the harm weight.
+        var half = whole.ToDictionary(k => k.Key, k => (IReadOnlyDictionary<string, double>)k.Value.ToDictionary(p => p.Key, p => p.Value / 2));
+        var graded = patterns with { Harm = half };
+        Assert.Equal(Math.Pow(0.99, 15) * Math.Pow(0.98, 15) * Math.Pow(0.995, 5), graded.Fidelity(noise), 12);
+        Assert.Equal((15 + 15 + 5) / 3.0, graded.HarmWeight, 12);
+        Assert.Equal(patterns.Fidelity(noise), graded.Ungraded.Fidelity(noise), 12);
+        // Sums and differences keep the grading only where both sides have it.
+        Assert.Equal(2 * graded.HarmWeight, (graded + graded).HarmWeight, 12);
+        Assert.Null((graded + patterns).Harm);
+    }
 }

@@ -63,12 +63,18 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     /// The circuit the QDK extracts from a Q# expression (getCircuit, by simulating it once), summarised
     /// by the bridge: qubits, gates by kind, measurements, resets and depth (Quantum/circuit-summary.mjs).
     /// A circuit of more than <paramref name="maxOperations"/> operations is refused, not truncated. With
-    /// <paramref name="exposure"/> the summary also holds the noise exposure of every location (Quantum/noise-exposure.mjs).
+    /// <paramref name="exposure"/> the summary also holds the noise exposure of every location (Quantum/noise-exposure.mjs)
+    /// and, given <paramref name="marked"/> (the search's marked indices), its graded harm (Quantum/noise-harm.mjs, far slower).
     /// </summary>
-    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null, bool exposure = false)
+    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null, bool exposure = false, IReadOnlyList<int>? marked = null)
     {
         var request = new JsonObject { ["method"] = "circuit", ["expr"] = expression };
         if (exposure) request["exposure"] = true;
+        if (marked is not null)
+        {
+            request["harm"] = true;
+            request["marked"] = new JsonArray([.. marked.Select(i => (JsonNode?)i)]);
+        }
         if (maxOperations is { } limit) request["maxOperations"] = limit;
         return Send(request, timeout).AsObject();
     }

@@ -28,23 +28,39 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     public double RunFidelity(NoiseModel noise, int iterations)
     {
         var (outside, iteration) = _logFidelities.GetOrAdd(noise, n => (Math.Log(Outside.Fidelity(n)), Math.Log(Iteration.Fidelity(n))));
-        return Math.Exp(outside + iterations * iteration);
+        return Math.Min(1.0, Math.Exp(outside + iterations * iteration));
     }
 
     /// <summary>Traces <paramref name="input"/>'s search with r = 0, 1 and 2 on <paramref name="pool"/>'s bridges.</summary>
     /// <remarks>
-    /// An error late in a run's last iteration harms less often than one with iterations after it; the iteration is
-    /// counted as one with iterations after it (the difference of r = 2 and r = 1), so a run's last iteration is
-    /// counted on the harmful side.
+    /// The locations by pattern: the preparation and measurement from r = 0, an iteration as r = 2 less r = 1. The graded
+    /// harm depends on r (an error after the last diffusion does nothing, one in an early iteration is amplified with the
+    /// run), so it is extrapolated from the runs that have it: an iteration as r = 2 less r = 1, the rest as r = 1 less
+    /// that, which makes Φ exact for r = 1 and 2 on the traced ray and linear in r beyond.
     /// </remarks>
-    public static GateLevelExposure Trace(BridgePool pool, OracleInput input, string shape)
+    /// <param name="pool">The bridges that trace the circuits.</param>
+    /// <param name="input">The ray's oracle input; its marked set grades the harm.</param>
+    /// <param name="shape">What the circuit was traced for, in words.</param>
+    /// <param name="graded">Whether to grade the harm (Quantum/noise-harm.mjs; its time grows as the square of the circuit).</param>
+    public static GateLevelExposure Trace(BridgePool pool, OracleInput input, string shape, bool graded = true)
     {
         ArgumentNullException.ThrowIfNull(pool);
+        ArgumentNullException.ThrowIfNull(input);
         var argument = GateEngine.OracleArgument(input);
-        var traced = new NoiseExposure[3];
-        pool.ForEach([2, 1, 0], (r, bridge) =>
-            traced[r] = NoiseExposure.Parse(bridge.Circuit($"{QSharpOperations.MeasureGateGroverSearch}({argument}, {r.ToString(CultureInfo.InvariantCulture)})", timeout: TimeSpan.FromMinutes(30), exposure: true)["exposure"]!));
-        return new GateLevelExposure(shape, traced[0], traced[2] - traced[1]);
+        int[]? marked = graded ? input.Table.Marked(input.Window).Indices.ToArray() : null;
+        // Graded, r = 1 and 2 are traced twice each: a trace's measured outcomes decide which corrections it holds, and where
+        // the grading cannot pair one with its measurement it counts the error whole; the less harmful reading is kept.
+        (int R, int Copy)[] runs = graded ? [(2, 0), (2, 1), (1, 0), (1, 1), (0, 0)] : [(2, 0), (1, 0), (0, 0)];
+        var readings = new NoiseExposure[3, 2];
+        pool.ForEach(runs, (run, bridge) =>
+        {
+            var summary = bridge.Circuit($"{QSharpOperations.MeasureGateGroverSearch}({argument}, {run.R.ToString(CultureInfo.InvariantCulture)})", timeout: TimeSpan.FromMinutes(30), exposure: true, marked: marked);
+            readings[run.R, run.Copy] = NoiseExposure.Parse(summary["exposure"]!, summary["harm"]);
+        });
+        var traced = Enumerable.Range(0, 3).Select(r => readings[r, 1] is { } other && (other.Harm is not null && (readings[r, 0].Harm is null || other.HarmWeight < readings[r, 0].HarmWeight))
+            ? other : readings[r, 0]).ToArray();
+        var iteration = traced[2] - traced[1];
+        return new GateLevelExposure(shape, graded ? traced[0] with { Harm = (traced[1] - iteration).Harm } : traced[0], iteration);
     }
 
     /// <summary>
@@ -73,8 +89,17 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
 
     public static string KeyOf(Scene scene) => KeyOf(scene.Rectangles.Count, scene.Grid.Bits);
 
-    public JsonObject ToJson() => new() { ["shape"] = Shape, ["outside"] = Outside.ToJson(), ["iteration"] = Iteration.ToJson() };
+    public JsonObject ToJson()
+    {
+        var json = new JsonObject { ["shape"] = Shape, ["outside"] = Outside.ToJson(), ["iteration"] = Iteration.ToJson() };
+        if (Outside.HarmToJson() is { } outside && Iteration.HarmToJson() is { } iteration)
+        {
+            json["outsideHarm"] = outside;
+            json["iterationHarm"] = iteration;
+        }
+        return json;
+    }
 
     public static GateLevelExposure Parse(JsonNode node) =>
-        new(node["shape"]!.GetValue<string>(), NoiseExposure.Parse(node["outside"]!), NoiseExposure.Parse(node["iteration"]!));
+        new(node["shape"]!.GetValue<string>(), NoiseExposure.Parse(node["outside"]!, node["outsideHarm"]), NoiseExposure.Parse(node["iteration"]!, node["iterationHarm"]));
 }

@@ -5,11 +5,16 @@ namespace QuantumRayTracing.Noise;
 /// <summary>
 /// A circuit's noise locations (one per qubit per operation, a measurement's before it) by gate kind and by which Pauli
 /// errors can harm the run there (the pattern: "XYZ" all three, "XY" X and Y, "" none, …), as the bridge counts them from
-/// the extracted circuit by the rules of Quantum/noise-exposure.mjs (docs/noise.md states them).
+/// the extracted circuit by the rules of Quantum/noise-exposure.mjs (docs/noise.md states them); and, when given, the
+/// graded harm per gate kind and Pauli (<paramref name="Harm"/>: the summed h of X, Y and Z over the kind's locations,
+/// Quantum/noise-harm.mjs), which <see cref="Fidelity"/> then uses instead of the patterns.
 /// </summary>
-public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> ByKind)
+public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> ByKind, IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>>? Harm = null)
 {
     public static readonly NoiseExposure None = new(new Dictionary<string, IReadOnlyDictionary<string, double>>());
+
+    /// <summary>The same locations with the harm only the patterns give (every harmful Pauli a whole harm).</summary>
+    public NoiseExposure Ungraded => this with { Harm = null };
 
     /// <summary>Locations per harm pattern, every gate kind summed.</summary>
     public IReadOnlyDictionary<string, double> ByPattern =>
@@ -25,10 +30,12 @@ public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictiona
     /// Harmful errors expected per unit of per-gate error under depolarizing noise: a third per harmful Pauli of each
     /// location. Divided by <see cref="Locations"/> it is the circuit's harmful share.
     /// </summary>
-    public double HarmWeight => ByPattern.Sum(p => p.Value * p.Key.Length / 3.0);
+    public double HarmWeight => Harm is { } graded ? graded.Values.Sum(h => h.Values.Sum()) / 3.0 : ByPattern.Sum(p => p.Value * p.Key.Length / 3.0);
 
     /// <summary>The same for one gate kind.</summary>
-    public double HarmWeightOf(string kind) => ByKind.TryGetValue(kind, out var p) ? p.Sum(q => q.Value * q.Key.Length / 3.0) : 0;
+    public double HarmWeightOf(string kind) =>
+        Harm is { } graded ? (graded.TryGetValue(kind, out var h) ? h.Values.Sum() / 3.0 : 0)
+        : ByKind.TryGetValue(kind, out var p) ? p.Sum(q => q.Value * q.Key.Length / 3.0) : 0;
 
     /// <summary>
     /// The probability that no harmful error occurs under <paramref name="noise"/>: Φ = Π over locations of
@@ -37,6 +44,14 @@ public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictiona
     public double Fidelity(NoiseModel noise)
     {
         if (noise.PerGate <= 0) return 1.0;
+        if (Harm is { } graded)
+        {
+            // Each location's Pauli P contributes (1 − p_P)^h: a whole harm h = 1 is the pattern rule's factor.
+            static double Log(double p) => Math.Log(1 - Math.Min(p, 1 - 1e-12));
+            // A part extrapolated from two traces (the preparation's) may hold a negative sum; a run's Φ is capped at 1 where it is used.
+            return Math.Exp(graded.Values.Sum(h =>
+                h.GetValueOrDefault("X") * Log(noise.Px) + h.GetValueOrDefault("Y") * Log(noise.Py) + h.GetValueOrDefault("Z") * Log(noise.Pz)));
+        }
         var log = 0.0;
         foreach (var (pattern, count) in ByPattern)
         {
@@ -50,26 +65,40 @@ public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictiona
 
     public static NoiseExposure operator -(NoiseExposure a, NoiseExposure b) => Combine(a, b, -1);
 
-    public static NoiseExposure operator *(double k, NoiseExposure a) =>
-        new(a.ByKind.ToDictionary(p => p.Key, p => (IReadOnlyDictionary<string, double>)p.Value.ToDictionary(q => q.Key, q => k * q.Value)));
+    public static NoiseExposure operator *(double k, NoiseExposure a) => new(Scale(k, a.ByKind), a.Harm is { } h ? Scale(k, h) : null);
 
-    private static NoiseExposure Combine(NoiseExposure a, NoiseExposure b, double sign)
+    /// <summary>Sums or differences; graded harm only when both sides have it.</summary>
+    private static NoiseExposure Combine(NoiseExposure a, NoiseExposure b, double sign) =>
+        new(Combine(a.ByKind, b.ByKind, sign), a.Harm is { } ha && b.Harm is { } hb ? Combine(ha, hb, sign) : null);
+
+    private static IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> Scale(double k, IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> table) =>
+        table.ToDictionary(p => p.Key, p => (IReadOnlyDictionary<string, double>)p.Value.ToDictionary(q => q.Key, q => k * q.Value));
+
+    private static IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> Combine(
+        IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> a, IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> b, double sign)
     {
-        static double Of(NoiseExposure e, string kind, string pattern) =>
-            e.ByKind.TryGetValue(kind, out var p) && p.TryGetValue(pattern, out var n) ? n : 0;
-        var kinds = a.ByKind.Keys.Union(b.ByKind.Keys);
-        return new(kinds.ToDictionary(k => k, k =>
+        static double Of(IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> e, string kind, string key) =>
+            e.TryGetValue(kind, out var p) && p.TryGetValue(key, out var n) ? n : 0;
+        var kinds = a.Keys.Union(b.Keys);
+        return kinds.ToDictionary(k => k, k =>
         {
-            var patterns = (a.ByKind.GetValueOrDefault(k)?.Keys ?? []).Union(b.ByKind.GetValueOrDefault(k)?.Keys ?? []);
-            return (IReadOnlyDictionary<string, double>)patterns.ToDictionary(p => p, p => Of(a, k, p) + sign * Of(b, k, p));
-        }));
+            var keys = (a.GetValueOrDefault(k)?.Keys ?? []).Union(b.GetValueOrDefault(k)?.Keys ?? []);
+            return (IReadOnlyDictionary<string, double>)keys.ToDictionary(p => p, p => Of(a, k, p) + sign * Of(b, k, p));
+        });
     }
 
-    /// <summary>The bridge summary's <c>exposure</c> part: {kind: {pattern: count}}.</summary>
-    public static NoiseExposure Parse(JsonNode exposure) =>
-        new(exposure.AsObject().ToDictionary(p => p.Key, p =>
-            (IReadOnlyDictionary<string, double>)p.Value!.AsObject().ToDictionary(q => q.Key, q => q.Value!.GetValue<double>())));
+    /// <summary>The bridge summary's <c>exposure</c> part, {kind: {pattern: count}}, and its <c>harm</c> part, {kind: {X, Y, Z}}, if any.</summary>
+    public static NoiseExposure Parse(JsonNode exposure, JsonNode? harm = null) => new(Table(exposure), harm is null ? null : Table(harm));
 
-    public JsonObject ToJson() => new(ByKind.OrderBy(p => p.Key, StringComparer.Ordinal).Select(p => KeyValuePair.Create(p.Key,
-        (JsonNode?)new JsonObject(p.Value.OrderBy(q => q.Key, StringComparer.Ordinal).Select(q => KeyValuePair.Create(q.Key, (JsonNode?)q.Value))))));
+    private static IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> Table(JsonNode node) =>
+        node.AsObject().ToDictionary(p => p.Key, p =>
+            (IReadOnlyDictionary<string, double>)p.Value!.AsObject().ToDictionary(q => q.Key, q => q.Value!.GetValue<double>()));
+
+    public JsonObject ToJson() => Json(ByKind);
+
+    /// <summary>The graded harm as JSON, or null when there is none.</summary>
+    public JsonObject? HarmToJson() => Harm is { } h ? Json(h) : null;
+
+    private static JsonObject Json(IReadOnlyDictionary<string, IReadOnlyDictionary<string, double>> table) => new(table.OrderBy(p => p.Key, StringComparer.Ordinal).Select(p => KeyValuePair.Create(p.Key,
+        (JsonNode?)new JsonObject(p.Value.OrderBy(q => q.Key, StringComparer.Ordinal).Select(q => KeyValuePair.Create(q.Key, (JsonNode?)Math.Round(q.Value, 6)))))));
 }

@@ -130,6 +130,7 @@ public sealed record HardwareReport(
             runtime.Row([n.ToString(CultureInfo.InvariantCulture), .. t.Split.Select(s => $"{Duration(s.SequentialNanoseconds)} ({FrameTable.Ratio(s.SequentialNanoseconds, classical)})")]);
         }
         report.Table(runtime);
+        Scaling(report, models);
         report.Text("Physical qubits per QPU (code distance):");
         var qubits = new TextTable("qubits-by-primitives", ["N", .. models.Select(m => m.ToString())]).AlignRight(Enumerable.Range(0, models.Count + 1));
         foreach (var (n, frame) in ByPrimitives)
@@ -158,6 +159,32 @@ public sealed record HardwareReport(
         report.Table(device);
         report.Text("A frame is 10^4 to 10^6 such runs, on wider oracles.");
         return report;
+    }
+
+    /// <summary>
+    /// Data loading, said plainly, and the fits of runtime against N: the gate-level oracle computes every primitive's test in
+    /// gates, so its gates grow linearly in N and a search costs about √N · N gates against N classical tests.
+    /// </summary>
+    private void Scaling(Report report, IReadOnlyList<QubitModel> models)
+    {
+        var primitives = ByPrimitives.Select(p => p.Primitives).ToArray();
+        var rows = RuntimeScaling.Fit(primitives,
+            models.Select((m, i) => (m.ToString(), (IReadOnlyList<double>)ByPrimitives.Select(p => p.Frame.Cost.Total.Split[i].SequentialNanoseconds / 1e9).ToArray())).ToArray(),
+            ByPrimitives.Select(p => p.Frame.ClassicalTime(p.Frame.Cost.Total.Name).TotalSeconds).ToArray());
+        if (rows.Count == 0) return;
+        var classical = rows[0].Classical;
+        report.Text($"""
+            **Data loading.** The gate-level oracle loads each primitive's bounds into the circuit and tests it in gates, so its gate count
+            grows linearly in N (docs/oracle-sweep.md): a Grover run of about √N iterations costs about √N · N gates, against N classical
+            tests for brute force. Fits of log runtime on log N (least squares over N = {primitives.Min()} … {primitives.Max()}, {ScalingSize}x{ScalingSize},
+            one QPU; residual: root-mean-square in log10), beside the classical render's, N^{RuntimeScaling.G(classical.Exponent)} (residual {classical.Residual.ToString("0.00", CultureInfo.InvariantCulture)}):
+            """);
+        var fits = new TextTable("runtime-fits", ["model", "quantum runtime ∝ N^b, b", "residual", "classical ∝ N^b, b", "where the fits cross"]).AlignRight(1, 2, 3);
+        foreach (var row in rows)
+            fits.Row(row.Model, RuntimeScaling.G(row.Quantum.Exponent), row.Quantum.Residual.ToString("0.00", CultureInfo.InvariantCulture),
+                RuntimeScaling.G(row.Classical.Exponent), row.CrossingText());
+        report.Table(fits);
+        report.Text("A fit states the trend over the measured N only: the frames' run counts and the code distances change with N too, and the classical times are single wall times on a shared machine.");
     }
 
     private static string N(long value) => FrameTable.N(value);

@@ -36,6 +36,12 @@ public sealed record NoiseBenchSettings(
     /// <summary>The largest N whose gate-level circuit the exposure part traces (N = 64 takes about a minute).</summary>
     public const int MaxExposurePrimitives = 64;
 
+    /// <summary>
+    /// The largest N whose traced exposure is graded (Quantum/noise-harm.mjs follows each error through the rest of the circuit,
+    /// so its time grows as the circuit's square: about a minute at N = 8 and 16 on a shared 2-core machine, far longer above).
+    /// </summary>
+    public const int MaxGradedPrimitives = 16;
+
     /// <summary>The scenes the render part uses, from the scene directory.</summary>
     public static readonly string[] RenderScenes = ["qornell-64", "depth-complexity-64"];
 

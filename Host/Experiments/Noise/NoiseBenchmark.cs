@@ -41,7 +41,8 @@ public static class NoiseBenchmark
                     var (name, scene) = group.First();
                     Say($"gate-level noise exposure of {group.Key} ({name})");
                     exposures.Add((group.Key, string.Join(", ", group.Select(g => g.Name)),
-                        GateLevelExposure.Trace(pool, GateLevelExposure.RepresentativeRay(scene), $"{name}'s circuit, {group.Key}")));
+                        GateLevelExposure.Trace(pool, GateLevelExposure.RepresentativeRay(scene), $"{name}'s circuit, {group.Key}",
+                            graded: scene.Rectangles.Count <= NoiseBenchSettings.MaxGradedPrimitives)));
                 }
             }
             if (settings.Parts.Contains("model"))

@@ -21,8 +21,9 @@ public interface IModelCheckRow
 
 /// <summary>
 /// The analytic model of a search and the wrong variants it is checked against (negative controls): the ideal formula
-/// (no noise), every location harmful (s = 1), a third of them (s = 1/3), and the model without the factor of the
-/// preparation and measurement (Φ = F^r).
+/// (no noise), every location harmful (s = 1), a third of them (s = 1/3), the model without the factor of the
+/// preparation and measurement (Φ = F^r), and the gate-level count without its grading (every Pauli the counting rule
+/// calls harmful a whole harm, the model before the harm was graded).
 /// </summary>
 public enum SearchModel
 {
@@ -31,6 +32,7 @@ public enum SearchModel
     ShareOne,
     ShareThird,
     WithoutPreparation,
+    Ungraded,
 }
 
 /// <summary>One Grover run measured many times on the noisy simulator, beside what the depolarizing approximation predicts.</summary>
@@ -61,9 +63,10 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
         SearchModel.Ideal => 1.0,
         SearchModel.ShareOne => new DepolarizingApproximation(1).Fidelity(Noise, Locations),
         SearchModel.ShareThird => new DepolarizingApproximation(1.0 / 3).Fidelity(Noise, Locations),
-        SearchModel.WithoutPreparation => Exposure is { } e ? Math.Pow(e.Iteration.Fidelity(Noise), Iterations)
+        SearchModel.Ungraded => Exposure is { } u ? (u.Outside.Ungraded + (double)Iterations * u.Iteration.Ungraded).Fidelity(Noise) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        SearchModel.WithoutPreparation => Exposure is { } e ? Math.Min(1.0, Math.Pow(e.Iteration.Fidelity(Noise), Iterations))
             : DepolarizingApproximation.Default.Fidelity(Noise, Locations - NoiseLocations.PrepareAndMeasure(Count)),
-        _ => Exposure is { } g ? g.Run(Iterations).Fidelity(Noise) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        _ => Exposure is { } g ? g.RunFidelity(Noise, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
     });
 
     /// <summary>Binomial standard error of <see cref="Observed"/> at <paramref name="model"/>'s probability.</summary>

@@ -60,6 +60,7 @@ public static class NoiseReport
         (SearchModel.ShareOne, "s = 1"),
         (SearchModel.ShareThird, "s = 1/3"),
         (SearchModel.WithoutPreparation, "without F₀"),
+        (SearchModel.Ungraded, "ungraded count"),
     ];
 
     public static void Model(Report report, IReadOnlyList<NoiseCheckRow> rows, int shots)
@@ -76,8 +77,9 @@ public static class NoiseReport
             "P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n, with Φ = F₀ · F^r: F per Grover iteration, F₀ for the preparation and",
             "the measurement. A noise location is one qubit of one operation (a CCX is 3, a measurement 1).",
             "- Gate-level oracle (the default, `--noise-oracle gate-level`): the harm is counted location by location from the extracted circuit",
-            "  (the rules below): Φ = Π (1 − the summed probabilities of the Paulis harmful at each location), F from one iteration",
-            "  (the circuit with two iterations less the one with one), F₀ from the circuit with none. No share is fitted.",
+            "  (the counting rule and its grading below): Φ = Π over locations and Paulis P of (1 − p_P)^h, h the graded harm of P there,",
+            "  F from one iteration (the circuit with two iterations less the one with one), F₀ from the circuit with one less that",
+            "  (so Φ is the traced circuit's at r = 1 and 2). No share is fitted.",
             "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out):",
             "  Φ = (1 − p)^(s · L) over its closed-form locations L (`NoiseLocations`) with s = 2/3, as before."));
         report.Text(Lines(
@@ -92,8 +94,20 @@ public static class NoiseReport
             "  uncomputation as such a flip (there it becomes a Z the measurement does not see); harmful when it changes a phase on some",
             "  branches and not others, a measured value, or an index qubit at the diffusion's H;",
             "- Y is harmful when X or Z is.",
-            "Every judgement errs towards harmful: the tables track the support of the state, not its amplitudes, and a harmful error is",
-            "assumed to leave the register uniformly mixed."));
+            "Every judgement errs towards harmful: the tables track the support of the state, not its amplitudes."));
+        report.Text(Lines(
+            "**Grading** (Quantum/noise-harm.mjs). A harmful error need not leave the register uniformly mixed. Between two diffusions every",
+            "index qubit is in the computational basis and each branch carries the other qubits in basis states, so an error whose only",
+            "effect is to flip the sign of some branches is that iteration's oracle with those signs flipped: a Z on a qubit holding the",
+            "table f flips the branches where f is 1; an X that changes the oracle's diagonal gates on some branches and is then",
+            "uncomputed flips those; a flipped outcome of a measurement-based uncomputation applies its correction wrongly; an X that",
+            "reaches such a correction with the controls changed does so half the time (the outcome is random); an X that leaves",
+            "a difference on some branches (garbage no later gate undoes) stops those branches interfering from that diffusion on.",
+            "The index register's 2^n amplitudes are then simulated exactly with that error alone: h = (P₀ − P_e) / (P₀ − t/2^n), P₀",
+            "the error-free P(marked), P_e with the error (none after the last diffusion, near none for a sign flip on a few unmarked",
+            "indices, more than 1 where it unmarks the marked one and marks others). Any other harmful effect (inside a diffusion, on a",
+            "superposed qubit, a measured index) keeps h = 1; negative h counts as 0. With these h the form agrees with the circuit to",
+            "first order in p; the harms of several errors are taken as independent. The trace uses the ray's own marked set."));
         report.Text(Lines(
             $"**The check.** Each run measured {shots} times on the noisy full-state simulator (lookup oracle: fullstate engine; gate-level",
             "oracle: gate engine); the observed share of marked outcomes against the model. Acceptance: |observed − model| ≤ δ + z·σ with",
@@ -152,12 +166,13 @@ public static class NoiseReport
         if (implied.Count == 0) return null;
         var above = rows.Where(r => r.Exposure is not null).Count(r => r.Observed > r.Predicted(SearchModel.Counted));
         return Lines(
-            $"**Where the gate-level model misses.** On {above} of the {rows.Count(r => r.Exposure is not null)} gate-level rows the simulator finds more marked outcomes than the model:",
-            "the count errs towards harm, as its rules say. Read back through the same global depolarizing form (Φ from the observed share,",
-            $"then −ln Φ / (p · L)), these rows imply that {F(implied.Min(i => i.Implied), "0.00")} to {F(implied.Max(i => i.Implied), "0.00")} of a location's errors harm a run, where the count has",
-            $"{F(implied.Min(i => i.Counted), "0.00")} to {F(implied.Max(i => i.Counted), "0.00")}. Most errors the rules call harmful cost a run less than the uniform readout the form assumes:",
-            "a flipped data bit that changes the answer of a few primitives only, a phase error on a few indices, an error late in the last",
-            "iteration. The read-back is a diagnosis of one form on these rows (N = 4 and 8), not a fitted share; the engines do not use it."
+            $"**Where the gate-level model misses.** On {above} of the {rows.Count(r => r.Exposure is not null)} gate-level rows the simulator finds more marked outcomes than the model.",
+            "Read back through the same global depolarizing form (Φ from the observed share, then −ln Φ / (p · L)), these rows imply that",
+            $"{F(implied.Min(i => i.Implied), "0.00")} to {F(implied.Max(i => i.Implied), "0.00")} of a location's errors harm a run, where the graded count has",
+            $"{F(implied.Min(i => i.Counted), "0.00")} to {F(implied.Max(i => i.Counted), "0.00")} (the ungraded rule alone: the column ungraded count).",
+            "What is left: the harms of several errors in one run are not independent (two sign flips can cancel, and the form takes any",
+            "two harmful errors as a uniform readout), and the effects the grading cannot follow keep a whole harm. The read-back is a",
+            "diagnosis of one form on these rows (N = 4 and 8), not a fitted share; the engines do not use it."
                 + (above == rows.Count(r => r.Exposure is not null) ? "\nOn every gate-level row checked the simulated machine did at least as well as the model: where it misses, it is pessimistic." : ""));
     }
 
@@ -402,13 +417,15 @@ public static class NoiseReport
             "The QSearch run a machine would run (`MeasureGateGroverSearch`, the circuit `qrt estimate` prices), traced by the QDK for each",
             "circuit shape (N and coordinate bits) of the scenes up to N = 64, on the first camera ray of an 8x8 image that meets a",
             "primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with two iterations less the one with one):",
-            "L the noise locations, H the harm-weighted locations (a third per Pauli harmful there, by the counting rule of the model check below),",
+            "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below),",
             "and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)."));
-        var table = new TextTable("exposure", ["shape", "scenes", "L per iteration", "H per iteration", "H / L", "L outside (prepare, measure)", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
+        var table = new TextTable("exposure", ["shape", "scenes", "harm", "L per iteration", "H per iteration", "H / L", "L outside (prepare, measure)", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
         foreach (var (key, scenes, e) in exposures)
-            table.Row(key, scenes, F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"), F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"),
+            table.Row(key, scenes, e.Iteration.Harm is null ? "ungraded" : "graded", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"), F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"),
                 F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-5)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-4)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-3)), "0.000"));
         report.Table(table);
+        report.Text($"Shapes up to N = {NoiseBenchSettings.MaxGradedPrimitives} carry the graded harm of the model check below; larger ones the counting rule's whole harm per harmful Pauli"
+            + " (ungraded: pessimistic), as grading follows each error through the rest of the circuit and its time grows as the circuit's square.");
         var (largestKey, _, largest) = exposures.MaxBy(e => e.Exposure.Iteration.Locations);
         report.Text($"By gate kind, {largestKey}, one iteration (locations where the named Paulis harm; \"none\": no Pauli harms):");
         string[] patterns = ["XYZ", "XY", "YZ", ""];
