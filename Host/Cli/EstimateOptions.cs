@@ -27,12 +27,12 @@ public sealed class EstimateOptions
         Description = "Skip getCircuit (gates by kind and depth), which simulates the circuit once; keep the estimator's counts.",
     };
 
-    public readonly Option<ReportFormat> Format = new("--format")
+    public readonly Option<ReportFormat> Format = new Option<ReportFormat>("--format")
     {
         Description = "table (console), md (Markdown) or csv.",
         DefaultValueFactory = _ => ReportFormat.Table,
         HelpName = "table|md|csv",
-    };
+    }.Choices();
 
     public readonly Option<int> Workers = CommonOptions.Workers("Node bridge processes estimating circuits in parallel. Default: the core count.");
 

@@ -12,12 +12,12 @@ public sealed class QSearchOptionSet
         DefaultValueFactory = _ => QSearchSchedule.DefaultGrowth,
     }.Must(c => c > 1 && c < 2 ? null : $"--growth must satisfy 1 < c < 2, got {c}");
 
-    public readonly Option<MSetRule> Rule = new("--m-rule")
+    public readonly Option<MSetRule> Rule = new Option<MSetRule>("--m-rule")
     {
         Description = "How the bounds M_l grow: ceiling (Algorithm 1: ceil(c^l) from l = 1, capped at ceil(sqrt N)) or round (the paper's table 6: round(c^l) from l = 0, below ceil(sqrt N)).",
         DefaultValueFactory = _ => MSetRule.Ceiling,
         HelpName = "ceiling|round",
-    };
+    }.Choices();
 
     public void AddTo(Command command) => command.AddOptions(Growth, Rule);
 

@@ -24,12 +24,12 @@ public sealed class RenderOptionSet
         DefaultValueFactory = _ => DirectPass.DefaultIterations,
     }.Between(1, 64);
 
-    public readonly Option<TieBreak> TieBreak = new("--tie-break")
+    public readonly Option<TieBreak> TieBreak = new Option<TieBreak>("--tie-break")
     {
         Description = "Equal quantised depths: strict (the smaller primitive id wins, deterministic) or random (the paper: whichever is found first). The classical reference is always strict.",
         DefaultValueFactory = _ => Intersection.TieBreak.Strict,
         HelpName = "strict|random",
-    };
+    }.Choices();
 
     public readonly Option<bool> Neighbours = new("--neighbours")
     {
@@ -43,12 +43,12 @@ public sealed class RenderOptionSet
         DefaultValueFactory = _ => RenderDefaults.ShadowNeighbours,
     };
 
-    public readonly Option<StopMode> Stop = new("--stop")
+    public readonly Option<StopMode> Stop = new Option<StopMode>("--stop")
     {
         Description = "Termination criterion (sec. 6.2): after sn empty searches a ray is searched again with probability p̄^sn. off; paper (p̄ from eq. 10 at r = M_l / eq. 11, t uniform); exact (our search's exact miss rate, t uniform); scene (exact, for the t measured on a lattice of primary rays).",
         DefaultValueFactory = _ => RenderDefaults.Stop,
         HelpName = "off|paper|exact|scene",
-    };
+    }.Choices();
 
     public readonly Option<int?> Lattice = new Option<int?>("--lattice")
     {

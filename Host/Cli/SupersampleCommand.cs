@@ -32,7 +32,7 @@ public sealed class SupersampleCommand : Command
         DefaultValueFactory = _ => SupersampleSettings.DefaultSide,
     }.Between(1, 16);
 
-    private readonly Option<SupersampleMethod> _method = new("--method", "-m")
+    private readonly Option<SupersampleMethod> _method = new Option<SupersampleMethod>("--method", "-m")
     {
         Description = "mc (Monte Carlo), qss (quantum supersampling), qcoin (QCoin, Algorithm 1), mlae (maximum-likelihood amplitude estimation), "
             + "mlae-noise (MLAE for noisy machines: each level's head probability is that of a depolarized coin, "
@@ -40,7 +40,7 @@ public sealed class SupersampleCommand : Command
             + "iqae (iterative QAE, rerunning its last round against its bias), fae (faster AE, two stages), bae (Bayesian AE: grid posterior, next power by expected variance reduction), qss-bayes (QSS with one ancilla and Bayesian phase estimation instead of the counter), powerlaw (power-law AE, m_k = floor(k^((1-b)/(2b))), b = 0.3, maximum likelihood); docs/estimation.md compares them.",
         DefaultValueFactory = _ => SupersampleSettings.DefaultMethod,
         HelpName = "mc|qss|qcoin|mlae|mlae-noise|iqae|fae|bae|qss-bayes|powerlaw",
-    };
+    }.Choices();
 
     private readonly Option<long?> _queries = new Option<long?>("--queries", "-q")
     {
@@ -64,11 +64,11 @@ public sealed class SupersampleCommand : Command
         Description = $"qss with bit planes: each channel quantised to P bits, one QSS run per bit plane. Default: {SupersampleSettings.DefaultPlanes} (exact for 8-bit inputs); 1 for black-and-white images.",
     }.Between(1, 8);
 
-    private readonly Option<QssValues?> _qssValues = new("--qss-values")
+    private readonly Option<QssValues?> _qssValues = new Option<QssValues?>("--qss-values")
     {
         Description = "qss: planes (thesis: each bit plane a binary image counted through the lookup table; writes the confidence map) or continuous (paper 003 sec. 3.3: one run on the values, estimate sin²(πy/2^t)). Default: planes.",
         HelpName = "planes|continuous",
-    };
+    }.Choices();
 
     private readonly Option<string?> _output = CommonOptions.ImageOutput("PNG to write. Default: <input>-<method>.png in the current directory; bit-plane QSS also writes <output>-confidence.png. An existing file is replaced only if this program wrote it.");
 
