@@ -41,6 +41,7 @@ public sealed class EstimateCommandTests : IDisposable
     [InlineData("--models", "unknown qubit model 'qubit_gate_xx'", "--models", "qubit_gate_xx")]
     [InlineData("--iterations", "must be between 0 and 100000", "--iterations", "-1")]
     [InlineData("--iterations", "Cannot parse argument 'many'", "--iterations", "many")]
+    [InlineData("--format", "'foo' is not one of table, md, csv", "--format", "foo")]
     public void UsageErrors(string option, string problem, params string[] options) =>
         Outcome.Of(["estimate", Scene, .. options]).AssertUsageError(option, problem);
 

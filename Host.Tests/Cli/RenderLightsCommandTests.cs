@@ -23,6 +23,8 @@ public sealed class RenderLightsCommandTests : IDisposable
     [InlineData("--vpl", "-1")]
     [InlineData("--vpl", "4097")]
     [InlineData("--reference-samples", "-1")]
+    [InlineData("--tie-break", "3")]
+    [InlineData("--stop", "2")]
     public void UsageErrorsExitWithOne(string option, string value)
     {
         Assert.Equal(1, ConsoleCapture.Run(["render", AreaScene, "-e", "classical", "--size", "4", option, value, "-o", _scratch.File("x.png")]).Code);
