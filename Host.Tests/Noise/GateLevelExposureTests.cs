@@ -38,10 +38,13 @@ public class GateLevelExposureTests(FullStateFixture fixture)
         var traced = GateLevelExposure.Trace(Pool, GateLevelExposure.RepresentativeRay(scene), "test");
         // Z and CZ counts vary with the uncomputation's measured outcomes; everything else is fixed by the program.
         Assert.Equal(traced.Iteration.Locations, table.Iteration.Locations, 0.02 * traced.Iteration.Locations);
-        // The graded harm reads the corrections a trace's measured outcomes left in it, so two traces' differ more (by up to
-        // about a tenth here); the table must be graded, as the bench grades shapes up to N = 16.
+        // The graded harm reads the corrections a trace's measured outcomes left in it, and a table's per-iteration harm is the
+        // difference of its r = 2 and r = 1 traces, so two traces' differ by up to a factor 2 (about 760 and 1,480 per iteration
+        // at this shape): they are bounded, not matched. The table must be graded, as the bench grades shapes up to N = 16, and
+        // grading only lowers what the ungraded count calls harmful.
         Assert.NotNull(table.Iteration.Harm);
-        Assert.Equal(traced.Iteration.HarmWeight, table.Iteration.HarmWeight, 0.15 * traced.Iteration.HarmWeight);
+        Assert.InRange(table.Iteration.HarmWeight, 0.25 * traced.Iteration.Ungraded.HarmWeight, 1.02 * traced.Iteration.Ungraded.HarmWeight);
+        Assert.True(table.Outside.HarmWeight + table.Iteration.HarmWeight > 0, "a one-iteration run the table calls harmless");
         Assert.Equal(traced.Outside.Locations, table.Outside.Locations);
     }
 }
