@@ -68,6 +68,13 @@ internal static class ExportedDistribution
         return MaxDifference(FromHeader(file), onJsqubits ? OnJsqubits(broken, register) : OnQuantumCircuit(broken, register));
     }
 
+    /// <summary>
+    /// Asserts that two distributions of the measured register agree within <see cref="Tolerance"/>; the failure names both
+    /// (<paramref name="first"/>, <paramref name="second"/>) with their values, after <paramref name="what"/>.
+    /// </summary>
+    public static void AssertAgree(IReadOnlyDictionary<int, double> a, IReadOnlyDictionary<int, double> b, string first, string second, string what = "") =>
+        Assert.True(MaxDifference(a, b) <= Tolerance, $"{what}{first} {string.Join(' ', a)} vs {second} {string.Join(' ', b)}");
+
     /// <summary>The largest difference between two distributions over any value (a value one lacks has probability 0 there).</summary>
     public static double MaxDifference(IReadOnlyDictionary<int, double> a, IReadOnlyDictionary<int, double> b) =>
         a.Keys.Union(b.Keys).Max(v => Math.Abs(a.GetValueOrDefault(v) - b.GetValueOrDefault(v)));

@@ -53,17 +53,14 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var file = Export("search.qasm", "--pixel", pixel);
         var ideal = ExportedDistribution.FromHeader(file);
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
-        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
-            $"pixel {pixel} ({what}): header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        ExportedDistribution.AssertAgree(ideal, simulated, "header", "quantum-circuit", $"pixel {pixel} ({what}): ");
         // The second independent simulator reads the same file alike (it checks the larger circuits alone).
         var sparse = ExportedDistribution.OnJsqubits(file, "index");
-        Assert.True(ExportedDistribution.MaxDifference(simulated, sparse) <= ExportedDistribution.Tolerance,
-            $"pixel {pixel} ({what}): quantum-circuit {string.Join(' ', simulated)} vs jsqubits {string.Join(' ', sparse)}");
+        ExportedDistribution.AssertAgree(simulated, sparse, "quantum-circuit", "jsqubits", $"pixel {pixel} ({what}): ");
         // The search amplifies: the most likely value is far above uniform (1/5), so the check is not of a flat distribution.
         Assert.True(ideal.Values.Max() > 0.35, $"pixel {pixel}: no amplified value in {string.Join(' ', ideal)}");
         var closedForm = ExportedDistribution.GroverClosedForm(5, ExportedDistribution.MarkedFromHeader(file), 1);
-        Assert.True(ExportedDistribution.MaxDifference(ideal, closedForm) <= ExportedDistribution.Tolerance,
-            $"pixel {pixel} ({what}): header {string.Join(' ', ideal)} vs Grover's closed form {string.Join(' ', closedForm)}");
+        ExportedDistribution.AssertAgree(ideal, closedForm, "header", "Grover's closed form", $"pixel {pixel} ({what}): ");
     }
 
     /// <summary>
@@ -77,8 +74,7 @@ public sealed class OpenQasmOnQuantumCircuitTests : IDisposable
         var file = SmallGridScene.ExportSearch(_scratch, 2, 6, 1, 0, name: "miss.qasm");
         var ideal = ExportedDistribution.FromHeader(file);
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "index");
-        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
-            $"header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        ExportedDistribution.AssertAgree(ideal, simulated, "header", "quantum-circuit");
         Assert.Contains("iterations: 0 (no primitive is marked", File.ReadAllText(file), StringComparison.Ordinal);
         // Nothing marked: 1/6 on each of the six primitives.
         var uniform = ExportedDistribution.GroverClosedForm(6, [], 0);

@@ -35,15 +35,12 @@ public sealed class QssExportOnQuantumCircuitTests : IDisposable
         var file = Export(values, counterBits);
         var ideal = ExportedDistribution.FromHeader(file);
         var simulated = ExportedDistribution.OnQuantumCircuit(file, "counter");
-        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
-            $"header {string.Join(' ', ideal)} vs quantum-circuit {string.Join(' ', simulated)}");
+        ExportedDistribution.AssertAgree(ideal, simulated, "header", "quantum-circuit");
         // jsqubits reads the same gates (rz, ry, controlled rotations' decompositions) alike.
         var sparse = ExportedDistribution.OnJsqubits(file, "counter");
-        Assert.True(ExportedDistribution.MaxDifference(simulated, sparse) <= ExportedDistribution.Tolerance,
-            $"quantum-circuit {string.Join(' ', simulated)} vs jsqubits {string.Join(' ', sparse)}");
+        ExportedDistribution.AssertAgree(simulated, sparse, "quantum-circuit", "jsqubits");
         var analytic = CoinProbability.QssReadout(values.Average(), counterBits).Select((p, y) => (y, p)).ToDictionary(e => e.y, e => e.p);
-        Assert.True(ExportedDistribution.MaxDifference(ideal, analytic) <= ExportedDistribution.Tolerance,
-            $"header {string.Join(' ', ideal)} vs closed form {string.Join(' ', analytic)}");
+        ExportedDistribution.AssertAgree(ideal, analytic, "header", "closed form");
         // Not a flat distribution: the readout concentrates (uniform would be 1/2^t everywhere).
         Assert.True(ideal.Values.Max() > 1.5 / (1 << counterBits), $"no peak in {string.Join(' ', ideal)}");
     }

@@ -33,12 +33,10 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     {
         var ideal = ExportedDistribution.FromHeader(file);
         var simulated = ExportedDistribution.OnJsqubits(file, "index");
-        Assert.True(ExportedDistribution.MaxDifference(ideal, simulated) <= ExportedDistribution.Tolerance,
-            $"{what}: header {string.Join(' ', ideal)} vs jsqubits {string.Join(' ', simulated)}");
+        ExportedDistribution.AssertAgree(ideal, simulated, "header", "jsqubits", $"{what}: ");
         var (count, iterations) = HeaderCountAndIterations(file);
         var closedForm = ExportedDistribution.GroverClosedForm(count, ExportedDistribution.MarkedFromHeader(file), iterations);
-        Assert.True(ExportedDistribution.MaxDifference(ideal, closedForm) <= ExportedDistribution.Tolerance,
-            $"{what}: header {string.Join(' ', ideal)} vs Grover's closed form {string.Join(' ', closedForm)}");
+        ExportedDistribution.AssertAgree(ideal, closedForm, "header", "Grover's closed form", $"{what}: ");
     }
 
     [Theory]

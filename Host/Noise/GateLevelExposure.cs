@@ -57,8 +57,10 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
             var summary = bridge.Circuit($"{QSharpOperations.MeasureGateGroverSearch}({argument}, {run.R.ToString(CultureInfo.InvariantCulture)})", timeout: TimeSpan.FromMinutes(30), exposure: true, marked: marked);
             readings[run.R, run.Copy] = NoiseExposure.Parse(summary["exposure"]!, summary["harm"]);
         });
-        var traced = Enumerable.Range(0, 3).Select(r => readings[r, 1] is { } other && (other.Harm is not null && (readings[r, 0].Harm is null || other.HarmWeight < readings[r, 0].HarmWeight))
-            ? other : readings[r, 0]).ToArray();
+        // A run's second reading replaces its first where it is graded and less harmful (or the first is not graded).
+        static bool Better(NoiseExposure? other, NoiseExposure first) =>
+            other is { Harm: not null } && (first.Harm is null || other.HarmWeight < first.HarmWeight);
+        var traced = Enumerable.Range(0, 3).Select(r => Better(readings[r, 1], readings[r, 0]) ? readings[r, 1] : readings[r, 0]).ToArray();
         var iteration = traced[2] - traced[1];
         return new GateLevelExposure(shape, graded ? traced[0] with { Harm = (traced[1] - iteration).Harm } : traced[0], iteration);
     }
