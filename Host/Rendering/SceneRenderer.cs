@@ -23,10 +23,12 @@ public static class SceneRenderer
         // Stages in order: camera rays, the pass plan (its stop rule may calibrate on camera rays), primary rays,
         // specular rays, shadow rays, area light, indirect light, shading. Each pass's metrics are kept in that order.
         var passes = new List<PassMetrics>();
-        var cameraRays = CameraRays.For(scene.Camera, options.Width, options.Height);
+        // Camera and shadow rays are computed from their pixel or surface point when read, never all held (docs/rendering.md).
+        var cameraRays = CameraRays.Computed(scene.Camera, options.Width, options.Height);
         var plan = PlanPasses(scene, search, options, cameraRays, passes, progress);
-        var radiance = new Vec3[cameraRays.Length];
-        var allowed = (options.Budget ?? 0) * cameraRays.Length;
+        var pixels = cameraRays.Count;
+        var radiance = new Vec3[pixels];
+        var allowed = (options.Budget ?? 0) * pixels;
         var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
         var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, (allowed - Spent(passes)) / 3);
         var visible = TraceShadowRays(plan, points, passes, allowed - Spent(passes));
@@ -35,14 +37,14 @@ public static class SceneRenderer
         AddAreaLight(plan, points, extra, passes);
         AddIndirectLight(plan, points, extra, passes);
         Shade(scene, points, visible, extra, radiance);
-        return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, cameraRays.Length, options.Budget));
+        return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, pixels, options.Budget));
     }
 
     // The expected wrong rays of the passes so far: the budget left is what they did not spend.
     private static double Spent(List<PassMetrics> passes) => passes.Sum(p => p.ExpectedWrong);
 
     // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
-    private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, Ray[] cameraRays, List<PassMetrics> passes, IRenderProgress? progress)
+    private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, IReadOnlyList<Ray> cameraRays, List<PassMetrics> passes, IRenderProgress? progress)
     {
         var geometry = new SceneGeometry(scene);
         var planned = options.PlannedMiss is { } miss
@@ -58,26 +60,27 @@ public static class SceneRenderer
 
     // Camera rays to their closest hits. Each hit is a surface point carrying 1 − mirror of its pixel; a mirror's
     // reflection, queued for the specular pass, carries the mirror share. A ray that meets an area light first shows the light.
-    private static (List<SurfacePoint> Points, List<SpecularRayWorkItem> Specular) TracePrimaryRays(PassPlan plan, Ray[] cameraRays, Vec3[] radiance, List<PassMetrics> passes,
+    private static (List<SurfacePoint> Points, List<SpecularRayWorkItem> Specular) TracePrimaryRays(PassPlan plan, IReadOnlyList<Ray> cameraRays, Vec3[] radiance, List<PassMetrics> passes,
         double allowance)
     {
         var (hits, metrics) = TracePass.Run("primary", plan.Search, plan.Geometry, cameraRays,
-            plan.Trace(Enumerable.Range(0, cameraRays.Length).ToArray(), allowance: allowance), plan.Progress);
+            plan.Trace(Enumerable.Range(0, cameraRays.Count).ToArray(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
-        var points = new List<SurfacePoint>(cameraRays.Length);
+        var points = new List<SurfacePoint>(cameraRays.Count);
         var specular = new List<SpecularRayWorkItem>();
-        for (var pixel = 0; pixel < cameraRays.Length; pixel++)
+        for (var pixel = 0; pixel < cameraRays.Count; pixel++)
         {
-            if (SeenLight(plan.Scene, cameraRays[pixel], hits[pixel]) is { } light)
+            var ray = cameraRays[pixel];
+            if (SeenLight(plan.Scene, ray, hits[pixel]) is { } light)
             {
                 radiance[pixel] = light;
                 continue;
             }
             if (hits[pixel] is not { } hit) continue;
             var material = plan.Scene.Rectangles[hit.Primitive].Material;
-            var point = SurfacePoint.Of(pixel, cameraRays[pixel], hit, plan.Scene.Rectangles[hit.Primitive], 1 - material.Mirror);
+            var point = SurfacePoint.Of(pixel, ray, hit, plan.Scene.Rectangles[hit.Primitive], 1 - material.Mirror);
             if (point.Weight > 0) points.Add(point);
-            if (material.IsMirror) specular.Add(new(pixel, material.Mirror, SecondaryRays.Specular(cameraRays[pixel], point)));
+            if (material.IsMirror) specular.Add(new(pixel, material.Mirror, SecondaryRays.Specular(ray, point)));
         }
         return (points, specular);
     }
@@ -90,6 +93,8 @@ public static class SceneRenderer
         var rays = queue.Select(w => w.Ray).ToArray();
         var (hits, metrics) = TracePass.Run("specular", plan.Search, plan.Geometry, rays, plan.Trace(queue.Select(w => w.Pixel).ToArray(), allowance: allowance), plan.Progress);
         passes.Add(metrics);
+        // Room for the reflected points at once: growing by doubling would hold up to twice the points.
+        points.Capacity = Math.Max(points.Capacity, points.Count + queue.Count);
         for (var k = 0; k < queue.Count; k++)
         {
             var (pixel, mirror, ray) = queue[k];
@@ -115,21 +120,24 @@ public static class SceneRenderer
         var scene = plan.Scene;
         var pointLights = scene.Lights.Count;
         var lightCount = pointLights + scene.DirectionalLights.Count;
-        // The rays on all cores, each in its (point, light) slot; then queued in that order.
-        var slots = new Ray?[points.Count * lightCount];
+        Ray? RayAt(int k, int l) => l < pointLights
+            ? SecondaryRays.Shadow(points[k], scene.Lights[l])
+            : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
+        // Which (point, light) slots have a ray, on all cores; then queued in slot order. The rays themselves are
+        // computed again when the pass reads them: a byte per slot held, not a ray.
+        var present = new bool[points.Count * lightCount];
         Parallel.For(0, points.Count, k =>
         {
-            for (var l = 0; l < lightCount; l++)
-                slots[k * lightCount + l] = l < pointLights
-                    ? SecondaryRays.Shadow(points[k], scene.Lights[l])
-                    : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
+            for (var l = 0; l < lightCount; l++) present[k * lightCount + l] = RayAt(k, l) is not null;
         });
-        var queue = new List<ShadowRayWorkItem>(slots.Length);
+        var queue = new List<ShadowRayWorkItem>(present.Count(p => p));
         for (var k = 0; k < points.Count; k++)
             for (var l = 0; l < lightCount; l++)
-                if (slots[k * lightCount + l] is { } ray) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1), ray));
-        var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, queue.Select(w => w.Ray).ToList(),
-            plan.Shadow(queue.Select(w => w.Pixel).ToList(), queue.Select(w => w.Channel).ToList(), allowance: allowance), plan.Progress);
+                if (present[k * lightCount + l]) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1)));
+        var rays = new ComputedList<Ray>(queue.Count, i => RayAt(queue[i].Point, queue[i].Light)!);
+        var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, rays,
+            plan.Shadow(new ComputedList<int>(queue.Count, i => queue[i].Pixel), new ComputedList<int>(queue.Count, i => queue[i].Channel), allowance: allowance),
+            plan.Progress);
         passes.Add(metrics);
         var visible = new bool[points.Count, lightCount];
         for (var i = 0; i < queue.Count; i++) visible[queue[i].Point, queue[i].Light] = !occluded[i];
@@ -191,7 +199,7 @@ public static class SceneRenderer
     }
 
     // The termination criterion's rule, or null; Scene mode first measures t on a lattice of primary rays.
-    private static StopRule? StopRuleFor(IHitSearch search, SceneGeometry geometry, Ray[] primaryRays, RenderOptions options,
+    private static StopRule? StopRuleFor(IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> primaryRays, RenderOptions options,
         QSearchSchedule? planned, List<PassMetrics> passes)
     {
         if (options.Stop == StopMode.Off) return null;
