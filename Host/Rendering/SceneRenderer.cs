@@ -126,24 +126,24 @@ public static class SceneRenderer
         Ray? RayAt(int k, int l) => l < pointLights
             ? SecondaryRays.Shadow(points[k], scene.Lights[l])
             : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-        // Which (point, light) slots have a ray, on all cores; then queued in slot order. The rays themselves are
-        // computed again when the pass reads them: a byte per slot held, not a ray.
+        // Which (point, light) slots have a ray, on all cores; then the slots with one, in order. Only the slot is kept per
+        // shadow ray: the ray, its pixel and its layout channel (the light, and whether the point is primary or reflected,
+        // so gathering compares rays towards the same light from the same kind of point) are computed when the pass reads them.
         var present = new bool[points.Count * lightCount];
         Parallel.For(0, points.Count, k =>
         {
             for (var l = 0; l < lightCount; l++) present[k * lightCount + l] = RayAt(k, l) is not null;
         });
-        var queue = new List<ShadowRayWorkItem>(present.Count(p => p));
-        for (var k = 0; k < points.Count; k++)
-            for (var l = 0; l < lightCount; l++)
-                if (present[k * lightCount + l]) queue.Add(new(k, l, points[k].Pixel, 2 * l + (k < points.PrimaryCount ? 0 : 1)));
-        var rays = new ComputedList<Ray>(queue.Count, i => RayAt(queue[i].Point, queue[i].Light)!);
-        var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, rays,
-            plan.Shadow(new ComputedList<int>(queue.Count, i => queue[i].Pixel), new ComputedList<int>(queue.Count, i => queue[i].Channel), allowance: allowance),
-            plan.Progress);
+        var slots = new int[present.Count(p => p)];
+        for (int slot = 0, i = 0; slot < present.Length; slot++)
+            if (present[slot]) slots[i++] = slot;
+        var rays = new ComputedList<Ray>(slots.Length, i => RayAt(slots[i] / lightCount, slots[i] % lightCount)!);
+        var pixels = new ComputedList<int>(slots.Length, i => points[slots[i] / lightCount].Pixel);
+        var channels = new ComputedList<int>(slots.Length, i => 2 * (slots[i] % lightCount) + (slots[i] / lightCount < points.PrimaryCount ? 0 : 1));
+        var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, rays, plan.Shadow(pixels, channels, allowance: allowance), plan.Progress);
         passes.Add(metrics);
         var visible = new bool[points.Count, lightCount];
-        for (var i = 0; i < queue.Count; i++) visible[queue[i].Point, queue[i].Light] = !occluded[i];
+        for (var i = 0; i < slots.Length; i++) visible[slots[i] / lightCount, slots[i] % lightCount] = !occluded[i];
         return visible;
     }
 
