@@ -86,14 +86,18 @@ public static class IteratedSearch
         return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated) { SettledRays = settledRays };
     }
 
-    // The first round's rays: every ray not settled by other means.
+    // The first round's rays: every ray not settled by other means. Counted first, so a pass's level of a few rays among
+    // millions holds no list sized for all of them.
     private static int[] Unsettled(int rays, Func<int, bool>? settled)
     {
         if (settled is null) return [.. Enumerable.Range(0, rays)];
-        var unsettled = new List<int>(rays);
+        var count = 0;
         for (var i = 0; i < rays; i++)
-            if (!settled(i)) unsettled.Add(i);
-        return [.. unsettled];
+            if (!settled(i)) count++;
+        var unsettled = new int[count];
+        for (int i = 0, k = 0; k < count; i++)
+            if (!settled(i)) unsettled[k++] = i;
+        return unsettled;
     }
 
     // The next round's rays among this round's, with their kept tables.
