@@ -48,9 +48,10 @@ public static class BudgetRounds
             // A ray less likely wrong than the likeliest will still be after this round's confirmation waits: confirming
             // that one again next round buys more of the expectation per query. The last round takes what it needs.
             var floor = round == MaxRounds - 1 ? 0 : expected.Max() * miss;
-            foreach (var i in Enumerable.Range(0, rays.Count).Where(i => expected[i] > 0).OrderByDescending(i => expected[i]).ThenBy(i => i))
+            // Only rays at or above the floor can be taken: sorting just those keeps the round's memory to the few it may take.
+            foreach (var i in Enumerable.Range(0, rays.Count).Where(i => expected[i] > 0 && expected[i] >= floor).OrderByDescending(i => expected[i]).ThenBy(i => i))
             {
-                if (rest <= allowance || expected[i] < floor) break;
+                if (rest <= allowance) break;
                 selected.Add(i);
                 rest -= expected[i] * (1 - miss);
             }

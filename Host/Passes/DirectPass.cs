@@ -26,7 +26,8 @@ public static class DirectPass
         var misses = new int[shadowRays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, CheapConfirmation.Levels(options, shadowRays.Count));
+        var levels = CheapConfirmation.Levels(options, shadowRays.Count); // each ray's lattice level, with a lattice
+        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, levels);
         void Apply(int i, RayTable table, HitOutcome outcome) => occluders[i] ??= outcome.Primitive;
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
@@ -58,10 +59,8 @@ public static class DirectPass
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
                 levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, shadowRays.Count), ledger.CheapPrior(level + 1));
-                var inLevel = new bool[shadowRays.Count];
-                foreach (var i in levelRays) inLevel[i] = true;
                 var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, settled: i => occluders[i] is not null || !inLevel[i], schedule: schedule,
+                    level == 0 ? gather : null, settled: i => occluders[i] is not null || levels![i] != level, schedule: schedule,
                     ledger: ledger, settle: settle);
                 return (searched, tests, updated);
             });

@@ -24,7 +24,8 @@ public static class TracePass
         var misses = new int[rays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, CheapConfirmation.Levels(options, rays.Count));
+        var levels = CheapConfirmation.Levels(options, rays.Count); // each ray's lattice level, with a lattice
+        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, levels);
         HitWindow Window(int i, RayTable table) =>
             Hit.Beyond(rays[i], hits[i], table.Count, options.TieBreak);
         void Apply(int i, RayTable table, HitOutcome outcome)
@@ -60,10 +61,8 @@ public static class TracePass
                 var (tests, updated) = level == lattice.Levels ? (0L, 0L)
                     : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
                 levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, rays.Count), ledger.CheapPrior(level + 1));
-                var inLevel = new bool[rays.Count];
-                foreach (var i in levelRays) inLevel[i] = true;
                 var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, settled: i => !inLevel[i], schedule: schedule, ledger: ledger, settle: settle);
+                    level == 0 ? gather : null, settled: i => levels![i] != level, schedule: schedule, ledger: ledger, settle: settle);
                 return (searched, tests, updated);
             });
         }
