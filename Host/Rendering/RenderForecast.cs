@@ -11,9 +11,10 @@ namespace QuantumRayTracing.Rendering;
 /// a smaller warm-up run; the time is a line through the two, in the pixel count.
 /// </summary>
 /// <remarks>
-/// The renderer keeps every ray of a pass and every surface point until shading, so its memory grows with the rays it
-/// traces: <see cref="BytesPerRay"/> per ray above <see cref="BaseBytes"/>, rounded up from the peak resident memory
-/// `bench scale` measures (docs/scale.md). The calibration gives the rays per pixel. Larger renders spend less time per
+/// The renderer holds every surface point until shading and, while a pass runs, that pass's state per ray (camera and
+/// shadow rays themselves are computed when read), so its memory grows with the rays it traces: <see cref="BytesPerRay"/>
+/// per ray above <see cref="BaseBytes"/>, rounded up from the largest peak resident memory `bench scale` measured
+/// (4096x4096: about 100 bytes a ray; docs/scale.md, docs/rendering.md). The calibration gives the rays per pixel. Larger renders spend less time per
 /// pixel than the calibration's, so the time is an upper estimate (docs/scale.md sets each forecast beside the measured times).
 /// </remarks>
 public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakBytes, TimeSpan Time)
@@ -25,7 +26,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
 
     public const long BaseBytes = 256L << 20;
 
-    public const long BytesPerRay = 512;
+    public const long BytesPerRay = 104;
 
     /// <summary>Whether <paramref name="settings"/> ask for a render large enough to forecast: on an engine whose work runs here in C#.</summary>
     public static bool Applies(RenderRunSettings settings) =>
