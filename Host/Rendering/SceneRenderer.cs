@@ -28,8 +28,8 @@ public static class SceneRenderer
         var radiance = new Vec3[cameraRays.Length];
         var allowed = (options.Budget ?? 0) * cameraRays.Length;
         var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
-        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, (allowed - Spent(passes)) / 3);
-        var visible = TraceShadowRays(plan, points, passes, allowed - Spent(passes));
+        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, Left(allowed, passes) / 3);
+        var visible = TraceShadowRays(plan, points, passes, Left(allowed, passes));
         var budgeted = passes.ToArray();
         var extra = DirectionalLight(scene, points, visible);
         AddAreaLight(plan, points, extra, passes);
@@ -38,8 +38,9 @@ public static class SceneRenderer
         return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, cameraRays.Length, options.Budget));
     }
 
-    // The expected wrong rays of the passes so far: the budget left is what they did not spend.
-    private static double Spent(List<PassMetrics> passes) => passes.Sum(p => p.ExpectedWrong);
+    // The expected wrong rays of the passes so far: the budget left is what they did not spend (none, when a pass
+    // ended over its allowance).
+    private static double Left(double allowed, List<PassMetrics> passes) => Math.Max(0, allowed - passes.Sum(p => p.ExpectedWrong));
 
     // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
     private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, Ray[] cameraRays, List<PassMetrics> passes, IRenderProgress? progress)
