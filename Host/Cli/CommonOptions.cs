@@ -107,8 +107,8 @@ public static class CommonOptions
     public static Option<int[]> SquareSizes(string description, int[] fallback, int max = MaxSquareSide) => List("--sizes", description, fallback, "size", 1, max);
 
     /// <summary>Seeds 1..n: how many random cases per configuration.</summary>
-    public static Option<int> SeedCount(string description, int fallback, int max) =>
-        new Option<int>("--seeds") { Description = description, DefaultValueFactory = _ => fallback }.Between(1, max);
+    public static Option<int> SeedCount(string description, int fallback, int max, string name = "--seeds") =>
+        new Option<int>(name) { Description = description, DefaultValueFactory = _ => fallback }.Between(1, max);
 
     public static Option<int> Trials(string description, int fallback, int max) =>
         new Option<int>("--trials") { Description = description, DefaultValueFactory = _ => fallback }.Between(10, max);
