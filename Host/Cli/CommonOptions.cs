@@ -1,5 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Rendering;
@@ -93,6 +94,17 @@ public static class CommonOptions
     public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "") =>
         new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true }
             .Must(values => (values ?? []).Any(n => n < min || n > max) ? $"{name}: each {each} must be between {min} and {max}{why}" : null);
+
+    /// <summary>`--engines`: engines out of <paramref name="allowed"/>, space- or comma-separated, each named once.</summary>
+    public static Option<EngineKind[]> Engines(string description, EngineKind[] fallback, EngineKind[] allowed) =>
+        new("--engines")
+        {
+            Description = description,
+            DefaultValueFactory = _ => fallback,
+            AllowMultipleArgumentsPerToken = true,
+            HelpName = string.Join("|", allowed.Select(EngineFactory.Name)),
+            CustomParser = r => OptionText.ParseEngines(r, "--engines", allowed),
+        };
 
     /// <summary>A pixel's subpixel values, space-separated: 1 to 64 values, each in [0, 1].</summary>
     public static Option<double[]> SubpixelValues(string description, bool required = false)
