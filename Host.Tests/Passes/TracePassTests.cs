@@ -161,4 +161,17 @@ public class TracePassTests
         using var classical = new ClassicalHitSearch();
         Assert.Equal(1, TracePass.Run("primary", classical, geometry, TieRay, new PassOptions(1, TieBreak.Random)).Hits[0]?.Primitive);
     }
+
+    [Fact]
+    public void APassLeftNoAllowanceByEarlierPassesEndsWithoutRounds()
+    {
+        // A primary pass that ends over its allowance leaves the later passes less than nothing (the render now gives them
+        // none); a pass with no rays (a scene without mirrors has no specular rays) must then end at once instead of looking
+        // for the likeliest wrong ray among none.
+        var search = Quantum(1);
+        var (hits, metrics) = TracePass.Run("specular", search, new SceneGeometry(Qornell8), [], new PassOptions(1, Allowance: -1));
+        Assert.Empty(hits);
+        Assert.Equal(0, metrics.ExpectedWrong);
+        Assert.Equal(0, metrics.RoundIntersections);
+    }
 }

@@ -33,6 +33,18 @@ public sealed class SearchRunTests
     public void MarkedIndicesMustBeDistinctAndBelowN(int[] marked, string? problem) =>
         Assert.Equal(problem, SearchRunSettings.MarkedProblem(64, marked));
 
+    [Theory]
+    [InlineData(new[] { "-m", "70" }, "--marked: index 70 is outside 0..63")]
+    [InlineData(new[] { "-n", "16", "-m", "16" }, "--marked: index 16 is outside 0..15")]
+    public void TheCommandChecksMarkedIndicesAgainstN(string[] options, string problem)
+    {
+        // Without -n the rule checks against the default N = 64, not against 0.
+        var (code, error) = QuantumRayTracing.Tests.Cli.ConsoleCapture.Run(["search", "-e", "analytic", "-s", "1", .. options]);
+        Assert.Equal(1, code);
+        Assert.Contains(problem, error);
+        Assert.Equal(0, QuantumRayTracing.Tests.Cli.ConsoleCapture.Run(["search", "-e", "analytic", "-s", "1", "-m", "63"]).Code);
+    }
+
     [Fact]
     public void NoMarkedIndexIsNeverFound()
     {

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Rendering;
@@ -94,6 +95,17 @@ public static class CommonOptions
         new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true }
             .Must(values => (values ?? []).Any(n => n < min || n > max) ? $"{name}: each {each} must be between {min} and {max}{why}" : null);
 
+    /// <summary>`--engines`: engines out of <paramref name="allowed"/>, space- or comma-separated, each named once.</summary>
+    public static Option<EngineKind[]> Engines(string description, EngineKind[] fallback, EngineKind[] allowed) =>
+        new("--engines")
+        {
+            Description = description,
+            DefaultValueFactory = _ => fallback,
+            AllowMultipleArgumentsPerToken = true,
+            HelpName = string.Join("|", allowed.Select(EngineFactory.Name)),
+            CustomParser = r => OptionText.ParseEngines(r, "--engines", allowed),
+        };
+
     /// <summary>A pixel's subpixel values, space-separated: 1 to 64 values, each in [0, 1].</summary>
     public static Option<double[]> SubpixelValues(string description, bool required = false)
         => new Option<double[]>("--values") { Description = description, AllowMultipleArgumentsPerToken = true, HelpName = "F", Required = required }
@@ -107,8 +119,8 @@ public static class CommonOptions
     public static Option<int[]> SquareSizes(string description, int[] fallback, int max = MaxSquareSide) => List("--sizes", description, fallback, "size", 1, max);
 
     /// <summary>Seeds 1..n: how many random cases per configuration.</summary>
-    public static Option<int> SeedCount(string description, int fallback, int max) =>
-        new Option<int>("--seeds") { Description = description, DefaultValueFactory = _ => fallback }.Between(1, max);
+    public static Option<int> SeedCount(string description, int fallback, int max, string name = "--seeds") =>
+        new Option<int>(name) { Description = description, DefaultValueFactory = _ => fallback }.Between(1, max);
 
     public static Option<int> Trials(string description, int fallback, int max) =>
         new Option<int>("--trials") { Description = description, DefaultValueFactory = _ => fallback }.Between(10, max);

@@ -61,14 +61,13 @@ public static class OptionText
         var kinds = new List<EngineKind>();
         foreach (var text in result.Tokens.SelectMany(t => t.Value.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)))
         {
-            var match = Enum.GetNames<EngineKind>().FirstOrDefault(n => string.Equals(n, text, StringComparison.OrdinalIgnoreCase));
-            if (match is null)
+            var index = Array.FindIndex(all, k => string.Equals(k.ToString(), text, StringComparison.OrdinalIgnoreCase));
+            if (index < 0)
             {
                 result.AddError($"{name}: '{text}' is not one of {string.Join(", ", all.Select(EngineFactory.Name))}");
                 return [];
             }
-            var kind = Enum.Parse<EngineKind>(match);
-            if (!kinds.Contains(kind)) kinds.Add(kind);
+            if (!kinds.Contains(all[index])) kinds.Add(all[index]);
         }
         if (kinds.Count == 0) result.AddError($"{name}: name at least one engine");
         return kinds.OrderBy(k => Array.IndexOf(all, k)).ToArray();

@@ -11,10 +11,12 @@ namespace QuantumRayTracing.Cli;
 /// </summary>
 public sealed class SearchCommand : Command
 {
+    private const int DefaultCount = 64;
+
     private readonly Option<int> _count = new Option<int>("--count", "-n")
     {
         Description = "N, the number of indices searched (1 to 4096).",
-        DefaultValueFactory = _ => 64,
+        DefaultValueFactory = _ => DefaultCount,
     }.Between(1, 4096);
 
     private readonly Option<int[]> _marked = new("--marked", "-m")
@@ -44,7 +46,9 @@ public sealed class SearchCommand : Command
         _json.AddTo(this);
         this.AddRule(r =>
         {
-            if (SearchRunSettings.MarkedProblem(r.GetValue(_count), r.GetValue(_marked) ?? []) is { } problem) r.AddError(problem);
+            // A rule sees an option left out as 0, not as its default.
+            var count = r.GetResult(_count) is null ? DefaultCount : r.GetValue(_count);
+            if (SearchRunSettings.MarkedProblem(count, r.GetValue(_marked) ?? []) is { } problem) r.AddError(problem);
         });
         SetAction(Execute);
     }

@@ -40,7 +40,8 @@ public static class BudgetRounds
         {
             var expected = Enumerable.Range(0, rays.Count).Select(ledger.Expected).ToArray();
             var rest = expected.Sum();
-            if (rest <= allowance) break;
+            // Nothing left to buy: a pass whose allowance earlier passes overspent has none, and rounds cannot help.
+            if (rest <= allowance || rest <= 0) break;
             var schedule = Cheapest(search, count, full, cheap);
             var miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
             var cost = search.EmptySearchCost(count, schedule);

@@ -31,9 +31,9 @@ public static class SceneRenderer
         var allowed = (options.Budget ?? 0) * pixels;
         var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
         FinishedPass.Release(pixels);
-        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, (allowed - Spent(passes)) / 3);
+        var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, Left(allowed, passes) / 3);
         FinishedPass.Release(pixels);
-        var visible = TraceShadowRays(plan, points, passes, allowed - Spent(passes));
+        var visible = TraceShadowRays(plan, points, passes, Left(allowed, passes));
         FinishedPass.Release(pixels);
         var budgeted = passes.ToArray();
         var extra = DirectionalLight(scene, points, visible);
@@ -43,8 +43,9 @@ public static class SceneRenderer
         return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, pixels, options.Budget));
     }
 
-    // The expected wrong rays of the passes so far: the budget left is what they did not spend.
-    private static double Spent(List<PassMetrics> passes) => passes.Sum(p => p.ExpectedWrong);
+    // The expected wrong rays of the passes so far: the budget left is what they did not spend (none, when a pass
+    // ended over its allowance).
+    private static double Left(double allowed, List<PassMetrics> passes) => Math.Max(0, allowed - passes.Sum(p => p.ExpectedWrong));
 
     // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
     private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, IReadOnlyList<Ray> cameraRays, List<PassMetrics> passes, IRenderProgress? progress)

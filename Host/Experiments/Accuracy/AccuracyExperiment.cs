@@ -27,7 +27,7 @@ public static class AccuracyExperiment
         if (settings.GrowthOnly)
         {
             var growthReport = new Report(Title);
-            Growth(growthReport, settings.Growth, progress);
+            Growth(growthReport, settings.Growth, settings.GrowthSeeds, progress);
             return growthReport;
         }
         var seeds = Enumerable.Range(1, settings.Seeds).Select(s => (ulong)s).ToArray();
@@ -81,7 +81,7 @@ public static class AccuracyExperiment
         }
         report.Table(qornell);
 
-        Growth(report, settings.Growth, progress);
+        Growth(report, settings.Growth, settings.GrowthSeeds, progress);
 
         var alternativeSizes = settings.Sizes.Where(s => s <= AlternativesUpTo).ToArray();
         var alternativeSeeds = seeds.Take(AlternativeSeeds).ToArray();
@@ -122,7 +122,7 @@ public static class AccuracyExperiment
     }
 
     // Where the default's queries go on scattered scenes of each N in primitives at GrowthSize², beside the other ways to keep the budget.
-    private static void Growth(Report report, IReadOnlyList<int> primitives, Action<string> progress)
+    private static void Growth(Report report, IReadOnlyList<int> primitives, int seeds, Action<string> progress)
     {
         report.Heading("Where the budget spends its queries as N grows");
         report.Text($"""
@@ -154,6 +154,37 @@ public static class AccuracyExperiment
                 Invariant($"{free.Result.Total.PerRayConservative:0.0}"), Invariant($"{free.Result.Budget.ExpectedWrongPixels:0.0}"), Invariant($"{free.Error.DifferentPixels}")]);
         }
         report.Table(growth);
+        SeedSpread(report, primitives, seeds, progress);
+    }
+
+    // The default on seeds 1..seeds of each N: one scene's cost depends on how many of its cheap confirmations happen to find
+    // something, since each find charges its whole stratum and the rounds then confirm every ray of it.
+    private static void SeedSpread(Report report, IReadOnlyList<int> primitives, int seeds, Action<string> progress)
+    {
+        report.Text($$"""
+            The default on seeds 1 to {{seeds}} of each N (same scenes and size): Int/Ray (conservative) by seed, its mean and range, the
+            budget rounds' share of it, and the expected and measured wrong pixels summed over the seeds (the budget: {{Invariant($"{AccuracyBudget.Target * GrowthSize * GrowthSize * seeds:0.0}")}}).
+            A scene costs more where its cheap confirmations happen to find something: each find raises the charge of its whole
+            stratum (every ray of that lattice level on the cheap path), and the rounds then confirm rays of that stratum until
+            the charge is within the allowance.
+            """);
+        var table = new TextTable("growth-seeds", ["N", "Int/Ray by seed", "mean", "min", "max", "budget rounds (mean)", "expected", "wrong"]);
+        foreach (var n in primitives)
+        {
+            var runs = Enumerable.Range(1, seeds).Select(seed =>
+            {
+                progress($"{n} random rectangles, {GrowthSize}x{GrowthSize}, seed {seed} of {seeds}");
+                var scene = RandomScene.Scattered(n, (ulong)seed);
+                var reference = RenderMeasurement.Reference(scene, RenderOptions.PaperPipeline(GrowthSize, GrowthSize));
+                return RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), AccuracyBenchmark.Standard[0].Options(GrowthSize, 1), reference);
+            }).ToArray();
+            var perRay = runs.Select(r => r.Result.Total.PerRayConservative).ToArray();
+            table.Row([Invariant($"{n:N0}"), string.Join(" ", perRay.Select(x => Invariant($"{x:0.0}"))), Invariant($"{perRay.Average():0.0}"),
+                Invariant($"{perRay.Min():0.0}"), Invariant($"{perRay.Max():0.0}"),
+                Invariant($"{runs.Average(r => (double)r.Result.Total.RoundIntersections / Math.Max(1, r.Result.Total.Rays)):0.0}"),
+                Invariant($"{runs.Sum(r => r.Result.Budget.ExpectedWrongPixels):0.0}"), Invariant($"{runs.Sum(r => r.Error.DifferentPixels)}")]);
+        }
+        report.Table(table);
     }
 
     private static string KindName(RandomSceneKind kind) => kind switch

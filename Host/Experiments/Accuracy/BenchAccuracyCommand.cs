@@ -19,13 +19,16 @@ public sealed class BenchAccuracyCommand : Command
     private readonly Option<int[]> _growth = CommonOptions.List("--growth", "Scattered random scene sizes N of the table of where the budget spends its queries (space-separated).",
         AccuracySettings.DefaultGrowth, "N", 1, 8192);
 
+    private readonly Option<int> _growthSeeds = CommonOptions.SeedCount("Scattered scenes per N (seeds 1..n) of the default's spread in the table of where the budget spends its queries.",
+        AccuracySettings.DefaultGrowthSeeds, max: 1000, name: "--growth-seeds");
+
     private readonly Option<bool> _growthOnly = new("--growth-only") { Description = "Measure only the table of where the budget spends its queries (--growth)." };
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/accuracy.md");
 
     public BenchAccuracyCommand() : base("accuracy", "Wrong pixels and Int/Ray of the default pipeline on random scenes by size, beside --lattice 0 and the paper's plain pipeline (analytic engine).")
     {
-        this.AddOptions(_sizes, _seeds, _deepSize, _growth, _growthOnly);
+        this.AddOptions(_sizes, _seeds, _deepSize, _growth, _growthSeeds, _growthOnly);
         _report.AddTo(this, scenes: false, seed: false, workers: false);
         SetAction(Execute);
     }
@@ -37,6 +40,7 @@ public sealed class BenchAccuracyCommand : Command
         {
             Growth = parse.GetValue(_growth)!,
             GrowthOnly = parse.GetValue(_growthOnly),
+            GrowthSeeds = parse.GetValue(_growthSeeds),
         };
         var report = AccuracyExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));

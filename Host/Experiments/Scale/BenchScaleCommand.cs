@@ -13,13 +13,8 @@ public sealed class BenchScaleCommand : Command
     private readonly Option<int[]> _sizes = CommonOptions.List("--sizes", "Square image sizes (space-separated); from 1024 on a render is forecast and may be refused.",
         ScaleSettings.DefaultSizes, "size", 1, Scenes.SceneLoader.MaxImageSide);
 
-    private readonly Option<EngineKind[]> _engines = new("--engines")
-    {
-        Description = "Engines measured (space- or comma-separated): classical, bvh, analytic, randomized.",
-        DefaultValueFactory = _ => ScaleSettings.DefaultEngines,
-        AllowMultipleArgumentsPerToken = true,
-        CustomParser = r => OptionText.ParseEngines(r, "--engines", [EngineKind.Classical, EngineKind.Bvh, EngineKind.Analytic, EngineKind.Randomized]),
-    };
+    private readonly Option<EngineKind[]> _engines = CommonOptions.Engines("Engines measured (space- or comma-separated).",
+        ScaleSettings.DefaultEngines, [EngineKind.Classical, EngineKind.Bvh, EngineKind.Analytic, EngineKind.Randomized]);
 
     private readonly BenchReportOptions _report = new(CommandLine, "docs/scale.md");
 

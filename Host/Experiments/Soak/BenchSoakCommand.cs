@@ -24,13 +24,8 @@ public sealed class BenchSoakCommand : Command
         Description = "Directory of scene files (every *.json in it). Default: Scenes/ of the repository holding the current directory.",
     };
 
-    private readonly Option<EngineKind[]> _engines = new("--engines")
-    {
-        Description = "Engines to soak (space- or comma-separated). Default: all five.",
-        DefaultValueFactory = _ => SoakSettings.AllEngines,
-        AllowMultipleArgumentsPerToken = true,
-        HelpName = "classical|randomized|analytic|fullstate|gate",
-    };
+    private readonly Option<EngineKind[]> _engines = CommonOptions.Engines("Engines to soak (space- or comma-separated). Default: all five with randomness or a simulator, not bvh.",
+        SoakSettings.AllEngines, [.. SoakSettings.AllEngines, EngineKind.Bvh]);
 
     private readonly Option<ulong[]> _seeds = new("--seeds")
     {
@@ -75,7 +70,6 @@ public sealed class BenchSoakCommand : Command
     {
         this.AddOptions(_scenesToSoak, _engines, _seeds, _short, _size, _gateSize, _areaSamples, _vpl, _gateBudget, _maxQubits);
         _report.AddTo(this, scenes: false, seed: false, cluster: true);
-        _engines.CustomParser = r => OptionText.ParseEngines(r, _engines.Name, SoakSettings.AllEngines);
         _seeds.Validators.Add(r =>
         {
             if (!r.TryGetValue<ulong[]>(out var given)) return;
