@@ -14,7 +14,7 @@ namespace QuantumRayTracing.Rendering;
 /// The renderer holds every surface point until shading and, while a pass runs, that pass's state per ray (camera and
 /// shadow rays themselves are computed when read), so its memory grows with the rays it traces: <see cref="BytesPerRay"/>
 /// per ray above <see cref="BaseBytes"/>, rounded up from the largest peak resident memory `bench scale` measured
-/// (4096x4096: about 100 bytes a ray; docs/scale.md, docs/rendering.md). The calibration gives the rays per pixel. Larger renders spend less time per
+/// (4096x4096: up to 87 bytes a ray, 289 a pixel; docs/scale.md, docs/rendering.md). The calibration gives the rays per pixel. Larger renders spend less time per
 /// pixel than the calibration's, so the time is an upper estimate (docs/scale.md sets each forecast beside the measured times).
 /// </remarks>
 public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakBytes, TimeSpan Time)
@@ -26,7 +26,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
 
     public const long BaseBytes = 256L << 20;
 
-    public const long BytesPerRay = 104;
+    public const long BytesPerRay = 96;
 
     /// <summary>Whether <paramref name="settings"/> ask for a render large enough to forecast: on an engine whose work runs here in C#.</summary>
     public static bool Applies(RenderRunSettings settings) =>
