@@ -125,8 +125,7 @@ public sealed class RayLedger
     /// <summary>
     /// Takes a closer hit that neighbour gathering found for <paramref name="ray"/> by a classical test. If its searches since
     /// its last find came back empty, they missed it: a miss gathering repaired, which its stratum's expectation no longer
-    /// counts. The ray then starts an episode after a find, as after a search's find, and nothing vouches for it yet: its
-    /// empty searches are explained by the miss gathering found, so they say little about anything closer still.
+    /// counts. The ray then starts an episode after a find, as after a search's find, and nothing vouches for it yet.
     /// </summary>
     public void Repaired(int ray)
     {
