@@ -42,6 +42,23 @@ public sealed class UnitaryLookupExportTests : IDisposable
         Assert.True(unitary.Conditionals < measured.Conditionals, $"{unitary.Conditionals} feedback branches with unitary lookups, {measured.Conditionals} without");
     }
 
+    /// <summary>
+    /// Every export unloads by a second lookup, so compact (the engines' default, which unloads by measurement)
+    /// exports as narrow: the same file but for the oracle line, which says so.
+    /// </summary>
+    [Fact]
+    public void CompactExportsAsNarrow()
+    {
+        var scene = DefaultScene.Load(new FileInfo(OpenQasmOnQuantumCircuitTests.TinyScene(_scratch)));
+        using var bridge = new QSharpBridge();
+        string Export(OracleConstruction construction) =>
+            CircuitExporter.Export(bridge, SearchExport.ForPixel(scene, 4, 4, 3, 0, construction, null), ExportFormat.Qasm2);
+        var compact = Export(OracleConstruction.Compact);
+        Assert.Contains("// oracle: compact (2 axes tested, 2 bound register(s)), unload by a second lookup (the engines' compact oracle unloads by measurement, an unlookup the QDK cannot compile to QIR; so this is the narrow oracle's circuit)\n", compact, StringComparison.Ordinal);
+        static string[] Body(string text) => WithoutIdealLine(text).Where(line => !line.StartsWith("// oracle: ", StringComparison.Ordinal)).ToArray();
+        Assert.Equal(Body(Export(OracleConstruction.Narrow)), Body(compact));
+    }
+
     private static string[] WithoutIdealLine(string text) =>
         text.Split('\n').Where(line => !line.StartsWith("// ideal outcome probabilities:", StringComparison.Ordinal)).ToArray();
 }
