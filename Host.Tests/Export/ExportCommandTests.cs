@@ -25,7 +25,6 @@ public sealed class ExportCommandTests : IDisposable
     }
 
     [Theory]
-    [InlineData("--oracle", "its measured unlookup does not compile to QIR", "--pixel", "1,1", "--oracle", "compact")]
     [InlineData("--oracle", "unknown construction 'smallest'", "--pixel", "1,1", "--oracle", "smallest")]
     [InlineData("--iterations", "must be between 0 and 64", "--pixel", "1,1", "--iterations", "65")]
     [InlineData("--pixel", "expected X,Y", "--pixel", "1")]

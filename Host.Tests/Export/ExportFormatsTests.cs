@@ -5,9 +5,9 @@ using QuantumRayTracing.Tests.Cli;
 namespace QuantumRayTracing.Tests.Export;
 
 /// <summary>
-/// The formats read back by other tools: OpenQASM 2 and 3 through the QDK's OpenQASM import (the device
-/// experiment's OpenQASM 2 also run there: its header promises index 2 with probability 1), QIR through
-/// LLVM's assembler when it is installed and through our reader.
+/// The formats read back by other tools: OpenQASM 2 and 3 run on the QDK's OpenQASM import (the device
+/// experiment's header promises index 2 with probability 1; a search's OpenQASM 3 against its header by
+/// shot counts), QIR through LLVM's assembler when it is installed and through our reader.
 /// </summary>
 public sealed class ExportFormatsTests : IDisposable
 {
@@ -30,26 +30,68 @@ public sealed class ExportFormatsTests : IDisposable
         return (file, File.ReadAllText(file));
     }
 
-    [Fact]
-    public void DeviceExperimentQasm2RunsOnTheQdkAsItsHeaderSays()
+    [Theory]
+    [InlineData("qasm2")]
+    [InlineData("qasm3")]
+    public void DeviceExperimentRunsOnTheQdkAsItsHeaderSays(string format)
     {
-        var file = Export("device.qasm", "export", "device-experiment");
+        var file = Export($"device-{format}.qasm", "export", "device-experiment", "--format", format);
         var ideal = ExportedDistribution.FromHeader(file);
         Assert.True(Math.Abs(ideal[2] - 1) <= 1e-9, $"header: {string.Join(' ', ideal)}");
-        // 100 shots all reading 2 = [bit 0 Zero, bit 1 One]; a circuit that did not amplify (uniform: 1/4 each) passes with probability 4^-100.
-        var reply = NodeScript.Run("qdk-openqasm.mjs", file, "--shots", "100");
-        var shots = reply["shots"]!.AsObject();
-        Assert.Single(shots);
-        Assert.Equal(100, shots["[Zero, One]"]!.GetValue<int>());
+        // 100 shots all reading 2; a circuit that did not amplify (uniform: 1/4 each) passes with probability 4^-100.
+        var shots = IndexShots(file, 100);
+        Assert.Equal([2], shots.Keys);
+        Assert.Equal(100, shots[2]);
     }
 
+    /// <summary>
+    /// The 5-square search (pixel (3, 0), r = 1) as OpenQASM 3 keeps the feedback of its comparators' ANDs and runs
+    /// on the QDK's OpenQASM import as its header says: index 3 with probability 0.968, 0, 1, 2 and 4 with 0.008
+    /// each, 5 to 7 (past N = 5, which the preparation never reaches) never. The QDK's shots take no seed, so the
+    /// check is statistical, with bounds whose false-failure rate is below 1e-10 in all (Chernoff bounds on the
+    /// binomial counts of 1,000 shots): no shot on a value the header leaves off, at least 920 on index 3 (mean 968:
+    /// at most 80 misses where 32 are expected, probability below 1e-11), at most 40 on each other value (mean 8,
+    /// probability below 1e-14). The same search with r = 0 (index 3 with probability 0.2) must fail the bounds.
+    /// </summary>
     [Fact]
-    public void SearchQasm3KeepsFeedbackAndCompilesOnTheQdk()
+    public void SearchQasm3RunsOnTheQdkAsItsHeaderSays()
     {
         var (file, text) = ExportTinySearch("search3.qasm", "qasm3");
-        Assert.Contains("OPENQASM 3.0;", text, StringComparison.Ordinal);
         Assert.Contains("if (uncompute) { cz ", text, StringComparison.Ordinal);
-        Assert.True(NodeScript.Run("qdk-openqasm.mjs", file)["qirInstructions"]!.GetValue<int>() > 100);
+        var ideal = ExportedDistribution.FromHeader(file);
+        Assert.True(Math.Abs(ideal[3] - 0.968) <= 1e-9, $"header: {string.Join(' ', ideal)}");
+        Assert.Null(MissedBounds(ideal, IndexShots(file, 1000)));
+        var none = Export("none3.qasm", "export", "search", OpenQasmOnQuantumCircuitTests.TinyScene(_scratch), "--size", "4", "--pixel", "3,0", "--iterations", "0", "--format", "qasm3");
+        Assert.NotNull(MissedBounds(ideal, IndexShots(none, 1000)));
+    }
+
+    /// <summary>What 1,000 shots of the 5-square search break of the bounds its header sets (above); null: none.</summary>
+    private static string? MissedBounds(IReadOnlyDictionary<int, double> ideal, Dictionary<int, int> shots)
+    {
+        var seen = string.Join(' ', shots.OrderBy(s => s.Key));
+        if (shots.Keys.Any(v => !ideal.ContainsKey(v))) return $"a shot on a value the header leaves off: {seen}";
+        if (shots.GetValueOrDefault(3) < 920) return $"index 3 read {shots.GetValueOrDefault(3)} times in 1000, expected about 968: {seen}";
+        if (shots.Any(s => s.Key != 3 && s.Value > 40)) return $"another index read more than 40 times in 1000: {seen}";
+        return null;
+    }
+
+    /// <summary>
+    /// How often each value of the index register is read in <paramref name="count"/> shots of the file on the QDK's
+    /// OpenQASM import. A shot prints the file's bit registers, the index first (bit 0 first): "[Zero, One]", or
+    /// "([Zero, One], One)" when an OpenQASM 3 file also declares its bit uncompute.
+    /// </summary>
+    private static Dictionary<int, int> IndexShots(string file, int count)
+    {
+        var histogram = NodeScript.Run("qdk-openqasm.mjs", file, "--shots", count.ToString(System.Globalization.CultureInfo.InvariantCulture))["shots"]!.AsObject();
+        var byIndex = new Dictionary<int, int>();
+        foreach (var (key, value) in histogram)
+        {
+            var bits = key[(key.IndexOf('[', StringComparison.Ordinal) + 1)..key.IndexOf(']', StringComparison.Ordinal)].Split(", ");
+            var index = bits.Select((bit, k) => bit == "One" ? 1 << k : 0).Sum();
+            byIndex[index] = byIndex.GetValueOrDefault(index) + value!.GetValue<int>();
+        }
+        Assert.Equal(count, byIndex.Values.Sum());
+        return byIndex;
     }
 
     [Fact]

@@ -68,6 +68,35 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
         Assert.True(difference > 1e-2, $"dropping the first ccx changed the distribution by only {difference}");
     }
 
+    /// <summary>
+    /// Qornell-8, the smallest standard scene, with the two constructions whose searches fit jsqubits: device (24
+    /// qubits) and baseline (30). Its default construction's search (narrow, 34 qubits) is out of jsqubits' reach;
+    /// these check the same reader and writers on the standard scene's tables and the constructions' own gates.
+    /// Every camera ray of the closed box meets a wall, so each marks at least one primitive: pixel (0, 0) marks
+    /// one (r = 2), (5, 5) two (r = 1, P(marked) = 1), (6, 6) another one. A dropped Toffoli must fail.
+    /// </summary>
+    [Theory]
+    [InlineData("device", "0,0", 1)]
+    [InlineData("device", "5,5", 2)]
+    [InlineData("device", "6,6", 1)]
+    [InlineData("baseline", "0,0", 1)]
+    [InlineData("baseline", "5,5", 2)]
+    public void Qornell8OnJsqubitsIsTheHeadersAndGroversClosedForm(string oracle, string pixel, int marked)
+    {
+        var file = _scratch.File($"qornell8-{oracle}-{pixel.Replace(',', '-')}.qasm");
+        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+        var (code, error) = ConsoleCapture.Run("export", "search", scene, "--size", "8", "--pixel", pixel, "--oracle", oracle, "-o", file);
+        Assert.True(code == 0, error);
+        Assert.Equal(marked, ExportedDistribution.MarkedFromHeader(file).Length);
+        Assert.Contains($"// oracle: {oracle} ", File.ReadAllText(file), StringComparison.Ordinal);
+        AssertJsqubitsHeaderAndClosedFormAgree(file, $"Qornell-8, {oracle}, pixel {pixel}");
+        if (pixel == "0,0" && oracle == "device")
+        {
+            var difference = ExportedDistribution.HeaderDifferenceWithout(file, l => l.StartsWith("ccx ", StringComparison.Ordinal), "index", _scratch.File("broken.qasm"), onJsqubits: true);
+            Assert.True(difference > 1e-2, $"dropping the first ccx changed the distribution by only {difference}");
+        }
+    }
+
     [Fact]
     public void WrongIterationCountIsRejected()
     {

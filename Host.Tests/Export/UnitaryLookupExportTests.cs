@@ -7,10 +7,10 @@ using QuantumRayTracing.Tests.Cli;
 namespace QuantumRayTracing.Tests.Export;
 
 /// <summary>
-/// The OpenQASM 2 export of a search compiles Q# <c>ApplyGateGroverSearchWithUnitaryLookups</c> (lookups
-/// uncomputed by Toffolis) instead of <c>ApplyGateGroverSearch</c> with its measured uncomputations made
-/// unitary afterwards: the file's gates must be the same, gate for gate, and its QIR must hold fewer
-/// feedback branches (what makes the compile faster).
+/// The export of a search compiles Q# <c>ApplyGateGroverSearchWithUnitaryLookups</c> (lookups uncomputed by
+/// Toffolis) instead of the gate engine's <c>ApplyGateGroverSearch</c>: made unitary, the two programs must have
+/// the same gates, gate for gate, and the exported QIR must hold fewer feedback branches (what makes the
+/// compile faster).
 /// </summary>
 public sealed class UnitaryLookupExportTests : IDisposable
 {
@@ -29,16 +29,34 @@ public sealed class UnitaryLookupExportTests : IDisposable
     public void Qasm2HasTheGatesOfTheMeasuredProgramMadeUnitary(string name)
     {
         var subject = Subject(name);
-        Assert.NotNull(subject.UnitaryApply);
+        Assert.Contains(QSharpOperations.ApplyGateGroverSearchWithUnitaryLookups + "(", subject.Apply, StringComparison.Ordinal);
+        var gateEngine = subject with { Apply = subject.Apply.Replace(QSharpOperations.ApplyGateGroverSearchWithUnitaryLookups + "(", QSharpOperations.ApplyGateGroverSearch + "(", StringComparison.Ordinal) };
         using var bridge = new QSharpBridge();
         var fast = CircuitExporter.Export(bridge, subject, ExportFormat.Qasm2);
-        var passed = CircuitExporter.Export(bridge, subject with { UnitaryApply = null }, ExportFormat.Qasm2);
+        var passed = CircuitExporter.Export(bridge, gateEngine, ExportFormat.Qasm2);
         // The ideal-probabilities line is simulated separately for each program and may differ in the last bits.
         Assert.Equal(WithoutIdealLine(passed), WithoutIdealLine(fast));
 
-        var measured = GateCounts.Of(QirReader.Read(CircuitExporter.Export(bridge, subject, ExportFormat.Qir)));
-        var unitary = GateCounts.Of(QirReader.Read(CircuitExporter.Export(bridge, subject with { Apply = subject.UnitaryApply! }, ExportFormat.Qir)));
+        var measured = GateCounts.Of(QirReader.Read(CircuitExporter.Export(bridge, gateEngine, ExportFormat.Qir)));
+        var unitary = GateCounts.Of(QirReader.Read(CircuitExporter.Export(bridge, subject, ExportFormat.Qir)));
         Assert.True(unitary.Conditionals < measured.Conditionals, $"{unitary.Conditionals} feedback branches with unitary lookups, {measured.Conditionals} without");
+    }
+
+    /// <summary>
+    /// Every export unloads by a second lookup, so compact (the engines' default, which unloads by measurement)
+    /// exports as narrow: the same file but for the oracle line, which says so.
+    /// </summary>
+    [Fact]
+    public void CompactExportsAsNarrow()
+    {
+        var scene = DefaultScene.Load(new FileInfo(OpenQasmOnQuantumCircuitTests.TinyScene(_scratch)));
+        using var bridge = new QSharpBridge();
+        string Export(OracleConstruction construction) =>
+            CircuitExporter.Export(bridge, SearchExport.ForPixel(scene, 4, 4, 3, 0, construction, null), ExportFormat.Qasm2);
+        var compact = Export(OracleConstruction.Compact);
+        Assert.Contains("// oracle: compact (2 axes tested, 2 bound register(s)), unload by a second lookup (the engines' compact oracle unloads by measurement, an unlookup the QDK cannot compile to QIR; so this is the narrow oracle's circuit)\n", compact, StringComparison.Ordinal);
+        static string[] Body(string text) => WithoutIdealLine(text).Where(line => !line.StartsWith("// oracle: ", StringComparison.Ordinal)).ToArray();
+        Assert.Equal(Body(Export(OracleConstruction.Narrow)), Body(compact));
     }
 
     private static string[] WithoutIdealLine(string text) =>

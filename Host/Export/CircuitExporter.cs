@@ -15,7 +15,7 @@ public static class CircuitExporter
         var reply = bridge.Send(new JsonObject
         {
             ["method"] = "export",
-            ["apply"] = subject.ApplyFor(format),
+            ["apply"] = subject.Apply,
             ["qubits"] = subject.RegisterQubits + subject.UnmeasuredQubits,
             ["measured"] = subject.RegisterQubits,
             ["profile"] = "adaptive_ri",

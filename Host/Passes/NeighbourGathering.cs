@@ -10,12 +10,9 @@ namespace QuantumRayTracing.Passes;
 /// </summary>
 public static class NeighbourGathering
 {
-    /// <summary>
-    /// Closest hits: a neighbour's primitive replaces the ray's hit if it comes first in the window's order; <paramref name="changed"/>,
-    /// if given, is told of each ray whose hit was replaced.
-    /// </summary>
+    /// <summary>Closest hits: a neighbour's primitive replaces the ray's hit if it comes first in the window's order.</summary>
     public static (long Tests, long Updated) ForClosest(
-        SceneGeometry geometry, IReadOnlyList<Ray> rays, Hit?[] hits, PixelLayout layout, TieBreak tieBreak, Action<int>? changed = null)
+        SceneGeometry geometry, IReadOnlyList<Ray> rays, Hit?[] hits, PixelLayout layout, TieBreak tieBreak)
     {
         long tests = 0, updated = 0;
         Span<int> neighbours = stackalloc int[4];
@@ -23,7 +20,7 @@ public static class NeighbourGathering
         for (var i = 0; i < rays.Count; i++)
         {
             var triedCount = 0;
-            var replaced = false;
+            var changed = false;
             var count = layout.Neighbours(i, neighbours);
             for (var n = 0; n < count; n++)
             {
@@ -33,11 +30,9 @@ public static class NeighbourGathering
                 tests++;
                 if (RayTable.Test(geometry, rays[i], held.Primitive, window) is not { } row) continue;
                 hits[i] = new Hit(held.Primitive, row.Depth, row.Distance, rays[i].At(row.Distance));
-                replaced = true;
+                changed = true;
             }
-            if (!replaced) continue;
-            updated++;
-            changed?.Invoke(i);
+            if (changed) updated++;
         }
         return (tests, updated);
     }

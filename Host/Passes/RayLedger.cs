@@ -16,10 +16,7 @@ namespace QuantumRayTracing.Passes;
 /// its neighbours predicted seldom has) and, for a cheap confirmation, the ray's lattice level (its agreeing neighbours
 /// 2^level pixels away: the nearer they are, the less often they mislead, and the budget rounds then search again
 /// only the levels whose finds ask for it).
-/// Summed over a stratum before any budget round this is about the stratum's finds · W / (1 − W), the episodes its searches
-/// lost. Neighbour gathering finds some of them by a classical test (a closer hit, or an occluder, among a neighbour's
-/// primitives after the ray's empty search): those repairs are counted and taken off the stratum's sum, never below what
-/// half a find would charge it. It still errs high: W is the worst miss over t, and every wrong ray counts as a wrong pixel.
+/// Summed over a stratum before any budget round this is about the stratum's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
 /// A certain answer (a classical test of every primitive) is never wrong.
 /// </summary>
 public sealed class RayLedger
@@ -39,9 +36,7 @@ public sealed class RayLedger
     private readonly bool[] _afterFind;
     private readonly IReadOnlyList<int>? _levels;
     private readonly long[] _found;
-    private readonly long[] _repaired;
     private readonly double[] _prior;
-    private readonly double[] _scale;
     private readonly Func<QSearchSchedule?, double> _worstMiss;
     private readonly CheapConfirmation? _cheap;
     private readonly bool _findEnds;
@@ -57,9 +52,7 @@ public sealed class RayLedger
         _levels = levels;
         var strata = CheapFirst + 1 + (levels is null || levels.Count == 0 ? 0 : levels.Max());
         _found = new long[strata];
-        _repaired = new long[strata];
         _prior = new double[strata];
-        _scale = new double[strata];
         _trailing = Enumerable.Repeat(1.0, rays).ToArray();
         _path = new int[rays];
         _done = new bool[rays];
@@ -112,32 +105,8 @@ public sealed class RayLedger
         else _trailing[ray] *= _worstMiss(schedule);
     }
 
-    /// <summary>
-    /// Marks <paramref name="ray"/>'s answer as certain: found by a classical test (a neighbour's occluder), never wrong. If its
-    /// searches since its last find came back empty, they missed that occluder: a miss gathering repaired (<see cref="Repaired"/>).
-    /// </summary>
-    public void MarkCertain(int ray)
-    {
-        CountRepair(ray);
-        _done[ray] = true;
-    }
-
-    /// <summary>
-    /// Takes a closer hit that neighbour gathering found for <paramref name="ray"/> by a classical test. If its searches since
-    /// its last find came back empty, they missed it: a miss gathering repaired, which its stratum's expectation no longer
-    /// counts. The ray then starts an episode after a find, as after a search's find, and nothing vouches for it yet.
-    /// </summary>
-    public void Repaired(int ray)
-    {
-        if (_frozen || _path[ray] == Unsearched || _done[ray]) return;
-        CountRepair(ray);
-        (_trailing[ray], _afterFind[ray]) = (1, true);
-    }
-
-    private void CountRepair(int ray)
-    {
-        if (!_frozen && _path[ray] != Unsearched && !_done[ray] && _trailing[ray] < 1) _repaired[Stratum(ray)]++;
-    }
+    /// <summary>Marks <paramref name="ray"/>'s answer as certain: found by a classical test (a neighbour's occluder), never wrong.</summary>
+    public void MarkCertain(int ray) => _done[ray] = true;
 
     /// <summary>
     /// Fixes each stratum's π from the searches so far (the pass's own rounds): later searches (budget rounds) only
@@ -146,20 +115,8 @@ public sealed class RayLedger
     public void Freeze()
     {
         if (_frozen) return;
-        var (priors, floors) = (Priors(), Priors(withoutFinds: true));
+        var priors = Priors();
         for (var stratum = 0; stratum < _prior.Length; stratum++) _prior[stratum] = priors[stratum] ?? 0;
-        // The stratum's open episodes are expected to hold about finds · W / (1 − W) misses; those gathering repaired are
-        // known and no longer there. What is left is never taken below what a stratum without finds is charged.
-        var (charged, floor) = (new double[_prior.Length], new double[_prior.Length]);
-        for (var i = 0; i < Rays; i++)
-        {
-            if (_path[i] == Unsearched || _done[i]) continue;
-            var stratum = Stratum(i);
-            charged[stratum] += Posterior(_prior[stratum], _trailing[i]);
-            floor[stratum] += Posterior(floors[stratum] ?? 0, _trailing[i]);
-        }
-        for (var stratum = 0; stratum < _prior.Length; stratum++)
-            _scale[stratum] = charged[stratum] <= 0 ? 1 : Math.Min(1, Math.Max(floor[stratum], charged[stratum] - _repaired[stratum]) / charged[stratum]);
         _frozen = true;
     }
 
@@ -171,7 +128,7 @@ public sealed class RayLedger
 
     // Each stratum's π from its finds and open episodes (null when it has none), in one sweep over the rays: per stratum
     // its open rays, those with trailing misses and their trailing W summed in ray order.
-    private double?[] Priors(bool withoutFinds = false)
+    private double?[] Priors()
     {
         var strata = _prior.Length;
         var (open, completed, trailing) = (new long[strata], new long[strata], new double[strata]);
@@ -192,7 +149,7 @@ public sealed class RayLedger
             var w = completed[stratum] == 0 ? 0 : trailing[stratum] / completed[stratum];
             // Half a find and one episode more than seen (Jeffreys' prior on the find rate): a stratum whose searches found
             // nothing has not shown that its rays are right, only that few of them are wrong.
-            priors[stratum] = Math.Min(PriorCap, ((withoutFinds ? 0 : _found[stratum]) + 0.5) / ((episodes + 1) * (1 - w)));
+            priors[stratum] = Math.Min(PriorCap, (_found[stratum] + 0.5) / ((episodes + 1) * (1 - w)));
         }
         return priors;
     }
@@ -210,12 +167,9 @@ public sealed class RayLedger
     {
         if (!_frozen) throw new InvalidOperationException("freeze the ledger first");
         if (_path[ray] == Unsearched || _done[ray]) return 0;
-        var stratum = Stratum(ray);
-        return _scale[stratum] * Posterior(_prior[stratum], _trailing[ray]);
+        var (pi, w) = (_prior[Stratum(ray)], _trailing[ray]);
+        return pi * w / (1 - pi + pi * w);
     }
-
-    // A ray's probability of being wrong given its trailing misses W, when a share π of its stratum's episodes had something to find.
-    private static double Posterior(double pi, double w) => pi * w / (1 - pi + pi * w);
 
     /// <summary>The expected wrong rays of the pass.</summary>
     public double ExpectedTotal

@@ -39,7 +39,7 @@ public static class TracePass
             return outcome.Certain || options.Stop?.Continue(misses[i], vouched?[i] == true) == false;
         }
         Func<(long, long)>? gather = options.Neighbours is { } neighbours
-            ? () => NeighbourGathering.ForClosest(geometry, rays, hits, neighbours, options.TieBreak, ledger.Repaired)
+            ? () => NeighbourGathering.ForClosest(geometry, rays, hits, neighbours, options.TieBreak)
             : null;
         Func<int, int, QSearchSchedule?> schedule = (_, _) => options.Schedule;
         var settle = ClassicalSettle.Rule(options, search, geometry.Count, worstMiss, (round, i) => schedule(round, i), i => misses[i],

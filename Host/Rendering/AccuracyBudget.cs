@@ -7,8 +7,7 @@ namespace QuantumRayTracing.Rendering;
 /// The accuracy budget and the expected number of wrong pixels a render leaves: the sum over its primary, specular
 /// and shadow passes of each ray's probability of being wrong (<see cref="RayLedger"/>: from the worst miss rates of
 /// its trailing empty searches and how often its path's searches found something). It is an expectation, not a
-/// count, and errs high: every wrong ray is taken for a wrong pixel, and the misses neighbour gathering repairs are
-/// taken off only as far as the ledger's floor allows. With a
+/// count, and errs high: every wrong ray is taken for a wrong pixel, and neighbour gathering repairs nothing. With a
 /// budget the passes hold it (<see cref="BudgetRounds"/>): the primary pass may spend half, the specular pass a third of
 /// what is left, the shadow pass the rest. Sampled light (area lights, VPLs) is not held to it: its Monte Carlo
 /// estimate is compared with the converged reference instead.

@@ -21,10 +21,13 @@ namespace QuantumRayTracing.Intersection {
 
     /// # Summary
     /// `ApplyGateGroverSearch` with every table lookup uncomputed by Toffoli gates instead of by
-    /// measurement and feedback: the same state, and the same gates once `qrt export` has made the
-    /// library's measured AND uncomputations unitary. It is what the OpenQASM 2 export compiles:
-    /// the QDK's QIR compile takes time quadratic in the number of feedback branches, and the
-    /// lookups hold most of them.
+    /// measurement and feedback, and the loaded registers cleared by a second lookup whatever the
+    /// construction: the same state on `index`, and for the narrow construction the same gates once
+    /// `qrt export` has made the library's measured AND uncomputations unitary. It is what `qrt export`
+    /// compiles: the QDK's QIR compile takes time quadratic in the number of feedback branches, and
+    /// the lookups hold most of them; and the measured unlookup (`Adjoint Select`), which computes its
+    /// phase fix-up classically from the measurement results, stops the QDK's QIR compile with an
+    /// internal error.
     ///
     /// # Input
     /// ## input
@@ -35,7 +38,8 @@ namespace QuantumRayTracing.Intersection {
     /// Index register of ceil(log2 N) qubits, in |0⟩.
     operation ApplyGateGroverSearchWithUnitaryLookups(input : IntersectionInput, iterations : Int, index : Qubit[]) : Unit {
         let tables = PrepareIntersectionTables(input);
-        ApplyGateGroverSearchWith(new IntersectionTables { ...tables, UnitaryLookups = true }, Length(input.Bounds), iterations, index);
+        // The tables of a measured unload are those of the lookup unload (narrow is compact unloading by lookup).
+        ApplyGateGroverSearchWith(new IntersectionTables { ...tables, UnitaryLookups = true, MeasuredUnload = false }, Length(input.Bounds), iterations, index);
     }
 
     /// # Summary
