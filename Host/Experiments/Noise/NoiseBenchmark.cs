@@ -42,7 +42,7 @@ public static class NoiseBenchmark
                     Say($"gate-level noise exposure of {group.Key} ({name})");
                     exposures.Add((group.Key, string.Join(", ", group.Select(g => g.Name)),
                         GateLevelExposure.Trace(pool, GateLevelExposure.RepresentativeRay(scene), $"{name}'s circuit, {group.Key}",
-                            graded: scene.Rectangles.Count <= NoiseBenchSettings.MaxGradedPrimitives)));
+                            fraction: NoiseBenchSettings.GradedFraction(scene.Rectangles.Count))));
                 }
             }
             if (settings.Parts.Contains("model"))

@@ -78,8 +78,8 @@ public static class NoiseReport
             "the measurement. A noise location is one qubit of one operation (a CCX is 3, a measurement 1).",
             "- Gate-level oracle (the default, `--noise-oracle gate-level`): the harm is counted location by location from the extracted circuit",
             "  (the counting rule and its grading below): Φ = Π over locations and Paulis P of (1 − p_P)^h, h the graded harm of P there,",
-            "  F from one iteration (the circuit with two iterations less the one with one), F₀ from the circuit with one less that",
-            "  (so Φ is the traced circuit's at r = 1 and 2). No share is fitted.",
+            $"  split by location from the circuit with {GateLevelExposure.TracedIterations} iterations: F₀ from the preparation's H and the final measurement, F from the rest",
+            $"  shared equally by its {GateLevelExposure.TracedIterations} iterations (both nonnegative; the harm estimate below). No share is fitted.",
             "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out):",
             "  Φ = (1 − p)^(s · L) over its closed-form locations L (`NoiseLocations`) with s = 2/3, as before."));
         report.Text(Lines(
@@ -416,16 +416,26 @@ public static class NoiseReport
         report.Text(Lines(
             "The QSearch run a machine would run (`MeasureGateGroverSearch`, the circuit `qrt estimate` prices), traced by the QDK for each",
             "circuit shape (N and coordinate bits) of the scenes up to N = 64, on the first camera ray of an 8x8 image that meets a",
-            "primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with two iterations less the one with one):",
-            "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below),",
-            "and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)."));
-        var table = new TextTable("exposure", ["shape", "scenes", "harm", "L per iteration", "H per iteration", "H / L", "L outside (prepare, measure)", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
+            $"primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with {GateLevelExposure.TracedIterations} iterations less the one with none, per iteration):",
+            "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below)",
+            "with its standard error, and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)."));
+        var table = new TextTable("exposure", ["shape", "scenes", "graded share", "traces", "L per iteration", "H per iteration", "± (s.e.)", "spread of one trace", "H / L", "L outside (prepare, measure)", "H outside", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
         foreach (var (key, scenes, e) in exposures)
-            table.Row(key, scenes, e.Iteration.Harm is null ? "ungraded" : "graded", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"), F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"),
+            table.Row(key, scenes, e.Estimate is { } g ? F(g.Fraction, "0.##") : "ungraded", e.Estimate is { } t ? I(t.Traces) : "", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"),
+                e.Estimate is { } se ? F(se.IterationError, "0") : "", e.Estimate is { } sd ? F(sd.IterationSpread, "0") : "", F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"), F(e.Outside.HarmWeight, "0.0"),
                 F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-5)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-4)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-3)), "0.000"));
         report.Table(table);
-        report.Text($"Shapes up to N = {NoiseBenchSettings.MaxGradedPrimitives} carry the graded harm of the model check below; larger ones the counting rule's whole harm per harmful Pauli"
-            + " (ungraded: pessimistic), as grading follows each error through the rest of the circuit and its time grows as the circuit's square.");
+        report.Text(Lines(
+            $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.TracedIterations} iterations is traced {GateLevelExposure.DefaultTraces} times and each trace graded",
+            "(Quantum/noise-harm.mjs). The harm is split by location, not by a difference of traces: the preparation's H and the index register's",
+            $"final measurement make H outside, everything else is shared equally by the {GateLevelExposure.TracedIterations} iterations, so neither part can go negative.",
+            "A trace's grading depends on its measured outcomes (the measurement-based uncomputation's corrections it holds), so the traces",
+            "are averaged; the spread of one trace is their standard deviation, ± its standard error over the traces. Grading follows each",
+            "error through the rest of the circuit, its time growing as the circuit's square, so above N = 16 each trace grades a random",
+            "share of its locations (the graded share; outside locations always) weighted by its inverse: unbiased, its sampling spread part of",
+            "the traces' spread. Before the grading the trace's operations are put in an order the tracker can read: the QDK lists each gate as",
+            "early as its qubits allow, and a diffusion's H listed before the oracle's uncomputation of its copies on other qubits (which",
+            "commutes with it) had the tracker call the register entangled for the rest of the circuit, every later error a whole harm."));
         var (largestKey, _, largest) = exposures.MaxBy(e => e.Exposure.Iteration.Locations);
         report.Text($"By gate kind, {largestKey}, one iteration (locations where the named Paulis harm; \"none\": no Pauli harms):");
         string[] patterns = ["XYZ", "XY", "YZ", ""];
