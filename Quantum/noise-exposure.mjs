@@ -185,7 +185,8 @@ export function applyBoth(clean, faulty, op, dirty) {
  * goes ahead (the tracker then taints it, as without the reordering).
  */
 export function trackableOrder(ops, patience = 256) {
-  const tracker = new Tracker(1 << sourcesOf(ops), sourcesOf.last);
+  const sources = sourcesOf(ops);
+  const tracker = new Tracker(1 << sources, sources);
   const ordered = [];
   let waiting = [];
   const blocked = new Set();
@@ -223,11 +224,11 @@ export function trackableOrder(ops, patience = 256) {
   return ordered;
 }
 
-/** The number of sources (superposed qubits) the circuit creates, at least 1; also kept as sourcesOf.last. */
+/** The number of sources (superposed qubits) the circuit creates, at least 1, for sizing the tables. */
 function sourcesOf(ops) {
   const probe = new Tracker(1 << 10, 10);
   for (const op of ops) probe.apply(op);
-  return (sourcesOf.last = Math.max(1, probe.sources));
+  return Math.max(1, probe.sources);
 }
 
 const checkpointEvery = 32;
@@ -235,10 +236,7 @@ const checkpointEvery = 32;
 export class Circuit {
   constructor(ops) {
     this.ops = ops;
-    // The number of sources the circuit creates, then the tables sized for them.
-    const probe = new Tracker(1 << 10, 10);
-    for (const op of ops) probe.apply(op);
-    const sources = Math.max(1, probe.sources);
+    const sources = sourcesOf(ops);
     this.checkpoints = [];
     const tracker = new Tracker(1 << sources, sources);
     this.basis = ops.map((op, k) => {

@@ -31,7 +31,8 @@ public class GateLevelExposureTests(FullStateFixture fixture)
 
     /// <summary>
     /// One two-iteration trace's per-iteration harm weight at qornell-8's shape spreads with standard deviation 13.4 about the mean
-    /// (818; 12 traces, docs/noise.md); 21 is the 95 % upper confidence bound of that deviation (χ² with 11 degrees of freedom).
+    /// (818; 12 traces before the table was built, and the table's own 8 in docs/noise.md); 21 is the 95 % upper confidence bound
+    /// of that deviation over the 12 (χ² with 11 degrees of freedom).
     /// </summary>
     private const double TraceSpreadAtEight = 21;
 

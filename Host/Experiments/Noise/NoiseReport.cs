@@ -36,7 +36,7 @@ public static class NoiseReport
             "reproduced on the simulator; and what noise costs a render on the gate-level oracle, beside the lookup oracle (intersections",
             "computed classically beforehand), whose circuit has far fewer noise locations."));
         report.Text($"Measured in {F(result.Elapsed.TotalMinutes, "0.0")} min; the machine and the command that regenerates this page are named at its end.");
-        if (settings.Parts.Contains("exposure")) Exposure(report, result.Exposures);
+        if (result.Exposures.Count > 0) Exposure(report, result.Exposures, traced: settings.Parts.Contains("exposure"));
         if (settings.Parts.Contains("model")) Model(report, result.Check, settings.Shots);
         if (settings.Parts.Contains("supersampling")) SupersamplingCheck(report, result.Supersampling, settings.Shots);
         if (settings.Parts.Contains("device")) Device(report, result.Device, settings.DeviceShots, result.DeviceSearch!, result.DeviceOracle!, result.Machine);
@@ -409,7 +409,10 @@ public static class NoiseReport
     }
 
     /// <summary>The gate-level oracle's noise exposure per traced circuit shape, and one shape's by gate kind.</summary>
-    public static void Exposure(Report report, IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> exposures)
+    /// <param name="report">The page the section is added to.</param>
+    /// <param name="exposures">Per shape: its key, the scenes of that shape and its exposure.</param>
+    /// <param name="traced">Whether this run traced them (else they are the built-in table's, as an earlier `--parts exposure` run traced them).</param>
+    public static void Exposure(Report report, IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> exposures, bool traced)
     {
         if (exposures.Count == 0) return;
         report.Heading("Noise locations of the gate-level oracle");
@@ -418,13 +421,19 @@ public static class NoiseReport
             "circuit shape (N and coordinate bits) of the scenes up to N = 64, on the first camera ray of an 8x8 image that meets a",
             $"primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with {GateLevelExposure.TracedIterations} iterations less the one with none, per iteration):",
             "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below)",
-            "with its standard error, and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)."));
-        var table = new TextTable("exposure", ["shape", "scenes", "graded share", "traces", "L per iteration", "H per iteration", "± (s.e.)", "spread of one trace", "H / L", "L outside (prepare, measure)", "H outside", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
+            "with its standard error, and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)"
+                + (traced ? ", which this run wrote." : ", reported here as built in; `qrt bench noise --parts exposure` traces it anew and rewrites it (the renders below read the built-in one).")));
+        var table = new TextTable("exposure", ["shape", "scenes", "graded share", "L per iteration", "H per iteration", "± (s.e.)", "H / L", "L outside (prepare, measure)", "H outside", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
         foreach (var (key, scenes, e) in exposures)
-            table.Row(key, scenes, e.Estimate is { } g ? F(g.Fraction, "0.##") : "ungraded", e.Estimate is { } t ? I(t.Traces) : "", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"),
-                e.Estimate is { } se ? F(se.IterationError, "0") : "", e.Estimate is { } sd ? F(sd.IterationSpread, "0") : "", F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"), F(e.Outside.HarmWeight, "0.0"),
+            table.Row(key, scenes, e.Estimate is { } g ? F(g.Fraction, "0.##") : "ungraded", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"),
+                e.Estimate is { } se ? F(se.IterationError, "0") : "", F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"), F(e.Outside.HarmWeight, "0.0"),
                 F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-5)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-4)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-3)), "0.000"));
         report.Table(table);
+        var spread = new TextTable("exposure-spread", ["shape", "graded share", "traces", "H per iteration, each trace", "spread of one trace (s.d.)", "s.d. / H"]);
+        foreach (var (key, _, e) in exposures)
+            if (e.Estimate is { } estimate)
+                spread.Row(key, F(estimate.Fraction, "0.##"), I(estimate.Traces), string.Join(", ", estimate.IterationTraces.Select(v => F(v, "0"))),
+                    F(estimate.IterationSpread, "0.0"), F(estimate.IterationSpread / e.Iteration.HarmWeight * 100, "0.0") + " %");
         report.Text(Lines(
             $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.TracedIterations} iterations is traced {GateLevelExposure.DefaultTraces} times and each trace graded",
             "(Quantum/noise-harm.mjs). The harm is split by location, not by a difference of traces: the preparation's H and the index register's",
@@ -435,7 +444,9 @@ public static class NoiseReport
             "share of its locations (the graded share; outside locations always) weighted by its inverse: unbiased, its sampling spread part of",
             "the traces' spread. Before the grading the trace's operations are put in an order the tracker can read: the QDK lists each gate as",
             "early as its qubits allow, and a diffusion's H listed before the oracle's uncomputation of its copies on other qubits (which",
-            "commutes with it) had the tracker call the register entangled for the rest of the circuit, every later error a whole harm."));
+            "commutes with it) had the tracker call the register entangled for the rest of the circuit, every later error a whole harm.",
+            "Each trace's per-iteration H, and their spread:"));
+        report.Table(spread);
         var (largestKey, _, largest) = exposures.MaxBy(e => e.Exposure.Iteration.Locations);
         report.Text($"By gate kind, {largestKey}, one iteration (locations where the named Paulis harm; \"none\": no Pauli harms):");
         string[] patterns = ["XYZ", "XY", "YZ", ""];
