@@ -139,7 +139,7 @@ public static class NoiseReport
             summary.Add($"- {name}: differs from the model on {separated.Length} rows, rejected on {rejected} of them.");
         }
         report.Text(Lines([.. summary]));
-        if (GateHarmReadBack(rows) is { } readBack) report.Text(readBack);
+        GateHarmReadBack(report, rows);
         var series = rows.GroupBy(r => $"{r.Oracle} N={r.Count} t={r.Marked} r={r.Iterations}")
             .Select(g => (g.Key, (IReadOnlyList<(double, double)>)g.Select(r => (r.Noise.PerGate, r.Observed - r.Predicted(model))).ToArray()))
             .ToArray();
@@ -148,32 +148,41 @@ public static class NoiseReport
     }
 
     /// <summary>
-    /// Where the gate-level count misses: the harm-weighted share H/L each gate-level row implies when its observed share is read
-    /// back through the same global depolarizing form (rows whose implied Φ lies in 0.05 … 0.95, where it is well determined),
-    /// beside the count's; null without such rows.
+    /// Where the gate-level count misses: per gate-level row, the harm-weighted locations H the observed share implies when read
+    /// back through the same global depolarizing form (rows whose implied Φ lies in 0.05 … 0.95, where it is well determined), beside
+    /// the model's, and how far the harm table's own standard error moves the model there.
     /// </summary>
-    private static string? GateHarmReadBack(IReadOnlyList<NoiseCheckRow> rows)
+    private static void GateHarmReadBack(Report report, IReadOnlyList<NoiseCheckRow> rows)
     {
-        var implied = new List<(double Implied, double Counted)>();
-        foreach (var r in rows.Where(r => r.Exposure is not null))
+        var gate = rows.Where(r => r.Exposure is not null).ToArray();
+        var table = new TextTable("model-check-read-back", ["N", "r", "p", "gap", "gap/σ", "model H", "implied H ± σ", "model shift at ± 1 s.e. of the harm table"]);
+        foreach (var r in gate)
         {
             var uniform = (double)r.Marked / (1 << SearchRegisters.For(r.Count).IndexQubits);
             var ideal = GroverProbability.OfMarked(r.Request);
             var phi = (r.Observed - uniform) / (ideal - uniform);
             if (phi is < 0.05 or > 0.95) continue;
-            implied.Add((-Math.Log(phi) / r.Noise.PerGate / r.Locations, r.Exposure!.Run(r.Iterations).HarmWeight / r.Locations));
+            var p = r.Noise.PerGate;
+            var sigma = r.StandardError(SearchModel.Counted) / ((ideal - uniform) * phi * p);
+            var modelPhi = r.Predicted(SearchModel.Counted) is var m ? (m - uniform) / (ideal - uniform) : 0;
+            var shift = p * modelPhi * (ideal - uniform) * r.Iterations * (r.Exposure!.Estimate?.IterationError ?? double.NaN);
+            var gap = r.Observed - r.Predicted(SearchModel.Counted);
+            table.Row(I(r.Count), I(r.Iterations), Rate(p), F(gap, "+0.000;-0.000;0.000"), F(gap / r.StandardError(SearchModel.Counted), "+0.0;-0.0;0.0"),
+                F(r.Exposure.Run(r.Iterations).HarmWeight, "0"), $"{F(-Math.Log(phi) / p, "0")} ± {F(sigma, "0")}", F(shift, "0.000"));
         }
-        if (implied.Count == 0) return null;
-        var above = rows.Where(r => r.Exposure is not null).Count(r => r.Observed > r.Predicted(SearchModel.Counted));
-        return Lines(
-            $"**Where the gate-level model misses.** On {above} of the {rows.Count(r => r.Exposure is not null)} gate-level rows the simulator finds more marked outcomes than the model.",
-            "Read back through the same global depolarizing form (Φ from the observed share, then −ln Φ / (p · L)), these rows imply that",
-            $"{F(implied.Min(i => i.Implied), "0.00")} to {F(implied.Max(i => i.Implied), "0.00")} of a location's errors harm a run, where the graded count has",
-            $"{F(implied.Min(i => i.Counted), "0.00")} to {F(implied.Max(i => i.Counted), "0.00")} (the ungraded rule alone: the column ungraded count).",
-            "What is left: the harms of several errors in one run are not independent (two sign flips can cancel, and the form takes any",
-            "two harmful errors as a uniform readout), and the effects the grading cannot follow keep a whole harm. The read-back is a",
+        if (table.Rows.Count == 0) return;
+        var above = gate.Count(r => r.Observed > r.Predicted(SearchModel.Counted));
+        report.Text(Lines(
+            $"**Where the gate-level model misses.** On {above} of the {gate.Length} gate-level rows the simulator finds more marked outcomes than the model.",
+            "Read back through the same global depolarizing form (Φ from the observed share, then H = −ln Φ / p harm-weighted locations), each row",
+            "implies the harm below, beside the model's; the last column is how far the harm table's standard error moves the model's P(marked)."));
+        report.Table(table);
+        report.Text(Lines(
+            "Where the implied H falls with p at one circuit, the form, not the table, is what misses: the table is a first-order count",
+            "(each error alone), while the harms of several errors in one run are not independent (two sign flips can cancel, and the form",
+            "takes any two harmful errors as a uniform readout); the effects the grading cannot follow keep a whole harm. The read-back is a",
             "diagnosis of one form on these rows (N = 4 and 8), not a fitted share; the engines do not use it."
-                + (above == rows.Count(r => r.Exposure is not null) ? "\nOn every gate-level row checked the simulated machine did at least as well as the model: where it misses, it is pessimistic." : ""));
+                + (above == gate.Length ? "\nOn every gate-level row checked the simulated machine did at least as well as the model: where it misses, it is pessimistic." : "")));
     }
 
     /// <summary>The harmful share s fitted per coin or QSS shape; the direct coin's model has none to fit (it is exact).</summary>
