@@ -444,7 +444,7 @@ public static class NoiseReport
                 spread.Row(key, F(estimate.Fraction, "0.##"), I(estimate.Traces), string.Join(", ", estimate.IterationTraces.Select(v => F(v, "0"))),
                     F(estimate.IterationSpread, "0.0"), F(estimate.IterationSpread / e.Iteration.HarmWeight * 100, "0.0") + " %");
         report.Text(Lines(
-            $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.TracedIterations} iterations is traced {GateLevelExposure.DefaultTraces} times and each trace graded",
+            $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.TracedIterations} iterations is traced several times (below) and each trace graded",
             "(Quantum/noise-harm.mjs). The harm is split by location, not by a difference of traces: the preparation's H and the index register's",
             $"final measurement make H outside, everything else is shared equally by the {GateLevelExposure.TracedIterations} iterations, so neither part can go negative.",
             "A trace's grading depends on its measured outcomes (the measurement-based uncomputation's corrections it holds), so the traces",
