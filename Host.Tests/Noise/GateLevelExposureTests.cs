@@ -60,6 +60,19 @@ public class GateLevelExposureTests(FullStateFixture fixture)
     }
 
     [Fact]
+    public void TheTracedRunStopsAtTheRaysOptimalIterationCount()
+    {
+        // N = 4 with one marked: θ = 30°, one iteration reads it with certainty and a second leaves P(marked) = sin²(150°) = 1/4,
+        // the uniform readout, where the grading's h has nothing to divide by. N = 8 with one marked: θ ≈ 20.7°, optimum 2.
+        var device = DeviceExperimentScene.Ray();
+        Assert.Equal((4, 1), (device.Table.Count, device.Table.Marked(device.Window).MarkedCount));
+        Assert.Equal(1, GateLevelExposure.TracedIterations(device));
+        var eight = NoiseBenchmark.EightPrimitiveRay();
+        Assert.Equal((8, 1), (eight.Table.Count, eight.Table.Marked(eight.Window).MarkedCount));
+        Assert.Equal(GateLevelExposure.MaxTracedIterations, GateLevelExposure.TracedIterations(eight));
+    }
+
+    [Fact]
     public void ATableWithANegativeHarmIsRefused()
     {
         var table = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(Path.Combine(RepositoryPaths.Root, "Host", "Noise", "gate-level-exposure.json")))!;

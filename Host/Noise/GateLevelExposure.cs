@@ -22,8 +22,19 @@ namespace QuantumRayTracing.Noise;
 /// <param name="Estimate">How the graded harm was estimated and its spread; null when it is not graded.</param>
 public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration, HarmEstimate? Estimate = null)
 {
-    /// <summary>Iterations of the traced run whose graded harm the table holds.</summary>
-    public const int TracedIterations = 2;
+    /// <summary>The most iterations of a traced run whose graded harm the table holds.</summary>
+    public const int MaxTracedIterations = 2;
+
+    /// <summary>
+    /// Iterations of the run traced for <paramref name="input"/>: <see cref="MaxTracedIterations"/>, or fewer where the ray's
+    /// optimal count is lower. A run past its optimum can read no better than uniform (N = 4, t = 1, r = 2: P(marked) = 1/4), and
+    /// there the grading's h = (P₀ − P_e) / (P₀ − t/2^n) has nothing to divide by and counts every error whole.
+    /// </summary>
+    public static int TracedIterations(OracleInput input)
+    {
+        ArgumentNullException.ThrowIfNull(input);
+        return Math.Clamp(GroverProbability.OptimalIterations(input.Table.Count, input.Table.Marked(input.Window).MarkedCount), 1, MaxTracedIterations);
+    }
 
     /// <summary>The exposure of a run with <paramref name="iterations"/> Grover iterations.</summary>
     public NoiseExposure Run(int iterations) => Outside + (double)iterations * Iteration;
@@ -39,7 +50,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
 
     /// <summary>
     /// Traces <paramref name="input"/>'s search on <paramref name="pool"/>'s bridges with no iteration and, <paramref name="traces"/>
-    /// times, with <see cref="TracedIterations"/>, grading each of the latter.
+    /// times, with <see cref="TracedIterations"/> for it, grading each of the latter.
     /// </summary>
     /// <remarks>
     /// A trace's graded harm depends on its measured outcomes (which corrections it holds) and, when sampled, on which locations
@@ -59,6 +70,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         ArgumentOutOfRangeException.ThrowIfLessThan(traces, 2);
         if (!(fraction > 0 && fraction <= 1)) throw new ArgumentOutOfRangeException(nameof(fraction), fraction, "the graded share must lie in (0, 1]");
         var argument = GateEngine.OracleArgument(input);
+        var traced = TracedIterations(input);
         var marked = input.Table.Marked(input.Window).Indices.ToArray();
         string Expression(int r) => $"{QSharpOperations.MeasureGateGroverSearch}({argument}, {r.ToString(CultureInfo.InvariantCulture)})";
         NoiseExposure outsideCounts = null!;
@@ -70,17 +82,17 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
                 outsideCounts = NoiseExposure.Parse(bridge.Circuit(Expression(0), timeout: TimeSpan.FromMinutes(30), exposure: true)["exposure"]!);
                 return;
             }
-            var summary = bridge.Circuit(Expression(TracedIterations), timeout: TimeSpan.FromMinutes(60), exposure: true, marked: marked,
+            var summary = bridge.Circuit(Expression(traced), timeout: TimeSpan.FromMinutes(60), exposure: true, marked: marked,
                 sampling: fraction < 1 ? (fraction, (uint)copy + 1) : null);
             if (summary["harm"] is not { } harm || summary["outsideHarm"] is not { } outside)
                 throw new InvalidOperationException($"the grading did not read {shape}'s traced circuit as a Grover search over its index register");
             graded[copy] = (NoiseExposure.Parse(summary["exposure"]!, harm), NoiseExposure.Parse(summary["exposure"]!, outside));
         });
         // Per trace: the outside locations' harm, and the rest shared by the iterations (counts: the run's less the r = 0 circuit's).
-        var iterations = graded.Select(g => (1.0 / TracedIterations) * (g.Run - (outsideCounts with { Harm = g.Outside.Harm }))).ToArray();
+        var iterations = graded.Select(g => (1.0 / traced) * (g.Run - (outsideCounts with { Harm = g.Outside.Harm }))).ToArray();
         var mean = (1.0 / traces) * iterations.Aggregate((a, b) => a + b);
         var outsideHarm = (1.0 / traces) * graded.Select(g => outsideCounts with { Harm = g.Outside.Harm }).Aggregate((a, b) => a + b);
-        return new GateLevelExposure(shape, outsideHarm, mean, new HarmEstimate(iterations.Select(i => i.HarmWeight).ToArray(), fraction));
+        return new GateLevelExposure(shape, outsideHarm, mean, new HarmEstimate(traced, iterations.Select(i => i.HarmWeight).ToArray(), fraction));
     }
 
     /// <summary>Graded traces averaged per shape by default.</summary>

@@ -4,11 +4,11 @@ namespace QuantumRayTracing.Noise;
 
 /// <summary>
 /// How a gate-level exposure's graded harm was estimated, and how far it spreads: the mean over several traces of the run with
-/// <see cref="GateLevelExposure.TracedIterations"/> iterations, each grading a random share <paramref name="Fraction"/> of its
-/// locations (1: all), whose per-iteration harm weights were <paramref name="IterationTraces"/>. They differ because the measured
-/// outcomes of the uncomputation decide which corrections a trace holds, and a sampled trace grades only some locations.
+/// <paramref name="Iterations"/> iterations, each grading a random share <paramref name="Fraction"/> of its locations (1: all),
+/// whose per-iteration harm weights were <paramref name="IterationTraces"/>. They differ because the measured outcomes of the
+/// uncomputation decide which corrections a trace holds, and a sampled trace grades only some locations.
 /// </summary>
-public sealed record HarmEstimate(IReadOnlyList<double> IterationTraces, double Fraction)
+public sealed record HarmEstimate(int Iterations, IReadOnlyList<double> IterationTraces, double Fraction)
 {
     /// <summary>Traces averaged.</summary>
     public int Traces => IterationTraces.Count;
@@ -29,10 +29,11 @@ public sealed record HarmEstimate(IReadOnlyList<double> IterationTraces, double 
 
     public JsonObject ToJson() => new()
     {
+        ["tracedIterations"] = Iterations,
         ["fraction"] = Fraction,
         ["iterationTraces"] = new JsonArray([.. IterationTraces.Select(v => (JsonNode?)Math.Round(v, 3))]),
     };
 
     public static HarmEstimate Parse(JsonNode node) =>
-        new(node["iterationTraces"]!.AsArray().Select(v => v!.GetValue<double>()).ToArray(), node["fraction"]!.GetValue<double>());
+        new(node["tracedIterations"]!.GetValue<int>(), node["iterationTraces"]!.AsArray().Select(v => v!.GetValue<double>()).ToArray(), node["fraction"]!.GetValue<double>());
 }

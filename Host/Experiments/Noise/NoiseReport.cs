@@ -78,8 +78,9 @@ public static class NoiseReport
             "the measurement. A noise location is one qubit of one operation (a CCX is 3, a measurement 1).",
             "- Gate-level oracle (the default, `--noise-oracle gate-level`): the harm is counted location by location from the extracted circuit",
             "  (the counting rule and its grading below): Φ = Π over locations and Paulis P of (1 − p_P)^h, h the graded harm of P there,",
-            $"  split by location from the circuit with {GateLevelExposure.TracedIterations} iterations: F₀ from the preparation's H and the final measurement, F from the rest",
-            $"  shared equally by its {GateLevelExposure.TracedIterations} iterations (both nonnegative; the harm estimate below). No share is fitted.",
+            $"  split by location from the circuit with r_t = {GateLevelExposure.MaxTracedIterations} iterations (1 where the ray's optimal count is 1, as N = 4 with one marked:",
+            "  a run past its optimum reads no better than uniform and its harm is undefined): F₀ from the preparation's H and the final measurement,",
+            "  F from the rest shared equally by its r_t iterations (both nonnegative; the harm estimate below). No share is fitted.",
             "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out):",
             "  Φ = (1 − p)^(s · L) over its closed-form locations L (`NoiseLocations`) with s = 2/3, as before."));
         report.Text(Lines(
@@ -156,6 +157,7 @@ public static class NoiseReport
     {
         var gate = rows.Where(r => r.Exposure is not null).ToArray();
         var table = new TextTable("model-check-read-back", ["N", "r", "p", "gap", "gap/σ", "model H", "implied H ± σ", "model shift at ± 1 s.e. of the harm table"]);
+        var trends = new List<(int N, int R, double P, double Implied, double Model)>();
         foreach (var r in gate)
         {
             var uniform = (double)r.Marked / (1 << SearchRegisters.For(r.Count).IndexQubits);
@@ -169,7 +171,14 @@ public static class NoiseReport
             var gap = r.Observed - r.Predicted(SearchModel.Counted);
             table.Row(I(r.Count), I(r.Iterations), Rate(p), F(gap, "+0.000;-0.000;0.000"), F(gap / r.StandardError(SearchModel.Counted), "+0.0;-0.0;0.0"),
                 F(r.Exposure.Run(r.Iterations).HarmWeight, "0"), $"{F(-Math.Log(phi) / p, "0")} ± {F(sigma, "0")}", F(shift, "0.000"));
+            trends.Add((r.Count, r.Iterations, p, -Math.Log(phi) / p, r.Exposure.Run(r.Iterations).HarmWeight));
         }
+        // Per circuit, the implied harm from the lowest error rate to the highest, beside the model's.
+        var byCircuit = trends.GroupBy(t => (t.N, t.R)).Where(g => g.Count() > 1).Select(g =>
+        {
+            var (low, high) = (g.MinBy(t => t.P), g.MaxBy(t => t.P));
+            return $"N = {g.Key.N}, r = {g.Key.R}: {F(low.Implied, "0")} at p = {Rate(low.P)} to {F(high.Implied, "0")} at {Rate(high.P)} (model {F(low.Model, "0")})";
+        }).ToArray();
         if (table.Rows.Count == 0) return;
         var above = gate.Count(r => r.Observed > r.Predicted(SearchModel.Counted));
         report.Text(Lines(
@@ -178,6 +187,7 @@ public static class NoiseReport
             "implies the harm below, beside the model's; the last column is how far the harm table's standard error moves the model's P(marked)."));
         report.Table(table);
         report.Text(Lines(
+            "Implied H per circuit, lowest to highest p: " + string.Join("; ", byCircuit) + ".",
             "Where the implied H falls with p at one circuit, the form, not the table, is what misses: the table is a first-order count",
             "(each error alone), while the harms of several errors in one run are not independent (two sign flips can cancel, and the form",
             "takes any two harmful errors as a uniform readout); the effects the grading cannot follow keep a whole harm. The read-back is a",
@@ -428,7 +438,7 @@ public static class NoiseReport
         report.Text(Lines(
             "The QSearch run a machine would run (`MeasureGateGroverSearch`, the circuit `qrt estimate` prices), traced by the QDK for each",
             "circuit shape (N and coordinate bits) of the scenes up to N = 64, on the first camera ray of an 8x8 image that meets a",
-            $"primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with {GateLevelExposure.TracedIterations} iterations less the one with none, per iteration):",
+            $"primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with {GateLevelExposure.MaxTracedIterations} iterations less the one with none, per iteration):",
             "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below)",
             "with its standard error, and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)"
                 + (traced ? ", which this run wrote." : ", reported here as built in; `qrt bench noise --parts exposure` traces it anew and rewrites it (the renders below read the built-in one).")));
@@ -444,9 +454,9 @@ public static class NoiseReport
                 spread.Row(key, F(estimate.Fraction, "0.##"), I(estimate.Traces), string.Join(", ", estimate.IterationTraces.Select(v => F(v, "0"))),
                     F(estimate.IterationSpread, "0.0"), F(estimate.IterationSpread / e.Iteration.HarmWeight * 100, "0.0") + " %");
         report.Text(Lines(
-            $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.TracedIterations} iterations is traced several times (below) and each trace graded",
+            $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.MaxTracedIterations} iterations is traced several times (below) and each trace graded",
             "(Quantum/noise-harm.mjs). The harm is split by location, not by a difference of traces: the preparation's H and the index register's",
-            $"final measurement make H outside, everything else is shared equally by the {GateLevelExposure.TracedIterations} iterations, so neither part can go negative.",
+            $"final measurement make H outside, everything else is shared equally by the {GateLevelExposure.MaxTracedIterations} iterations, so neither part can go negative.",
             "A trace's grading depends on its measured outcomes (the measurement-based uncomputation's corrections it holds), so the traces",
             "are averaged; the spread of one trace is their standard deviation, ± its standard error over the traces. Grading follows each",
             "error through the rest of the circuit, its time growing as the circuit's square, so above N = 16 each trace grades a random",
