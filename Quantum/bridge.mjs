@@ -18,7 +18,8 @@
 //   {"id":4,"method":"circuit","expr":"Ns.Op(8)","maxOperations":1000000}
 //                                                             -> {"id":4,"ok":true,"result":<circuit summary, see circuit-summary.mjs>}
 //     optional "exposure":true adds the noise exposure of every location (noise-exposure.mjs); with "harm":true also its
-//     graded harm (noise-harm.mjs) for a search marking "marked":[indices] (far slower: it grows as the circuit's square)
+//     graded harm (noise-harm.mjs) for a search marking "marked":[indices] (far slower: it grows as the circuit's square);
+//     "harmFraction":f grades a random share f of the locations (seeded by "harmSeed", default 1) for an unbiased estimate
 //   {"id":5,"method":"export","apply":"Ns.Op(8, _)","qubits":3,"profile":"adaptive_ri"}
 //                                                             -> {"id":5,"ok":true,"result":{"qir":"<QIR text>","probabilities":[p0, p1, ...]}}
 //     "apply" is a Qubit[] => Unit expression; optional "measured":M measures the register's first M
@@ -230,7 +231,11 @@ async function answer(compiler, program, versions, request) {
       }
       const marked = request.marked ?? null;
       if (marked !== null && !(Array.isArray(marked) && marked.every(Number.isInteger))) throw new RequestError(`request field "marked" must be an array of integers`);
-      const summary = summariseCircuit(group, request.exposure === true, request.harm === true ? marked ?? [] : null);
+      const fraction = request.harmFraction ?? 1;
+      if (typeof fraction !== "number" || !(fraction > 0 && fraction <= 1)) throw new RequestError(`request field "harmFraction" must be a number in (0, 1]`);
+      const seed = request.harmSeed ?? 1;
+      if (!Number.isInteger(seed) || seed < 0 || seed > 0xffffffff) throw new RequestError(`request field "harmSeed" must be an integer from 0 to 2^32 - 1`);
+      const summary = summariseCircuit(group, request.exposure === true, request.harm === true ? marked ?? [] : null, { fraction, seed });
       if (summary.operations > limit) {
         return { error: { kind: "qsharp", message: `the circuit has more than ${limit} operations (maxOperations); ask for a smaller circuit or raise the limit` } };
       }

@@ -13,7 +13,7 @@
 // On request, the native circuit's noise exposure (noise-exposure.mjs): per gate kind, the noise locations at which
 // no Pauli error, only X and Y, or every Pauli can harm the run.
 
-import { Circuit, noiseExposure } from "./noise-exposure.mjs";
+import { Circuit, locationPatterns, noiseExposure, trackableOrder } from "./noise-exposure.mjs";
 import { gradedHarm } from "./noise-harm.mjs";
 
 /** Qiskit's CCXGate definition on controls a, b and target c, as [gate, qubits] pairs. */
@@ -68,7 +68,7 @@ class Tally {
  * exposure ("exposure", noise-exposure.mjs) and, given `marked` (the search's marked indices), its graded harm ("harm",
  * noise-harm.mjs), which take far longer than the rest.
  */
-export function summariseCircuit(group, withExposure = false, marked = null) {
+export function summariseCircuit(group, withExposure = false, marked = null, sampling = {}) {
   const circuit = group.circuits[0];
   const native = new Tally();
   const expanded = new Tally();
@@ -89,13 +89,21 @@ export function summariseCircuit(group, withExposure = false, marked = null) {
   }
   return {
     qubits: circuit.qubits.length, operations, conditional, native: native.result(), qiskitCcx: expanded.result(),
-    ...(withExposure ? exposureOf(described, marked) : {}),
+    ...(withExposure ? exposureOf(described, marked, sampling) : {}),
   };
 }
 
-/** The exposure, and the graded harm when `marked` (the search's marked indices) is given. */
-function exposureOf(ops, marked) {
+/**
+ * The exposure, and the graded harm when `marked` (the search's marked indices) is given: "harm" over every location,
+ * "outsideHarm" at the preparation and the final measurement, "harmSampling" (noise-harm.mjs), each location's pattern found once.
+ */
+function exposureOf(traced, marked, sampling) {
+  const ops = trackableOrder(traced);
   const circuit = new Circuit(ops);
-  const harm = marked ? gradedHarm(ops, marked, circuit) : null;
-  return { exposure: noiseExposure(ops, circuit), ...(harm ? { harm } : {}) };
+  const patterns = locationPatterns(ops, circuit);
+  const graded = marked ? gradedHarm(ops, marked, circuit, { ...sampling, patterns }) : null;
+  return {
+    exposure: noiseExposure(ops, circuit, patterns),
+    ...(graded ? { harm: graded.harm, outsideHarm: graded.outsideHarm, harmSections: graded.sections, harmSampling: graded.sampling } : {}),
+  };
 }

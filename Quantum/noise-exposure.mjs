@@ -55,6 +55,13 @@ export class Tracker {
     return true;
   }
 
+  // Whether q holds one source alone whose copies other (untainted) qubits still hold: an H on q now would taint it.
+  entangledCopies(q) {
+    if (this.tainted.has(q) || this.isBasis(q)) return false;
+    const s = this.loneSource(q);
+    return s >= 0 && [...this.values.keys()].some((o) => o !== q && !this.tainted.has(o) && this.dependsOn(o, s));
+  }
+
   // The source s when q's table is s or its complement, else -1.
   loneSource(q) {
     const v = this.value(q);
@@ -81,7 +88,9 @@ export class Tracker {
     const controlled = controls.some((c) => !this.isBasis(c));
     if (this.isBasis(q) && this.sources < this.maxSources) return this.fresh(q); // with controls, the support over-approximated
     const s = this.loneSource(q);
-    if (s >= 0 && !controlled && ![...this.values.keys()].some((o) => o !== q && this.dependsOn(o, s))) return;
+    // A tainted qubit's table is stale (it is awaiting the measurement of a measurement-based uncomputation, which commutes
+    // with this gate), so it does not count as depending on s: else the trace's column order, not the circuit, would decide.
+    if (s >= 0 && !controlled && ![...this.values.keys()].some((o) => o !== q && !this.tainted.has(o) && this.dependsOn(o, s))) return;
     this.tainted.add(q);
   }
 
@@ -167,15 +176,67 @@ export function applyBoth(clean, faulty, op, dirty) {
   }
 }
 
+/**
+ * The operations in an order the tracker can read: the QDK lays a trace out in columns, each gate as early as its qubits
+ * allow, so a diffusion's H on an index qubit can be listed before the oracle's uncomputation of that qubit's copies on other
+ * qubits (which commutes with it). Tracked in that order, the H would meet a register still entangled and leave it tainted
+ * for the rest of the circuit. Here such an H, and every later operation on its qubits, waits until nothing else depends on
+ * its qubit; each qubit keeps its own order, so the circuit is the same. An H that still waits after `patience` operations
+ * goes ahead (the tracker then taints it, as without the reordering).
+ */
+export function trackableOrder(ops, patience = 256) {
+  const sources = sourcesOf(ops);
+  const tracker = new Tracker(1 << sources, sources);
+  const ordered = [];
+  let waiting = [];
+  const blocked = new Set();
+  const waits = (op) => op.gate === "H" && op.controls.length === 0 && op.targets.length === 1 && tracker.entangledCopies(op.targets[0]);
+  const release = (force) => {
+    for (let changed = true; changed && waiting.length > 0;) {
+      changed = false;
+      blocked.clear();
+      const still = [];
+      for (const op of waiting) {
+        if (op.qubits.some((q) => blocked.has(q)) || (!force && waits(op))) {
+          still.push(op);
+          for (const q of op.qubits) blocked.add(q);
+        } else {
+          tracker.apply(op);
+          ordered.push(op);
+          changed = true;
+        }
+      }
+      waiting = still;
+    }
+  };
+  for (const op of ops) {
+    if (op.qubits.some((q) => blocked.has(q)) || (!op.measurement && !op.reset && waits(op))) {
+      waiting.push(op);
+      for (const q of op.qubits) blocked.add(q);
+      if (waiting.length > patience) release(true);
+      continue;
+    }
+    tracker.apply(op);
+    ordered.push(op);
+    if (waiting.length > 0) release(false);
+  }
+  release(true);
+  return ordered;
+}
+
+/** The number of sources (superposed qubits) the circuit creates, at least 1, for sizing the tables. */
+function sourcesOf(ops) {
+  const probe = new Tracker(1 << 10, 10);
+  for (const op of ops) probe.apply(op);
+  return Math.max(1, probe.sources);
+}
+
 const checkpointEvery = 32;
 
 export class Circuit {
   constructor(ops) {
     this.ops = ops;
-    // The number of sources the circuit creates, then the tables sized for them.
-    const probe = new Tracker(1 << 10, 10);
-    for (const op of ops) probe.apply(op);
-    const sources = Math.max(1, probe.sources);
+    const sources = sourcesOf(ops);
     this.checkpoints = [];
     const tracker = new Tracker(1 << sources, sources);
     this.basis = ops.map((op, k) => {
@@ -248,9 +309,9 @@ export class Circuit {
 }
 
 /** The operations' noise exposure. `ops` are { kind, gate, qubits, controls, targets, measurement, reset } in order. */
-export function noiseExposure(ops, circuit = new Circuit(ops)) {
+export function noiseExposure(ops, circuit = new Circuit(ops), patterns = locationPatterns(ops, circuit)) {
   const exposure = {};
-  for (const { kind, pattern } of locationPatterns(ops, circuit)) {
+  for (const { kind, pattern } of patterns) {
     const tally = (exposure[kind] ??= {});
     tally[pattern] = (tally[pattern] ?? 0) + 1;
   }

@@ -19,29 +19,66 @@ import { applyBoth, Circuit, diagonal, locationPatterns, product, superposeBoth,
 /**
  * The graded harm of `ops` (as noise-exposure.mjs takes them), a search for `marked` (its marked indices; empty or null: read
  * from the oracle's diagonal gates); null where the circuit is not read as a Grover search over its index register.
+ * Returns { harm, outsideHarm, sections, sampling }: `harm` per gate kind and Pauli over every location, `outsideHarm` the part
+ * at the preparation's H and the index register's final measurement (always graded whole), `sections` the oracle sections
+ * found (the Grover iterations), and `sampling` { fraction, graded, variance }. With `fraction` < 1 each other location is
+ * graded with that probability (a generator seeded by `seed`) and weighted 1 / fraction, so `harm` is an unbiased estimate of
+ * the whole grading; `variance` is the estimate's variance in harm-weighted locations (a third of each Pauli's h, summed),
+ * estimated from the graded locations (0 when every location is graded).
  */
-export function gradedHarm(ops, marked = null, circuit = new Circuit(ops)) {
+export function gradedHarm(ops, marked = null, circuit = new Circuit(ops), { fraction = 1, seed = 1, patterns = locationPatterns(ops, circuit) } = {}) {
+  if (!(fraction > 0 && fraction <= 1)) throw new Error(`the sampled fraction must lie in (0, 1], not ${fraction}`);
   const { rewritten, conjugated } = phaseGates(ops);
   const search = new SearchStructure(rewritten, new Circuit(rewritten), marked);
   if (!search.graded) return null;
   const harm = {};
-  for (const { k, q, kind, pattern } of locationPatterns(ops, circuit)) {
+  const outsideHarm = {};
+  const random = seededUniform(seed);
+  let graded = 0;
+  let variance = 0;
+  for (const { k, q, kind, pattern } of patterns) {
     const tally = (harm[kind] ??= { X: 0, Y: 0, Z: 0 });
     if (pattern === "") continue;
-    if (conjugated.has(`${k}:${q}`)) {
-      // Between the H gates of a controlled phase the target is in the Hadamard basis: counted by the rule alone.
-      tally.X += pattern.includes("X") ? 1 : 0;
-      tally.Y += 1;
-      tally.Z += pattern.includes("Z") ? 1 : 0;
-      continue;
+    const outside = search.outside.has(`${k}:${q}`);
+    const weight = outside || fraction === 1 ? 1 : random() < fraction ? 1 / fraction : 0;
+    if (weight === 0) continue;
+    graded++;
+    const h = locationHarm(search, conjugated, k, q, pattern);
+    tally.X += weight * h.X;
+    tally.Y += weight * h.Y;
+    tally.Z += weight * h.Z;
+    // Bernoulli sampling: Var(Σ w·h) = Σ (1 − f) / f² · h², estimated without bias by Σ over the graded of (1 − f) / f² · h².
+    if (weight > 1) variance += ((1 - fraction) / (fraction * fraction)) * ((h.X + h.Y + h.Z) / 3) ** 2;
+    if (outside) {
+      const part = (outsideHarm[kind] ??= { X: 0, Y: 0, Z: 0 });
+      part.X += h.X;
+      part.Y += h.Y;
+      part.Z += h.Z;
     }
-    const x = pattern.includes("X") ? search.xEffect(k, q) : NONE;
-    const z = pattern.includes("Z") ? search.zEffect(k, q) : NONE;
-    tally.X += search.harmOf(x);
-    tally.Z += search.harmOf(z);
-    tally.Y += search.harmOf(combine(x, z));
   }
-  return harm;
+  return { harm, outsideHarm, sections: search.iterations, sampling: { fraction, graded, variance } };
+}
+
+/** The graded harm of X, Y and Z at op k's location on qubit q, whose harmful Paulis the counting rule gives as `pattern`. */
+function locationHarm(search, conjugated, k, q, pattern) {
+  if (conjugated.has(`${k}:${q}`)) {
+    // Between the H gates of a controlled phase the target is in the Hadamard basis: counted by the rule alone.
+    return { X: pattern.includes("X") ? 1 : 0, Y: 1, Z: pattern.includes("Z") ? 1 : 0 };
+  }
+  const x = pattern.includes("X") ? search.xEffect(k, q) : NONE;
+  const z = pattern.includes("Z") ? search.zEffect(k, q) : NONE;
+  return { X: search.harmOf(x), Y: search.harmOf(combine(x, z)), Z: search.harmOf(z) };
+}
+
+/** Uniform numbers in [0, 1) from a 32-bit seed (mulberry32): the sampled locations are the same for the same seed and circuit. */
+function seededUniform(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = Math.imul(a ^ (a >>> 15), 1 | a);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
 }
 
 /**
@@ -118,6 +155,8 @@ class SearchStructure {
       }
     });
     const index = new Set([...first].filter(([q, k]) => ops[k].gate === "H" && ops[k].controls.length === 0 && ops[last.get(q)].measurement).map(([q]) => q));
+    // Outside the iterations: each index qubit's preparing H and its final measurement (locations "op:qubit").
+    this.outside = new Set([...index].flatMap((q) => [`${first.get(q)}:${q}`, `${last.get(q)}:${q}`]));
     const tracker = circuit.checkpoints[0].clone();
     const parity = new Map();
     this.indexSources = [];

@@ -64,9 +64,11 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     /// by the bridge: qubits, gates by kind, measurements, resets and depth (Quantum/circuit-summary.mjs).
     /// A circuit of more than <paramref name="maxOperations"/> operations is refused, not truncated. With
     /// <paramref name="exposure"/> the summary also holds the noise exposure of every location (Quantum/noise-exposure.mjs)
-    /// and, given <paramref name="marked"/> (the search's marked indices), its graded harm (Quantum/noise-harm.mjs, far slower).
+    /// and, given <paramref name="marked"/> (the search's marked indices), its graded harm (Quantum/noise-harm.mjs, far slower),
+    /// over every location or, with <paramref name="sampling"/>, a random share of them seeded as it says.
     /// </summary>
-    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null, bool exposure = false, IReadOnlyList<int>? marked = null)
+    public JsonObject Circuit(string expression, int? maxOperations = null, TimeSpan? timeout = null, bool exposure = false, IReadOnlyList<int>? marked = null,
+        (double Fraction, uint Seed)? sampling = null)
     {
         var request = new JsonObject { ["method"] = "circuit", ["expr"] = expression };
         if (exposure) request["exposure"] = true;
@@ -74,6 +76,11 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
         {
             request["harm"] = true;
             request["marked"] = new JsonArray([.. marked.Select(i => (JsonNode?)i)]);
+            if (sampling is var (fraction, seed))
+            {
+                request["harmFraction"] = fraction;
+                request["harmSeed"] = seed;
+            }
         }
         if (maxOperations is { } limit) request["maxOperations"] = limit;
         return Send(request, timeout).AsObject();

@@ -10,15 +10,32 @@ namespace QuantumRayTracing.Noise;
 /// <summary>
 /// The noise exposure of a QSearch run on the gate-level oracle (<c>MeasureGateGroverSearch</c>, the circuit
 /// <c>qrt estimate</c> prices): the preparation and measurement (<see cref="Outside"/>) and one Grover iteration
-/// (<see cref="Iteration"/>), from the circuits the QDK extracts with no iteration and with one and two (the difference
-/// of the last two is one iteration, as for the estimates). Z and CZ counts vary slightly with the measurement-based
-/// uncomputation's outcomes; the traced runs' are kept.
+/// (<see cref="Iteration"/>). Locations from the circuits the QDK extracts with no iteration and with
+/// <see cref="TracedIterations"/> (their difference per iteration, as for the estimates; Z and CZ counts vary slightly with the
+/// measurement-based uncomputation's outcomes). The graded harm (<see cref="Estimate"/> says how) is split by location, not by
+/// a difference of traces: the preparation's H and the final measurement are <see cref="Outside"/>, the rest of the traced run
+/// shared equally by its iterations, so neither part can go negative.
 /// </summary>
 /// <param name="Shape">What the circuit was traced for: N, coordinate bits and the ray, in words.</param>
 /// <param name="Outside">The preparation and the index measurement.</param>
 /// <param name="Iteration">One Grover iteration: the phase oracle and the reflection.</param>
-public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration)
+/// <param name="Estimate">How the graded harm was estimated and its spread; null when it is not graded.</param>
+public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration, HarmEstimate? Estimate = null)
 {
+    /// <summary>The most iterations of a traced run whose graded harm the table holds.</summary>
+    public const int MaxTracedIterations = 2;
+
+    /// <summary>
+    /// Iterations of the run traced for <paramref name="input"/>: <see cref="MaxTracedIterations"/>, or fewer where the ray's
+    /// optimal count is lower. A run past its optimum can read no better than uniform (N = 4, t = 1, r = 2: P(marked) = 1/4), and
+    /// there the grading's h = (P₀ − P_e) / (P₀ − t/2^n) has nothing to divide by and counts every error whole.
+    /// </summary>
+    public static int TracedIterations(OracleInput input)
+    {
+        ArgumentNullException.ThrowIfNull(input);
+        return Math.Clamp(GroverProbability.OptimalIterations(input.Table.Count, input.Table.Marked(input.Window).MarkedCount), 1, MaxTracedIterations);
+    }
+
     /// <summary>The exposure of a run with <paramref name="iterations"/> Grover iterations.</summary>
     public NoiseExposure Run(int iterations) => Outside + (double)iterations * Iteration;
 
@@ -28,42 +45,58 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     public double RunFidelity(NoiseModel noise, int iterations)
     {
         var (outside, iteration) = _logFidelities.GetOrAdd(noise, n => (Math.Log(Outside.Fidelity(n)), Math.Log(Iteration.Fidelity(n))));
-        return Math.Min(1.0, Math.Exp(outside + iterations * iteration));
+        return Math.Exp(outside + iterations * iteration);
     }
 
-    /// <summary>Traces <paramref name="input"/>'s search with r = 0, 1 and 2 on <paramref name="pool"/>'s bridges.</summary>
+    /// <summary>
+    /// Traces <paramref name="input"/>'s search on <paramref name="pool"/>'s bridges with no iteration and, <paramref name="traces"/>
+    /// times, with <see cref="TracedIterations"/> for it, grading each of the latter.
+    /// </summary>
     /// <remarks>
-    /// The locations by pattern: the preparation and measurement from r = 0, an iteration as r = 2 less r = 1. The graded
-    /// harm depends on r (an error after the last diffusion does nothing, one in an early iteration is amplified with the
-    /// run), so it is extrapolated from the runs that have it: an iteration as r = 2 less r = 1, the rest as r = 1 less
-    /// that, which makes Φ exact for r = 1 and 2 on the traced ray and linear in r beyond.
+    /// A trace's graded harm depends on its measured outcomes (which corrections it holds) and, when sampled, on which locations
+    /// it grades, so the traces are averaged and their spread kept (<see cref="HarmEstimate"/>). Each grades its outside locations
+    /// whole and the others with probability <paramref name="fraction"/> (seeded by the trace's number, weighted by the inverse),
+    /// an unbiased estimate of the whole grading at a share of its time, which grows as the circuit's square.
     /// </remarks>
     /// <param name="pool">The bridges that trace the circuits.</param>
     /// <param name="input">The ray's oracle input; its marked set grades the harm.</param>
     /// <param name="shape">What the circuit was traced for, in words.</param>
-    /// <param name="graded">Whether to grade the harm (Quantum/noise-harm.mjs; its time grows as the square of the circuit).</param>
-    public static GateLevelExposure Trace(BridgePool pool, OracleInput input, string shape, bool graded = true)
+    /// <param name="traces">Graded traces averaged (at least 2, for the spread).</param>
+    /// <param name="fraction">Share of each trace's locations graded, in (0, 1].</param>
+    public static GateLevelExposure Trace(BridgePool pool, OracleInput input, string shape, int traces = DefaultTraces, double fraction = 1)
     {
         ArgumentNullException.ThrowIfNull(pool);
         ArgumentNullException.ThrowIfNull(input);
+        ArgumentOutOfRangeException.ThrowIfLessThan(traces, 2);
+        if (!(fraction > 0 && fraction <= 1)) throw new ArgumentOutOfRangeException(nameof(fraction), fraction, "the graded share must lie in (0, 1]");
         var argument = GateEngine.OracleArgument(input);
-        int[]? marked = graded ? input.Table.Marked(input.Window).Indices.ToArray() : null;
-        // Graded, r = 1 and 2 are traced twice each: a trace's measured outcomes decide which corrections it holds, and where
-        // the grading cannot pair one with its measurement it counts the error whole; the less harmful reading is kept.
-        (int R, int Copy)[] runs = graded ? [(2, 0), (2, 1), (1, 0), (1, 1), (0, 0)] : [(2, 0), (1, 0), (0, 0)];
-        var readings = new NoiseExposure[3, 2];
-        pool.ForEach(runs, (run, bridge) =>
+        var traced = TracedIterations(input);
+        var marked = input.Table.Marked(input.Window).Indices.ToArray();
+        string Expression(int r) => $"{QSharpOperations.MeasureGateGroverSearch}({argument}, {r.ToString(CultureInfo.InvariantCulture)})";
+        NoiseExposure outsideCounts = null!;
+        var graded = new (NoiseExposure Run, NoiseExposure Outside)[traces];
+        pool.ForEach(Enumerable.Range(-1, traces + 1).ToArray(), (copy, bridge) =>
         {
-            var summary = bridge.Circuit($"{QSharpOperations.MeasureGateGroverSearch}({argument}, {run.R.ToString(CultureInfo.InvariantCulture)})", timeout: TimeSpan.FromMinutes(30), exposure: true, marked: marked);
-            readings[run.R, run.Copy] = NoiseExposure.Parse(summary["exposure"]!, summary["harm"]);
+            if (copy < 0)
+            {
+                outsideCounts = NoiseExposure.Parse(bridge.Circuit(Expression(0), timeout: TimeSpan.FromMinutes(30), exposure: true)["exposure"]!);
+                return;
+            }
+            var summary = bridge.Circuit(Expression(traced), timeout: TimeSpan.FromMinutes(60), exposure: true, marked: marked,
+                sampling: fraction < 1 ? (fraction, (uint)copy + 1) : null);
+            if (summary["harm"] is not { } harm || summary["outsideHarm"] is not { } outside)
+                throw new InvalidOperationException($"the grading did not read {shape}'s traced circuit as a Grover search over its index register");
+            graded[copy] = (NoiseExposure.Parse(summary["exposure"]!, harm), NoiseExposure.Parse(summary["exposure"]!, outside));
         });
-        // A run's second reading replaces its first where it is graded and less harmful (or the first is not graded).
-        static bool Better(NoiseExposure? other, NoiseExposure first) =>
-            other is { Harm: not null } && (first.Harm is null || other.HarmWeight < first.HarmWeight);
-        var traced = Enumerable.Range(0, 3).Select(r => Better(readings[r, 1], readings[r, 0]) ? readings[r, 1] : readings[r, 0]).ToArray();
-        var iteration = traced[2] - traced[1];
-        return new GateLevelExposure(shape, graded ? traced[0] with { Harm = (traced[1] - iteration).Harm } : traced[0], iteration);
+        // Per trace: the outside locations' harm, and the rest shared by the iterations (counts: the run's less the r = 0 circuit's).
+        var iterations = graded.Select(g => (1.0 / traced) * (g.Run - (outsideCounts with { Harm = g.Outside.Harm }))).ToArray();
+        var mean = (1.0 / traces) * iterations.Aggregate((a, b) => a + b);
+        var outsideHarm = (1.0 / traces) * graded.Select(g => outsideCounts with { Harm = g.Outside.Harm }).Aggregate((a, b) => a + b);
+        return new GateLevelExposure(shape, outsideHarm, mean, new HarmEstimate(traced, iterations.Select(i => i.HarmWeight).ToArray(), fraction));
     }
+
+    /// <summary>Graded traces averaged per shape by default.</summary>
+    public const int DefaultTraces = 3;
 
     /// <summary>
     /// The ray a scene's exposure is traced on: the first camera ray of an 8x8 image whose full-range search marks a
@@ -98,10 +131,21 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         {
             json["outsideHarm"] = outside;
             json["iterationHarm"] = iteration;
+            if (Estimate is { } estimate) json["harmEstimate"] = estimate.ToJson();
         }
         return json;
     }
 
-    public static GateLevelExposure Parse(JsonNode node) =>
-        new(node["shape"]!.GetValue<string>(), NoiseExposure.Parse(node["outside"]!, node["outsideHarm"]), NoiseExposure.Parse(node["iteration"]!, node["iterationHarm"]));
+    /// <summary>A table entry; graded harm below zero is refused (a harm is a share of the error's effect, never a gain).</summary>
+    public static GateLevelExposure Parse(JsonNode node)
+    {
+        var shape = node["shape"]!.GetValue<string>();
+        var exposure = new GateLevelExposure(shape, NoiseExposure.Parse(node["outside"]!, node["outsideHarm"]), NoiseExposure.Parse(node["iteration"]!, node["iterationHarm"]),
+            node["harmEstimate"] is { } estimate ? HarmEstimate.Parse(estimate) : null);
+        foreach (var (part, harm) in new[] { ("outsideHarm", exposure.Outside.Harm), ("iterationHarm", exposure.Iteration.Harm) })
+            foreach (var (kind, paulis) in harm ?? new Dictionary<string, IReadOnlyDictionary<string, double>>())
+                foreach (var (pauli, h) in paulis)
+                    if (!(h >= 0)) throw new InvalidDataException($"gate-level exposure of {shape}: {part}.{kind}.{pauli} is {h.ToString(CultureInfo.InvariantCulture)}, and a graded harm cannot be negative");
+        return exposure;
+    }
 }

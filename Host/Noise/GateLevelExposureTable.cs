@@ -12,13 +12,16 @@ public static class GateLevelExposureTable
 {
     public const string ResourceName = "QuantumRayTracing.Noise.gate-level-exposure.json";
 
-    private static readonly Lazy<IReadOnlyDictionary<string, GateLevelExposure>> Entries = new(Load);
+    private static readonly Lazy<IReadOnlyDictionary<string, GateLevelExposure>> Loaded = new(Load);
+
+    /// <summary>The built-in table by shape.</summary>
+    public static IReadOnlyDictionary<string, GateLevelExposure> Entries => Loaded.Value;
 
     /// <summary>The scene's circuit, or null when its shape was not traced.</summary>
-    public static GateLevelExposure? For(Scene scene) => Entries.Value.GetValueOrDefault(GateLevelExposure.KeyOf(scene));
+    public static GateLevelExposure? For(Scene scene) => Entries.GetValueOrDefault(GateLevelExposure.KeyOf(scene));
 
     /// <summary>The shapes the table holds.</summary>
-    public static IReadOnlyCollection<string> Keys => Entries.Value.Keys.ToArray();
+    public static IReadOnlyCollection<string> Keys => Entries.Keys.ToArray();
 
     private static IReadOnlyDictionary<string, GateLevelExposure> Load()
     {

@@ -48,7 +48,6 @@ public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictiona
         {
             // Each location's Pauli P contributes (1 − p_P)^h: a whole harm h = 1 is the pattern rule's factor.
             static double Log(double p) => Math.Log(1 - Math.Min(p, 1 - 1e-12));
-            // A part extrapolated from two traces (the preparation's) may hold a negative sum; a run's Φ is capped at 1 where it is used.
             return Math.Exp(graded.Values.Sum(h =>
                 h.GetValueOrDefault("X") * Log(noise.Px) + h.GetValueOrDefault("Y") * Log(noise.Py) + h.GetValueOrDefault("Z") * Log(noise.Pz)));
         }

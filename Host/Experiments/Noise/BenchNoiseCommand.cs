@@ -79,7 +79,8 @@ public sealed class BenchNoiseCommand : Command
         var scenes = parts.Contains("render")
             ? NoiseBenchSettings.RenderScenes.Select(n => (n, _report.Load(parse, n))).ToArray()
             : [];
-        var exposureScenes = parts.Contains("exposure")
+        // Without the exposure part its section reports the built-in table for the same scenes.
+        var exposureScenes = parts.Contains("exposure") || parts.Contains("render")
             ? parse.GetValue(_report.SceneDirectory)!.GetFiles("*.json").OrderBy(f => f.Name, StringComparer.Ordinal)
                 .Select(f => (Path.GetFileNameWithoutExtension(f.Name), Scenes.SceneLoader.Load(f.FullName)))
                 .Where(s => s.Item2.Rectangles.Count <= NoiseBenchSettings.MaxExposurePrimitives).ToArray()
@@ -90,7 +91,7 @@ public sealed class BenchNoiseCommand : Command
         writer.EnsureWritable(settings.PlotNames());
         using var cluster = _report.StartBridges(parse);
         var (report, machine, exposures) = NoiseExperiment.Run(settings with { Pool = cluster }, Console.Error.WriteLine);
-        if (exposures.Count > 0) File.WriteAllText(parse.GetValue(_exposureTable)!.FullName, GateLevelExposureTable.ToJson(exposures.Select(e => (e.Key, e.Exposure))).ToJsonString(new() { WriteIndented = true }) + "\n");
+        if (parts.Contains("exposure") && exposures.Count > 0) File.WriteAllText(parse.GetValue(_exposureTable)!.FullName, GateLevelExposureTable.ToJson(exposures.Select(e => (e.Key, e.Exposure))).ToJsonString(new() { WriteIndented = true }) + "\n");
         writer.Write(report, ReportFooter.Lines(machine, cluster));
         return ExitCodes.Success;
     }

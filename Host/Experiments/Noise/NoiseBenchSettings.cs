@@ -1,4 +1,5 @@
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Scenes;
 
 namespace QuantumRayTracing.Experiments;
@@ -37,10 +38,22 @@ public sealed record NoiseBenchSettings(
     public const int MaxExposurePrimitives = 64;
 
     /// <summary>
-    /// The largest N whose traced exposure is graded (Quantum/noise-harm.mjs follows each error through the rest of the circuit,
-    /// so its time grows as the circuit's square: about a minute at N = 8 and 16 on a shared 2-core machine, far longer above).
+    /// The share of a traced circuit's locations the exposure part grades at <paramref name="primitives"/> (Quantum/noise-harm.mjs
+    /// follows each error through the rest of the circuit, so its time grows as the circuit's square): every location up to
+    /// N = 16, a random share above, each trace's estimate unbiased and their spread measured.
     /// </summary>
-    public const int MaxGradedPrimitives = 16;
+    public static double GradedFraction(int primitives) => primitives switch
+    {
+        <= 16 => 1,
+        <= 32 => 0.5,
+        _ => 0.25,
+    };
+
+    /// <summary>
+    /// Graded traces the exposure part averages per shape: more at N = 8, the shape whose spread the tests take as measured
+    /// (Host.Tests GateLevelExposureTests), three elsewhere.
+    /// </summary>
+    public static int HarmTraces(int primitives) => primitives <= 8 ? 8 : GateLevelExposure.DefaultTraces;
 
     /// <summary>The scenes the render part uses, from the scene directory.</summary>
     public static readonly string[] RenderScenes = ["qornell-64", "depth-complexity-64"];

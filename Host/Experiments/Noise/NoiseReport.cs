@@ -36,7 +36,7 @@ public static class NoiseReport
             "reproduced on the simulator; and what noise costs a render on the gate-level oracle, beside the lookup oracle (intersections",
             "computed classically beforehand), whose circuit has far fewer noise locations."));
         report.Text($"Measured in {F(result.Elapsed.TotalMinutes, "0.0")} min; the machine and the command that regenerates this page are named at its end.");
-        if (settings.Parts.Contains("exposure")) Exposure(report, result.Exposures);
+        if (result.Exposures.Count > 0) Exposure(report, result.Exposures, traced: settings.Parts.Contains("exposure"));
         if (settings.Parts.Contains("model")) Model(report, result.Check, settings.Shots);
         if (settings.Parts.Contains("supersampling")) SupersamplingCheck(report, result.Supersampling, settings.Shots);
         if (settings.Parts.Contains("device")) Device(report, result.Device, settings.DeviceShots, result.DeviceSearch!, result.DeviceOracle!, result.Machine);
@@ -78,8 +78,9 @@ public static class NoiseReport
             "the measurement. A noise location is one qubit of one operation (a CCX is 3, a measurement 1).",
             "- Gate-level oracle (the default, `--noise-oracle gate-level`): the harm is counted location by location from the extracted circuit",
             "  (the counting rule and its grading below): Φ = Π over locations and Paulis P of (1 − p_P)^h, h the graded harm of P there,",
-            "  F from one iteration (the circuit with two iterations less the one with one), F₀ from the circuit with one less that",
-            "  (so Φ is the traced circuit's at r = 1 and 2). No share is fitted.",
+            $"  split by location from the circuit with r_t = {GateLevelExposure.MaxTracedIterations} iterations (1 where the ray's optimal count is 1, as N = 4 with one marked:",
+            "  a run past its optimum reads no better than uniform and its harm is undefined): F₀ from the preparation's H and the final measurement,",
+            "  F from the rest shared equally by its r_t iterations (both nonnegative; the harm estimate below). No share is fitted.",
             "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out):",
             "  Φ = (1 − p)^(s · L) over its closed-form locations L (`NoiseLocations`) with s = 2/3, as before."));
         report.Text(Lines(
@@ -139,7 +140,7 @@ public static class NoiseReport
             summary.Add($"- {name}: differs from the model on {separated.Length} rows, rejected on {rejected} of them.");
         }
         report.Text(Lines([.. summary]));
-        if (GateHarmReadBack(rows) is { } readBack) report.Text(readBack);
+        GateHarmReadBack(report, rows);
         var series = rows.GroupBy(r => $"{r.Oracle} N={r.Count} t={r.Marked} r={r.Iterations}")
             .Select(g => (g.Key, (IReadOnlyList<(double, double)>)g.Select(r => (r.Noise.PerGate, r.Observed - r.Predicted(model))).ToArray()))
             .ToArray();
@@ -148,32 +149,50 @@ public static class NoiseReport
     }
 
     /// <summary>
-    /// Where the gate-level count misses: the harm-weighted share H/L each gate-level row implies when its observed share is read
-    /// back through the same global depolarizing form (rows whose implied Φ lies in 0.05 … 0.95, where it is well determined),
-    /// beside the count's; null without such rows.
+    /// Where the gate-level count misses: per gate-level row, the harm-weighted locations H the observed share implies when read
+    /// back through the same global depolarizing form (rows whose implied Φ lies in 0.05 … 0.95, where it is well determined), beside
+    /// the model's, and how far the harm table's own standard error moves the model there.
     /// </summary>
-    private static string? GateHarmReadBack(IReadOnlyList<NoiseCheckRow> rows)
+    private static void GateHarmReadBack(Report report, IReadOnlyList<NoiseCheckRow> rows)
     {
-        var implied = new List<(double Implied, double Counted)>();
-        foreach (var r in rows.Where(r => r.Exposure is not null))
+        var gate = rows.Where(r => r.Exposure is not null).ToArray();
+        var table = new TextTable("model-check-read-back", ["N", "r", "p", "gap", "gap/σ", "model H", "implied H ± σ", "model shift at ± 1 s.e. of the harm table"]);
+        var trends = new List<(int N, int R, double P, double Implied, double Model)>();
+        foreach (var r in gate)
         {
             var uniform = (double)r.Marked / (1 << SearchRegisters.For(r.Count).IndexQubits);
             var ideal = GroverProbability.OfMarked(r.Request);
             var phi = (r.Observed - uniform) / (ideal - uniform);
             if (phi is < 0.05 or > 0.95) continue;
-            implied.Add((-Math.Log(phi) / r.Noise.PerGate / r.Locations, r.Exposure!.Run(r.Iterations).HarmWeight / r.Locations));
+            var p = r.Noise.PerGate;
+            var sigma = r.StandardError(SearchModel.Counted) / ((ideal - uniform) * phi * p);
+            var modelPhi = r.Predicted(SearchModel.Counted) is var m ? (m - uniform) / (ideal - uniform) : 0;
+            var shift = p * modelPhi * (ideal - uniform) * r.Iterations * (r.Exposure!.Estimate?.IterationError ?? double.NaN);
+            var gap = r.Observed - r.Predicted(SearchModel.Counted);
+            table.Row(I(r.Count), I(r.Iterations), Rate(p), F(gap, "+0.000;-0.000;0.000"), F(gap / r.StandardError(SearchModel.Counted), "+0.0;-0.0;0.0"),
+                F(r.Exposure.Run(r.Iterations).HarmWeight, "0"), $"{F(-Math.Log(phi) / p, "0")} ± {F(sigma, "0")}", F(shift, "0.000"));
+            trends.Add((r.Count, r.Iterations, p, -Math.Log(phi) / p, r.Exposure.Run(r.Iterations).HarmWeight));
         }
-        if (implied.Count == 0) return null;
-        var above = rows.Where(r => r.Exposure is not null).Count(r => r.Observed > r.Predicted(SearchModel.Counted));
-        return Lines(
-            $"**Where the gate-level model misses.** On {above} of the {rows.Count(r => r.Exposure is not null)} gate-level rows the simulator finds more marked outcomes than the model.",
-            "Read back through the same global depolarizing form (Φ from the observed share, then −ln Φ / (p · L)), these rows imply that",
-            $"{F(implied.Min(i => i.Implied), "0.00")} to {F(implied.Max(i => i.Implied), "0.00")} of a location's errors harm a run, where the graded count has",
-            $"{F(implied.Min(i => i.Counted), "0.00")} to {F(implied.Max(i => i.Counted), "0.00")} (the ungraded rule alone: the column ungraded count).",
-            "What is left: the harms of several errors in one run are not independent (two sign flips can cancel, and the form takes any",
-            "two harmful errors as a uniform readout), and the effects the grading cannot follow keep a whole harm. The read-back is a",
+        // Per circuit, the implied harm from the lowest error rate to the highest, beside the model's.
+        var byCircuit = trends.GroupBy(t => (t.N, t.R)).Where(g => g.Count() > 1).Select(g =>
+        {
+            var (low, high) = (g.MinBy(t => t.P), g.MaxBy(t => t.P));
+            return $"N = {g.Key.N}, r = {g.Key.R}: {F(low.Implied, "0")} at p = {Rate(low.P)} to {F(high.Implied, "0")} at {Rate(high.P)} (model {F(low.Model, "0")})";
+        }).ToArray();
+        if (table.Rows.Count == 0) return;
+        var above = gate.Count(r => r.Observed > r.Predicted(SearchModel.Counted));
+        report.Text(Lines(
+            $"**Where the gate-level model misses.** On {above} of the {gate.Length} gate-level rows the simulator finds more marked outcomes than the model.",
+            "Read back through the same global depolarizing form (Φ from the observed share, then H = −ln Φ / p harm-weighted locations), each row",
+            "implies the harm below, beside the model's; the last column is how far the harm table's standard error moves the model's P(marked)."));
+        report.Table(table);
+        report.Text(Lines(
+            "Implied H per circuit, lowest to highest p: " + string.Join("; ", byCircuit) + ".",
+            "Where the implied H falls with p at one circuit, the form, not the table, is what misses: the table is a first-order count",
+            "(each error alone), while the harms of several errors in one run are not independent (two sign flips can cancel, and the form",
+            "takes any two harmful errors as a uniform readout); the effects the grading cannot follow keep a whole harm. The read-back is a",
             "diagnosis of one form on these rows (N = 4 and 8), not a fitted share; the engines do not use it."
-                + (above == rows.Count(r => r.Exposure is not null) ? "\nOn every gate-level row checked the simulated machine did at least as well as the model: where it misses, it is pessimistic." : ""));
+                + (above == gate.Length ? "\nOn every gate-level row checked the simulated machine did at least as well as the model: where it misses, it is pessimistic." : "")));
     }
 
     /// <summary>The harmful share s fitted per coin or QSS shape; the direct coin's model has none to fit (it is exact).</summary>
@@ -409,23 +428,44 @@ public static class NoiseReport
     }
 
     /// <summary>The gate-level oracle's noise exposure per traced circuit shape, and one shape's by gate kind.</summary>
-    public static void Exposure(Report report, IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> exposures)
+    /// <param name="report">The page the section is added to.</param>
+    /// <param name="exposures">Per shape: its key, the scenes of that shape and its exposure.</param>
+    /// <param name="traced">Whether this run traced them (else they are the built-in table's, as an earlier `--parts exposure` run traced them).</param>
+    public static void Exposure(Report report, IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> exposures, bool traced)
     {
         if (exposures.Count == 0) return;
         report.Heading("Noise locations of the gate-level oracle");
         report.Text(Lines(
             "The QSearch run a machine would run (`MeasureGateGroverSearch`, the circuit `qrt estimate` prices), traced by the QDK for each",
             "circuit shape (N and coordinate bits) of the scenes up to N = 64, on the first camera ray of an 8x8 image that meets a",
-            "primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with two iterations less the one with one):",
-            "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below),",
-            "and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)."));
-        var table = new TextTable("exposure", ["shape", "scenes", "harm", "L per iteration", "H per iteration", "H / L", "L outside (prepare, measure)", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
+            $"primitive; scenes of one shape share the first one's trace. Per Grover iteration (the circuit with {GateLevelExposure.MaxTracedIterations} iterations less the one with none, per iteration):",
+            "L the noise locations, H the harm-weighted locations (a third of each Pauli's graded harm there, by the counting rule and grading of the model check below)",
+            "with its standard error, and F = Φ per iteration at three error rates. The analytic engine reads this table (Host/Noise/gate-level-exposure.json)"
+                + (traced ? ", which this run wrote." : ", reported here as built in; `qrt bench noise --parts exposure` traces it anew and rewrites it (the renders below read the built-in one).")));
+        var table = new TextTable("exposure", ["shape", "scenes", "graded share", "L per iteration", "H per iteration", "± (s.e.)", "H / L", "L outside (prepare, measure)", "H outside", "F at 1e-5", "F at 1e-4", "F at 1e-3"]);
         foreach (var (key, scenes, e) in exposures)
-            table.Row(key, scenes, e.Iteration.Harm is null ? "ungraded" : "graded", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"), F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"),
+            table.Row(key, scenes, e.Estimate is { } g ? F(g.Fraction, "0.##") : "ungraded", F(e.Iteration.Locations, "0"), F(e.Iteration.HarmWeight, "0"),
+                e.Estimate is { } se ? F(se.IterationError, "0") : "", F(e.Iteration.HarmWeight / e.Iteration.Locations, "0.000"), F(e.Outside.Locations, "0"), F(e.Outside.HarmWeight, "0.0"),
                 F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-5)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-4)), "0.000"), F(e.Iteration.Fidelity(NoiseModel.Depolarizing(1e-3)), "0.000"));
         report.Table(table);
-        report.Text($"Shapes up to N = {NoiseBenchSettings.MaxGradedPrimitives} carry the graded harm of the model check below; larger ones the counting rule's whole harm per harmful Pauli"
-            + " (ungraded: pessimistic), as grading follows each error through the rest of the circuit and its time grows as the circuit's square.");
+        var spread = new TextTable("exposure-spread", ["shape", "graded share", "traces", "H per iteration, each trace", "spread of one trace (s.d.)", "s.d. / H"]);
+        foreach (var (key, _, e) in exposures)
+            if (e.Estimate is { } estimate)
+                spread.Row(key, F(estimate.Fraction, "0.##"), I(estimate.Traces), string.Join(", ", estimate.IterationTraces.Select(v => F(v, "0"))),
+                    F(estimate.IterationSpread, "0.0"), F(estimate.IterationSpread / e.Iteration.HarmWeight * 100, "0.0") + " %");
+        report.Text(Lines(
+            $"**The harm estimate.** Each shape's circuit with {GateLevelExposure.MaxTracedIterations} iterations is traced several times (below) and each trace graded",
+            "(Quantum/noise-harm.mjs). The harm is split by location, not by a difference of traces: the preparation's H and the index register's",
+            $"final measurement make H outside, everything else is shared equally by the {GateLevelExposure.MaxTracedIterations} iterations, so neither part can go negative.",
+            "A trace's grading depends on its measured outcomes (the measurement-based uncomputation's corrections it holds), so the traces",
+            "are averaged; the spread of one trace is their standard deviation, ± its standard error over the traces. Grading follows each",
+            "error through the rest of the circuit, its time growing as the circuit's square, so above N = 16 each trace grades a random",
+            "share of its locations (the graded share; outside locations always) weighted by its inverse: unbiased, its sampling spread part of",
+            "the traces' spread. Before the grading the trace's operations are put in an order the tracker can read: the QDK lists each gate as",
+            "early as its qubits allow, and a diffusion's H listed before the oracle's uncomputation of its copies on other qubits (which",
+            "commutes with it) had the tracker call the register entangled for the rest of the circuit, every later error a whole harm.",
+            "Each trace's per-iteration H, and their spread:"));
+        report.Table(spread);
         var (largestKey, _, largest) = exposures.MaxBy(e => e.Exposure.Iteration.Locations);
         report.Text($"By gate kind, {largestKey}, one iteration (locations where the named Paulis harm; \"none\": no Pauli harms):");
         string[] patterns = ["XYZ", "XY", "YZ", ""];
