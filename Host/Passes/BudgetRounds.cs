@@ -40,7 +40,7 @@ public static class BudgetRounds
         {
             var expected = Enumerable.Range(0, rays.Count).Select(ledger.Expected).ToArray();
             var rest = expected.Sum();
-            // Nothing left to buy: a pass whose allowance earlier passes overspent has none, and rounds cannot help.
+            // Nothing left to buy (no rays, or none that may be wrong): a pass left no allowance by earlier passes stops here too.
             if (rest <= allowance || rest <= 0) break;
             var schedule = Cheapest(search, count, full, cheap);
             var miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
