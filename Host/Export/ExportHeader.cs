@@ -14,7 +14,8 @@ public static class ExportHeader
         foreach (var line in subject.Description) Line(line);
         var counts = GateCounts.Of(circuit);
         Line(Form(format, counts.Conditionals));
-        Line($"qubits: {circuit.Qubits}; {counts}{(format == ExportFormat.Qasm2 ? "" : " (a branch's gates counted once whether or not they run)")}");
+        Line($"qubits: {circuit.Qubits}; {counts}{(format == ExportFormat.Qasm2 ? "" : " (a branch's gates counted once whether or not they run)")}; "
+            + $"depth {CircuitDepth.Of(circuit)}{(counts.Conditionals == 0 ? "" : " with every branch taken")}");
         Line($"measured register: {subject.RegisterName}, {Plural(subject.RegisterQubits, "bit")}, bit 0 least significant");
         Line(ideal.Line);
         if (ideal.Remainder is { } rest) Line(rest);
