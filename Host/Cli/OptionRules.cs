@@ -44,6 +44,13 @@ public static class OptionRules
         }
     });
 
+    /// <summary>
+    /// <paramref name="option"/>'s value as a command rule sees it: inside a command validator an option left out reads as
+    /// default(T), not as its default value, so <paramref name="fallback"/> (that default) stands in for it.
+    /// </summary>
+    public static T ValueOr<T>(this CommandResult result, Option<T> option, T fallback) =>
+        result.GetResult(option) is null ? fallback : result.GetValue(option)!;
+
     /// <summary>A probability strictly between 0 and 1, the error naming the option.</summary>
     public static Option<T> StrictProbability<T>(this Option<T> option) => option.Must(value =>
         value is not double p || p > 0 && p < 1 ? null : $"{option.Name} must lie strictly between 0 and 1, got {p}");

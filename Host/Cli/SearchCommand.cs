@@ -46,9 +46,7 @@ public sealed class SearchCommand : Command
         _json.AddTo(this);
         this.AddRule(r =>
         {
-            // A rule sees an option left out as 0, not as its default.
-            var count = r.GetResult(_count) is null ? DefaultCount : r.GetValue(_count);
-            if (SearchRunSettings.MarkedProblem(count, r.GetValue(_marked) ?? []) is { } problem) r.AddError(problem);
+            if (SearchRunSettings.MarkedProblem(r.ValueOr(_count, DefaultCount), r.GetValue(_marked) ?? []) is { } problem) r.AddError(problem);
         });
         SetAction(Execute);
     }

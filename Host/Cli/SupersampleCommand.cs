@@ -100,9 +100,9 @@ public sealed class SupersampleCommand : Command
             r.GetValue(_engine.Noise) is not null, r.GetValue(_deviceNoise) is not null || r.GetValue(_readoutError) is not null) ?? settings.Problem()) is { } problem) r.AddError(problem);
     }
 
-    // Inside a command validator, an option left out reads as default(T), not its default value: those are filled in here (the action reads the same).
+    // The options with a default are read through ValueOr (the action reads the same values from the parse).
     private SupersampleSettings MethodSettings(CommandResult r) =>
-        new(r.GetResult(_method) is null ? SupersampleSettings.DefaultMethod : r.GetValue(_method), r.GetResult(_subpixels) is null ? SupersampleSettings.DefaultSide : r.GetValue(_subpixels),
+        new(r.ValueOr(_method, SupersampleSettings.DefaultMethod), r.ValueOr(_subpixels, SupersampleSettings.DefaultSide),
             r.GetValue(_queries), r.GetValue(_steps), r.GetValue(_levels), r.GetValue(_counterBits), r.GetValue(_planes), r.GetValue(_qssValues));
 
     private int Execute(ParseResult parse)

@@ -21,15 +21,17 @@ public static class NeighbourGathering
         {
             var triedCount = 0;
             var changed = false;
+            Ray? ray = null; // read at its first test: a pass's rays may be computed on each read
             var count = layout.Neighbours(i, neighbours);
             for (var n = 0; n < count; n++)
             {
                 if (hits[neighbours[n]] is not { } held || hits[i]?.Primitive == held.Primitive || tried[..triedCount].Contains(held.Primitive)) continue;
                 tried[triedCount++] = held.Primitive;
-                var window = Hit.Beyond(rays[i], hits[i], geometry.Count, tieBreak);
+                ray ??= rays[i];
+                var window = Hit.Beyond(ray, hits[i], geometry.Count, tieBreak);
                 tests++;
-                if (RayTable.Test(geometry, rays[i], held.Primitive, window) is not { } row) continue;
-                hits[i] = new Hit(held.Primitive, row.Depth, row.Distance, rays[i].At(row.Distance));
+                if (RayTable.Test(geometry, ray, held.Primitive, window) is not { } row) continue;
+                hits[i] = new Hit(held.Primitive, row.Depth, row.Distance, ray.At(row.Distance));
                 changed = true;
             }
             if (changed) updated++;
@@ -48,13 +50,15 @@ public static class NeighbourGathering
         {
             if (occluders[i] is not null) continue;
             var triedCount = 0;
+            Ray? ray = null; // read at its first test, as above
             var count = layout.Neighbours(i, neighbours);
             for (var n = 0; n < count; n++)
             {
                 if (occluders[neighbours[n]] is not { } held || tried[..triedCount].Contains(held)) continue;
                 tried[triedCount++] = held;
                 tests++;
-                if (RayTable.Test(geometry, rays[i], held, HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count)) is null) continue;
+                ray ??= rays[i];
+                if (RayTable.Test(geometry, ray, held, HitWindow.Range(ray.Near, ray.Far, geometry.Count)) is null) continue;
                 occluders[i] = held;
                 updated++;
                 break;
@@ -85,12 +89,14 @@ public static class NeighbourGathering
                 allSame &= held == hits[coarser[0]]?.Primitive;
                 if (held is { } p && !distinct[..distinctCount].Contains(p)) distinct[distinctCount++] = p;
             }
+            Ray? ray = null; // read at its first test, as in ForClosest
             foreach (var p in distinct[..distinctCount])
             {
-                var window = Hit.Beyond(rays[i], hits[i], geometry.Count, tieBreak);
+                ray ??= rays[i];
+                var window = Hit.Beyond(ray, hits[i], geometry.Count, tieBreak);
                 tests++;
-                if (RayTable.Test(geometry, rays[i], p, window) is not { } row) continue;
-                hits[i] = new Hit(p, row.Depth, row.Distance, rays[i].At(row.Distance));
+                if (RayTable.Test(geometry, ray, p, window) is not { } row) continue;
+                hits[i] = new Hit(p, row.Depth, row.Distance, ray.At(row.Distance));
             }
             agreed[i] = count > 0 && count == layout.CoarserNeighbourSlots(i, levels) && allSame && hits[i]?.Primitive == hits[coarser[0]]?.Primitive;
             return (tests, hits[i] is not null);
@@ -110,6 +116,7 @@ public static class NeighbourGathering
             Span<int> coarser = stackalloc int[PixelLayout.MostCoarserNeighbours];
             Span<int> tried = stackalloc int[PixelLayout.MostCoarserNeighbours];
             var (count, triedCount, noneOccluded) = (layout.CoarserNeighbours(i, levels, coarser), 0, true);
+            Ray? ray = null; // read at its first test, as in ForOcclusion
             for (var n = 0; n < count; n++)
             {
                 if (occluders[coarser[n]] is not { } p) continue;
@@ -117,7 +124,8 @@ public static class NeighbourGathering
                 if (updated || tried[..triedCount].Contains(p)) continue;
                 tried[triedCount++] = p;
                 tests++;
-                if (RayTable.Test(geometry, rays[i], p, HitWindow.Range(rays[i].Near, rays[i].Far, geometry.Count)) is null) continue;
+                ray ??= rays[i];
+                if (RayTable.Test(geometry, ray, p, HitWindow.Range(ray.Near, ray.Far, geometry.Count)) is null) continue;
                 occluders[i] = p;
                 updated = true;
             }
