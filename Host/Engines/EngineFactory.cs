@@ -25,7 +25,8 @@ public static class EngineFactory
         DepolarizingApproximation? approximation = null, bool noiseAware = false) =>
         kind.SearchesWithGrover
             ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None, approximation), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates,
-                success: noiseAware && approximation is not null && noise is { IsNoiseless: false } ? approximation.NoisySuccess(noise) : null)
+                success: noiseAware && approximation is not null && noise is { IsNoiseless: false } ? approximation.NoisySuccess(noise) : null,
+                pooled: kind == EngineKind.Analytic && (noise ?? NoiseModel.None).IsNoiseless)
             : kind switch
             {
                 EngineKind.Classical => new ClassicalHitSearch(),

@@ -11,7 +11,9 @@ namespace QuantumRayTracing.Passes;
 /// cut off by the round limit; but no ray less likely wrong than the likeliest will be after the round (that one's
 /// next confirmation is the better buy, so rounds take the likeliest again before they reach the unlikely many). Each round uses the schedule that lowers a ray's odds of being wrong most per query
 /// (the engine's full search, the lattice's cheap confirmation or a planned list). A ray whose remaining confirmations
-/// are expected to cost more than the N tests that would settle it is settled classically instead.
+/// are expected to cost more than the N tests that would settle it is settled classically instead. On an engine that
+/// pools rays (<see cref="IPooledSearch"/>), a round searches the pairs of all the rays it needs at once instead
+/// (<see cref="PooledRound"/>) when that costs less per expected wrong ray removed.
 /// </summary>
 public static class BudgetRounds
 {
@@ -50,22 +52,49 @@ public static class BudgetRounds
             // that one again next round buys more of the expectation per query. The last round takes what it needs.
             var floor = round == MaxRounds - 1 ? 0 : expected.Max() * miss;
             // Only rays at or above the floor can be taken: sorting just those keeps the round's memory to the few it may take.
+            var left = rest;
             foreach (var i in Enumerable.Range(0, rays.Count).Where(i => expected[i] > 0 && expected[i] >= floor).OrderByDescending(i => expected[i]).ThenBy(i => i))
             {
-                if (rest <= allowance) break;
+                if (left <= allowance) break;
                 selected.Add(i);
-                rest -= expected[i] * (1 - miss);
+                left -= expected[i] * (1 - miss);
             }
-            var classically = selected.Where(i => SearchesToShare(expected[i], share, miss) * cost > count).ToHashSet();
-            var metrics = IteratedSearch.Run(name, search, geometry, rays, 1, window, (i, table, outcome) =>
-                {
-                    apply(i, table, outcome);
-                    return true;
-                }, progress: null, settled: i => !selected.Contains(i), schedule: (_, _) => schedule, ledger: ledger,
-                settle: (_, i) => classically.Contains(i));
+            var price = selected.Count * cost / selected.Sum(i => expected[i] * (1 - miss));
+            PassMetrics metrics;
+            if (search is IPooledSearch { PoolsRays: true } pooled && Pool(search, pooled, count, expected, rest, allowance, price) is { } pool)
+                metrics = PooledRound.Run(name, pooled, geometry, rays, pool, ledger, window, apply);
+            else
+            {
+                var classically = selected.Where(i => SearchesToShare(expected[i], share, miss) * cost > count).ToHashSet();
+                metrics = IteratedSearch.Run(name, search, geometry, rays, 1, window, (i, table, outcome) =>
+                    {
+                        apply(i, table, outcome);
+                        return true;
+                    }, progress: null, settled: i => !selected.Contains(i), schedule: (_, _) => schedule, ledger: ledger,
+                    settle: (_, i) => classically.Contains(i));
+            }
             total = total is null ? metrics : PassMetrics.Phases(total, metrics, 0, 0);
         }
         return total;
+    }
+
+    // The rays of a pooled round, likeliest wrong first until the rest is within the allowance: a pool's cost grows with
+    // the root of its rays, so one round takes every ray it needs. Null when confirming rays one by one costs less per
+    // expected wrong ray removed (price: the one-by-one round's queries per expected wrong ray it removes).
+    private static List<int>? Pool(IHitSearch search, IPooledSearch pooled, int count, double[] expected, double rest, double allowance, double price)
+    {
+        var open = expected.Count(q => q > 0);
+        var miss = Rendering.AccuracyBudget.WorstMiss(search, count, pooled.PooledSchedule(Math.Min(open, PooledRound.PoolSize(count)), count));
+        var chosen = new List<int>();
+        var (removed, wrong) = (0.0, 0.0);
+        foreach (var i in Enumerable.Range(0, expected.Length).Where(i => expected[i] > 0).OrderByDescending(i => expected[i]).ThenBy(i => i))
+        {
+            if (rest - removed <= allowance) break;
+            chosen.Add(i);
+            removed += expected[i] * (1 - miss);
+            wrong += expected[i];
+        }
+        return removed > 0 && PooledRound.ExpectedCost(search, pooled, chosen.Count, count, wrong) / removed < price ? chosen : null;
     }
 
     // Confirmations that bring a ray's probability of being wrong from q to its share of the allowance, each

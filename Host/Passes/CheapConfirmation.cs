@@ -21,6 +21,8 @@ public sealed class CheapConfirmation
     private readonly (QSearchSchedule Schedule, double Miss, double Cost)[] _ladder;
     private readonly HashSet<QSearchSchedule> _schedules;
     private readonly double _roundRate;
+    private readonly IHitSearch _search;
+    private readonly int _count;
 
     /// <param name="first">The plan's fixed list, for the first level and for a pass without an allowance.</param>
     /// <param name="sized">Whether finer levels are sized by the allowance.</param>
@@ -30,6 +32,7 @@ public sealed class CheapConfirmation
     public CheapConfirmation(QSearchSchedule first, bool sized, IHitSearch search, int count, QSearchSchedule? full)
     {
         First = first;
+        (_search, _count) = (search, count);
         var round = BudgetRounds.Cheapest(search, count, full, first);
         _roundRate = -Math.Log(Math.Max(1e-12, Rendering.AccuracyBudget.WorstMiss(search, count, round))) / search.EmptySearchCost(count, round);
         var lists = sized ? Planned.GetOrAdd(count, n => [.. Misses
@@ -71,15 +74,26 @@ public sealed class CheapConfirmation
     public QSearchSchedule For(int rays, double? share, double? coarser = null)
     {
         if (share is not { } s || s <= 0 || _ladder.Length == 0) return First;
+        var rate = RoundRate(rays);
         double Cost(double miss, double cost, double estimate)
         {
             var pi = Math.Min(RayLedger.PriorCap, Math.Max(estimate, 0.5 / ((rays + 1) * (1 - miss))));
             var q = pi * miss / (1 - pi + pi * miss);
-            return cost + (q > s && _roundRate > 0 ? Math.Log(q / s) / _roundRate : 0);
+            return cost + (q > s && rate > 0 ? Math.Log(q / s) / rate : 0);
         }
         double Expected(double miss, double cost) => coarser is { } c
             ? (Cost(miss, cost, 0) + Cost(miss, cost, c / 2)) / 2
             : Cost(miss, cost, 0);
         return _ladder.MinBy(l => Expected(l.Miss, l.Cost)).Schedule;
+    }
+
+    // The budget rounds' best rate of ln-odds per query and ray: one ray's confirmation, or, on an engine that pools rays, a
+    // pooled search over the level's rays, which lowers every ray's odds for the cost of one search about √rays times dearer.
+    private double RoundRate(int rays)
+    {
+        if (_search is not IPooledSearch { PoolsRays: true } pooled || rays < 1) return _roundRate;
+        var schedule = pooled.PooledSchedule(Math.Min(rays, PooledRound.PoolSize(_count)), _count);
+        var miss = Rendering.AccuracyBudget.WorstMiss(_search, _count, schedule);
+        return Math.Max(_roundRate, -Math.Log(Math.Max(1e-12, miss)) * schedule.Count / _count / _search.EmptySearchCost(_count, schedule));
     }
 }

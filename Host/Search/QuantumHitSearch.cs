@@ -10,9 +10,10 @@ namespace QuantumRayTracing.Search;
 /// and window, which the gate engine loads into its gate-level oracle (the full table: a compact one
 /// kept between rounds is rebuilt for it). With <paramref name="success"/> the miss rates the passes plan with (termination
 /// rule, lattice confirmations, accuracy budget, classical settling) take each run's success from it, a noisy machine's,
-/// instead of the ideal one.
+/// instead of the ideal one. With <paramref name="pooled"/> it also runs pooled searches (<see cref="IPooledSearch"/>).
 /// </summary>
-public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false, FalseNegativeRate.RunSuccess? success = null) : IHitSearch
+public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false, FalseNegativeRate.RunSuccess? success = null,
+    bool pooled = false) : IHitSearch, IPooledSearch
 {
     private readonly Dictionary<int, QSearchSchedule> _schedules = [];
 
@@ -31,6 +32,26 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
         });
         QSearchDriver.Run(searches, engine, onRound);
         return searches.Select(s => new HitOutcome(s.Found, false, s.Cost)).ToArray();
+    }
+
+    public bool PoolsRays => pooled;
+
+    public QSearchSchedule PooledSchedule(int rays, int count) => Schedule(checked(rays * count));
+
+    public PooledOutcome RunPooled(IReadOnlyList<HitQuery> queries)
+    {
+        if (!pooled) throw new InvalidOperationException($"the {Name} engine does not run pooled searches");
+        var count = queries[0].Table.Count;
+        if (queries.Any(q => q.Table.Count != count)) throw new ArgumentException("a pooled search's tables share one N", nameof(queries));
+        if ((long)queries.Count * count > IPooledSearch.MaxPairs)
+            throw new ArgumentException($"{queries.Count} rays of {count} primitives exceed a pooled search's {IPooledSearch.MaxPairs} pairs", nameof(queries));
+        // Pair (k, p) is index k·N + p: each table's accepted rows ascend, so the pool's marked pairs ascend as they are listed.
+        var marked = new List<int>();
+        for (var k = 0; k < queries.Count; k++)
+            foreach (var p in queries[k].Table.Marked(queries[k].Window).Indices) marked.Add(k * count + p);
+        var search = new QSearch(MarkedSet.FromAscending(queries.Count * count, [.. marked]), PooledSchedule(queries.Count, count), random);
+        QSearchDriver.Run([search], engine);
+        return search.Found is { } pair ? new PooledOutcome(pair / count, pair % count, search.Cost) : new PooledOutcome(null, null, search.Cost);
     }
 
     public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) =>
