@@ -65,7 +65,8 @@ public sealed class CheapConfirmation
     /// The list for a lattice level whose <paramref name="rays"/> agreeing rays it confirms: <see cref="First"/> without a
     /// <paramref name="share"/> (no allowance), else the one of least expected cost per ray. A list costs its empty search;
     /// where it would leave a ray above its share, the budget rounds' cost of bringing the ray's odds down the rest of the way
-    /// is added, ln(q / share) over the rounds' best rate of ln-odds per query. q = π w / (1 − π + π w) is what the ledger
+    /// is added, ln(q / share) over the rounds' best rate of ln-odds per query (per ray, a pooled search's over the level's
+    /// rays where the engine pools them and that is better). q = π w / (1 − π + π w) is what the ledger
     /// will charge a ray of the level, π its estimate of how often the level's neighbours mislead, which is not known before
     /// the level is searched: the cost is averaged over two guesses, that they never do (π is then the ledger's floor, half a
     /// find over the level's rays, ½ / ((rays + 1)(1 − w))) and that they do half as often as the next coarser level's did
