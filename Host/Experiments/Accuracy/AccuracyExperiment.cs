@@ -133,7 +133,8 @@ public static class AccuracyExperiment
             (below: more required misses, the fixed cheap confirmation at every level, one lattice level more). A search that must find a hit
             among N costs about sqrt(N) queries, and so does a confirmation that nothing is closer for a given miss rate: every part grows with N.
             The default sizes each lattice level's cheap confirmation so that the ledger's charge for it, with the rounds it would still need,
-            costs least, and the rounds buy the expectation down where a stratum's finds put it (docs/rendering.md).
+            costs least, and the rounds buy the expectation down where a stratum's finds put it, searching the thousands of rays a
+            stratum's finds put under suspicion together in pooled searches over their (ray, primitive) pairs (docs/rendering.md).
             """);
         var others = AccuracyBenchmark.Alternatives.Skip(1).ToArray();
         var growth = new TextTable("growth", ["N", "default: Int/Ray", "cheap confirmations", "other searches and tests", "budget rounds", "settled",
@@ -160,7 +161,7 @@ public static class AccuracyExperiment
     }
 
     // The default on seeds 1..seeds of each N: one scene's cost depends on how many of its cheap confirmations happen to find
-    // something, since each find charges its whole stratum and the rounds then confirm every ray of it.
+    // something, since each find charges its whole stratum and the rounds then confirm the rays of it.
     private static void SeedSpread(Report report, IReadOnlyList<(int N, RenderMeasurement First)> seedOne, int seeds, Action<string> progress)
     {
         report.Text($$"""
@@ -168,7 +169,7 @@ public static class AccuracyExperiment
             budget rounds' share of it, and the expected and measured wrong pixels summed over the seeds (the budget: {{Invariant($"{AccuracyBudget.Target * GrowthSize * GrowthSize * seeds:0.0}")}}).
             A scene costs more where its cheap confirmations happen to find something: each find raises the charge of its whole
             stratum (every ray of that lattice level on the cheap path), and the rounds then confirm rays of that stratum until
-            the charge is within the allowance.
+            the charge is within the allowance, in one pooled search per pool where that is cheaper than one search per ray.
             """);
         var table = new TextTable("growth-seeds", ["N", "Int/Ray by seed", "mean", "min", "max", "budget rounds (mean)", "expected", "wrong"]);
         foreach (var (n, first) in seedOne)
