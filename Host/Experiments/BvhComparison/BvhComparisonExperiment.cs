@@ -73,7 +73,8 @@ public static class BvhComparisonExperiment
               about 4 N log2 N), spread over the frame's rays in the *build* column. Its answers are brute force's, so its image is too.
             - **Quantum**: `render`'s default pipeline (lattice, cheap confirmations, the accuracy budget) on the analytic engine.
               Its Int/Ray counts oracle queries and classical tests; the oracle's own gates grow with N (it loads every primitive),
-              which Int/Ray does not show (docs/frame-sweep.md prices them).
+              which Int/Ray does not show (docs/frame-sweep.md prices them). Its budget rounds may search many rays' (ray, primitive)
+              pairs at once, each query loading a ray beside a primitive (docs/conventions.md, pooled searches).
 
             Brute force and the BVH run the paper's plain pipeline (one search per ray); their answers are certain, so the lattice has nothing to add.
             """));
