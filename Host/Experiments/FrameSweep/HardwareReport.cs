@@ -37,7 +37,8 @@ public sealed record HardwareReport(
         report.Text("""
             `qrt estimate` prices one ray's circuits; a frame is about 10^5 Grover runs of many lengths over primary, specular and shadow
             rays. `qrt estimate --frame` renders a frame with the analytic engine (the same searches as `render --engine analytic` with the
-            same options and seed), records every Grover run at the engine seam (pass, engine batch, N, r, oracle shape), prices each run's
+            same options and seed, but for the budget rounds, which confirm each ray with a search of its own: a pooled search over
+            many rays' pairs has no circuit to price), records every Grover run at the engine seam (pass, engine batch, N, r, oracle shape), prices each run's
             gate-level circuit with the Microsoft Resource Estimator, and sums. This report applies it to the paper's scenes.
             """);
         report.Text($"The machine named at the end was shared with other work while this ran: a classical wall time is the fastest of at least {FrameEstimate.ClassicalRepeats} renders (more while they took under {FrameEstimate.ClassicalTimingBudget.TotalSeconds} s together), and still noisy.");
