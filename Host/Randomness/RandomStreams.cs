@@ -24,6 +24,9 @@ public static class RandomStreams
     /// <summary>The area-light sample each VPL takes for its own direct light.</summary>
     public const ulong VplAreaLight = 7;
 
+    /// <summary>A tiled render's tiles: tile k's seed is drawn from stream Tiles + k (<see cref="Rendering.TiledRender"/>).</summary>
+    public const ulong Tiles = 1UL << 16;
+
     /// <summary>Supersampling experiments: one analytic engine per estimator run, from this stream on.</summary>
     public const ulong Supersampling = 1UL << 24;
 

@@ -12,7 +12,7 @@ public static class CameraRays
     /// <summary>Rays in pixel order: index y · width + x.</summary>
     public static Ray[] For(Camera camera, int width, int height)
     {
-        var at = Of(camera, width, height);
+        var at = Of(camera, ImageWindow.Whole(width, height));
         var rays = new Ray[width * height];
         // Rows on all cores: each ray depends only on its pixel.
         Parallel.For(0, height, y =>
@@ -23,13 +23,19 @@ public static class CameraRays
     }
 
     /// <summary>The same rays as <see cref="For"/>, each computed when read: a render keeps no camera ray.</summary>
-    public static ComputedList<Ray> Computed(Camera camera, int width, int height) => new(width * height, Of(camera, width, height));
+    public static ComputedList<Ray> Computed(Camera camera, int width, int height) => Computed(camera, ImageWindow.Whole(width, height));
 
-    // The ray through pixel y · width + x.
-    private static Func<int, Ray> Of(Camera camera, int width, int height)
+    /// <summary>The rays of <paramref name="window"/>'s pixels, in its own pixel order (y · its width + x), each computed when read.</summary>
+    public static ComputedList<Ray> Computed(Camera camera, ImageWindow window) => new(window.Width * window.Height, Of(camera, window));
+
+    // The ray through the window's pixel y · width + x: the whole image's pixel (X + x, Y + y).
+    private static Func<int, Ray> Of(Camera camera, ImageWindow window)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
-        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        var (width, height) = (window.FullWidth, window.FullHeight);
+        ArgumentOutOfRangeException.ThrowIfLessThan(window.Width, 1);
+        ArgumentOutOfRangeException.ThrowIfLessThan(window.Height, 1);
+        if (window.X < 0 || window.Y < 0 || window.X + window.Width > width || window.Y + window.Height > height)
+            throw new ArgumentOutOfRangeException(nameof(window), window, "the window reaches outside its image");
         var forward = (camera.LookAt - camera.Position).Normalized();
         var right = camera.Up.Cross(forward).Normalized();
         var up = forward.Cross(right);
@@ -37,7 +43,8 @@ public static class CameraRays
         var halfWidth = halfHeight * width / height;
         return pixel =>
         {
-            var (y, x) = Math.DivRem(pixel, width);
+            var (y, x) = Math.DivRem(pixel, window.Width);
+            (y, x) = (y + window.Y, x + window.X);
             var u = ((x + 0.5) / width * 2 - 1) * halfWidth;
             var v = (1 - (y + 0.5) / height * 2) * halfHeight;
             return new Ray(camera.Position, forward + u * right + v * up);

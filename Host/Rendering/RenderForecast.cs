@@ -11,11 +11,13 @@ namespace QuantumRayTracing.Rendering;
 /// a smaller warm-up run; the time is a line through the two, in the pixel count.
 /// </summary>
 /// <remarks>
-/// The renderer holds every surface point until shading and, while a pass runs, that pass's state per ray (camera and
-/// shadow rays themselves are computed when read), so its memory grows with the rays it traces: <see cref="BytesPerRay"/>
-/// per ray above <see cref="BaseBytes"/>, rounded up from the largest peak resident memory `bench scale` measured
-/// (4096x4096: up to 87 bytes a ray, 289 a pixel; docs/scale.md, docs/rendering.md). The calibration gives the rays per pixel. Larger renders spend less time per
-/// pixel than the calibration's, so the time is an upper estimate (docs/scale.md sets each forecast beside the measured times).
+/// Large renders are tiled (<see cref="TiledRender"/>): the renderer holds one tile's work at a time, its surface points
+/// and, while a pass runs, that pass's state per ray (camera and shadow rays themselves are computed when read), about
+/// <see cref="BytesPerRay"/> per ray over the largest traced tile; and per pixel of the image, <see cref="BytesPerPixel"/>
+/// (the render's and the reference's 8-bit images and the image encoder's buffer). Above <see cref="BaseBytes"/>, rounded up
+/// from the peak resident memory `bench scale` measured (docs/scale.md, docs/rendering.md). The calibration gives the rays
+/// per pixel. Larger renders spend less time per pixel than the calibration's, so the time is an upper estimate (docs/scale.md
+/// sets each forecast beside the measured times).
 /// </remarks>
 public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakBytes, TimeSpan Time)
 {
@@ -24,9 +26,14 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
 
     public const int CalibrationSide = 128;
 
-    public const long BaseBytes = 256L << 20;
+    public const long BaseBytes = 320L << 20;
 
     public const long BytesPerRay = 96;
+
+    public const long BytesPerPixel = 8;
+
+    /// <summary>The most pixels one tile traces: its own and a border of the coarsest lattice step (4 levels) on each side.</summary>
+    public const long TilePixels = (TiledRender.TileSize + 2 * 16L) * (TiledRender.TileSize + 2 * 16L);
 
     /// <summary>Whether <paramref name="settings"/> ask for a render large enough to forecast: on an engine whose work runs here in C#.</summary>
     public static bool Applies(RenderRunSettings settings) =>
@@ -51,7 +58,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
         var pixels = (long)options.Width * options.Height;
         var time = largeTime + TimeSpan.FromSeconds(perPixel * (pixels - largePixels));
         var raysPerPixel = rays / largePixels;
-        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * pixels), time);
+        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * TilePixels) + BytesPerPixel * pixels, time);
     }
 
     private static (TimeSpan Time, long Rays) Timed(RenderRunSettings settings, RenderOptions options)
@@ -76,7 +83,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
     {
         if (PeakBytes <= limitBytes) return;
         var limit = limitGiven ? $"the --max-memory limit of {Bytes(limitBytes)}" : $"the {Bytes(limitBytes)} this machine has available (--max-memory sets the limit)";
-        throw new UserError(Invariant($"--size: a render of {Pixels:N0} pixels needs about {Bytes(PeakBytes)} (forecast: {RaysPerPixel:F2} rays per pixel x {BytesPerRay} bytes), more than {limit}; render a smaller size"));
+        throw new UserError(Invariant($"--size: a render of {Pixels:N0} pixels needs about {Bytes(PeakBytes)} (forecast: {BytesPerPixel} bytes per pixel and a tile's {RaysPerPixel:F2} rays per pixel x {BytesPerRay} bytes), more than {limit}; render a smaller size"));
     }
 
     /// <summary>A byte count as people read it: 512 MB, 3.2 GB.</summary>

@@ -1,6 +1,7 @@
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Rendering;
 
@@ -20,8 +21,10 @@ public static class Renderer
         // off the simulator altogether.
         if (engine.Kind.RunsQSharp) options = options with { Budget = null };
         var approximation = engine.Kind.ApproximatesNoise && !engine.NoiseModel.IsNoiseless ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
-        using var search = EngineFactory.CreateSearch(engine.Kind, new SeededRandom(options.Seed), engine.Workers, engine.Search,
+        IHitSearch Search(RenderOptions o) => EngineFactory.CreateSearch(engine.Kind, new SeededRandom(o.Seed), engine.Workers, engine.Search,
             engine.MaxQubits, engine.Pool, engine.Noise, approximation, engine.NoiseAware);
+        if (TiledRender.Applies(options)) return TiledRender.Render(scene, Search, options, progress);
+        using var search = Search(options);
         return SceneRenderer.Render(scene, search, options, progress);
     }
 }

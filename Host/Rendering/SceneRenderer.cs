@@ -16,15 +16,22 @@ namespace QuantumRayTracing.Rendering;
 /// </summary>
 public static class SceneRenderer
 {
-    public static RenderResult Render(Scene scene, IHitSearch search, RenderOptions options, IRenderProgress? progress = null)
+    /// <param name="scene">The scene.</param>
+    /// <param name="search">The engine's search.</param>
+    /// <param name="options">The render's options; a window's size.</param>
+    /// <param name="progress">Told how far each pass is.</param>
+    /// <param name="window">The image's pixels to render (a tile, <see cref="TiledRender"/>), options.Width x options.Height of them; null: the whole image.</param>
+    public static RenderResult Render(Scene scene, IHitSearch search, RenderOptions options, IRenderProgress? progress = null, ImageWindow? window = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(options.AreaSamples, 1);
         ArgumentOutOfRangeException.ThrowIfNegative(options.Vpl);
+        if (window is { } w && (w.Width != options.Width || w.Height != options.Height))
+            throw new ArgumentException($"a {w.Width}x{w.Height} window rendered at {options.Width}x{options.Height}", nameof(window));
         // Stages in order: camera rays, the pass plan (its stop rule may calibrate on camera rays), primary rays,
         // specular rays, shadow rays, area light, indirect light, shading. Each pass's metrics are kept in that order.
         var passes = new List<PassMetrics>();
         // Camera and shadow rays are computed from their pixel or surface point when read, never all held (docs/rendering.md).
-        var cameraRays = CameraRays.Computed(scene.Camera, options.Width, options.Height);
+        var cameraRays = CameraRays.Computed(scene.Camera, window ?? ImageWindow.Whole(options.Width, options.Height));
         var plan = PlanPasses(scene, search, options, cameraRays, passes, progress);
         var pixels = cameraRays.Count;
         var radiance = new Vec3[pixels];

@@ -1,0 +1,71 @@
+using QuantumRayTracing.Output;
+using QuantumRayTracing.Passes;
+using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Rendering;
+
+/// <summary>
+/// A large render in tiles (<see cref="ImageTiles"/>): each tile's pixels, with a border as wide as the coarsest lattice step,
+/// rendered on their own by <see cref="SceneRenderer"/> with a seed of the tile's own, and its interior copied into the image.
+/// A render then holds the image and one tile's work, not every pixel's, and a tile renders the same whenever it runs. Each
+/// tile keeps the budget for its own pixels (its allowance is the budget's share of its interior, spent on its traced pixels),
+/// so the image keeps it too; the border's rays are traced and counted in every tile that traces them.
+/// </summary>
+public static class TiledRender
+{
+    /// <summary>The side of a tile's own pixels: a multiple of every lattice step.</summary>
+    public const int TileSize = 512;
+
+    /// <summary>Renders from this many pixels on are tiled (<see cref="RenderForecast.LargePixels"/>, where the forecast starts).</summary>
+    public static bool Applies(RenderOptions options) => (long)options.Width * options.Height >= RenderForecast.LargePixels;
+
+    /// <summary>A tile's seed: the render's seed forked for the tile, so no two tiles draw alike.</summary>
+    public static ulong TileSeed(ulong seed, int tile) => new SeededRandom(seed).Fork(RandomStreams.Tiles + (ulong)tile).NextUInt64();
+
+    /// <param name="scene">The scene.</param>
+    /// <param name="search">The engine's search for a tile's options (their seed is the tile's); disposed after the tile.</param>
+    /// <param name="options">The whole render's options.</param>
+    /// <param name="progress">Told each tile's passes, under the tile's number.</param>
+    /// <param name="tileSize">The side of a tile's own pixels, a multiple of the coarsest lattice step.</param>
+    public static RenderResult Render(Scene scene, Func<RenderOptions, IHitSearch> search, RenderOptions options, IRenderProgress? progress = null, int tileSize = TileSize)
+    {
+        var step = 1 << options.LatticeLevels;
+        if (tileSize % step != 0) throw new ArgumentException($"tiles of {tileSize} pixels do not hold whole lattice steps of {step}", nameof(tileSize));
+        var tiles = ImageTiles.Of(options.Width, options.Height, tileSize, step);
+        var image = new RgbImage(options.Width, options.Height);
+        var passes = new List<PassMetrics[]>();
+        var expected = 0.0;
+        foreach (var tile in tiles)
+        {
+            var traced = tile.Traced;
+            var tileOptions = options with
+            {
+                Width = traced.Width, Height = traced.Height, Seed = TileSeed(options.Seed, tile.Index),
+                Budget = options.Budget * tile.Interior.Pixels / traced.Pixels,
+            };
+            var tileProgress = progress is null ? null : new TileProgress(progress, tile.Index, tiles.Count);
+            RenderResult part;
+            using (var tileSearch = search(tileOptions))
+                part = SceneRenderer.Render(scene, tileSearch, tileOptions, tileProgress, traced);
+            for (var y = 0; y < tile.Interior.Height; y++)
+                for (var x = 0; x < tile.Interior.Width; x++)
+                {
+                    var (r, g, b) = part.Image.GetPixel(tile.Interior.X - traced.X + x, tile.Interior.Y - traced.Y + y);
+                    image.SetPixel(tile.Interior.X + x, tile.Interior.Y + y, r, g, b);
+                }
+            passes.Add([.. part.Passes]);
+            expected += part.Budget.ExpectedWrongPixels;
+        }
+        // Every tile runs the same passes in the same order; each pass's metrics are summed over the tiles.
+        var merged = Enumerable.Range(0, passes[0].Length).Select(k => PassMetrics.Total(passes[0][k].Name, [.. passes.Select(p => p[k])])).ToArray();
+        return new RenderResult(image, merged) { Budget = new AccuracyBudget(expected, (long)options.Width * options.Height, options.Budget) };
+    }
+
+    // A tile's passes reported under its number.
+    private sealed class TileProgress(IRenderProgress inner, int tile, int tiles) : IRenderProgress
+    {
+        public void Report(string stage, double done) => inner.Report($"tile {tile + 1} of {tiles}, {stage}", done);
+    }
+}
