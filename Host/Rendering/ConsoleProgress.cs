@@ -24,8 +24,10 @@ public sealed class ConsoleProgress(string label) : IRenderProgress
         if (_clock.Elapsed < Delay) return;
         var percent = (int)Math.Floor(Math.Clamp(done, 0, 1) * 100);
         // Redirected, a line per tenth of a pass: the time left rides along, it does not add lines.
-        var step = $"{label}: {stage} pass {(_terminal ? percent : percent / 10 * 10)}%";
-        var line = step + Left(done);
+        // A pass reports its name ("shadow"); a tiled render reports its tiles as one stage ("64 tiles"), its time left the render's.
+        var (what, scope) = stage.EndsWith(" tiles", StringComparison.Ordinal) ? (stage, "render") : ($"{stage} pass", "pass");
+        var step = $"{label}: {what} {(_terminal ? percent : percent / 10 * 10)}%";
+        var line = step + Left(done, scope);
         if ((_terminal ? line : step) == _lastLine) return;
         _lastLine = _terminal ? line : step;
         if (_terminal)
@@ -36,13 +38,13 @@ public sealed class ConsoleProgress(string label) : IRenderProgress
         else Console.Error.WriteLine(line);
     }
 
-    // The pass's time left at its pace so far, once it has run long enough to say (a few seconds and a tenth of its work).
-    private string Left(double done)
+    // The stage's time left at its pace so far, once it has run long enough to say (a few seconds and a tenth of its work).
+    private string Left(double done, string scope)
     {
         var elapsed = (_clock.Elapsed - _stageStart).TotalSeconds;
         if (elapsed < 3 || done < 0.1 || done >= 1) return "";
         var left = elapsed * (1 - done) / done;
-        return FormattableString.Invariant($", about {Math.Ceiling(left):F0} s left in this pass");
+        return FormattableString.Invariant($", about {Math.Ceiling(left):F0} s left in this {scope}");
     }
 
     /// <summary>Clears the in-place line so the results print on a clean line.</summary>

@@ -27,7 +27,7 @@ public static class TiledRender
     /// <param name="scene">The scene.</param>
     /// <param name="search">The engine's search for a tile's options (their seed is the tile's); disposed after the tile.</param>
     /// <param name="options">The whole render's options.</param>
-    /// <param name="progress">Told each tile's passes, under the tile's number.</param>
+    /// <param name="progress">Told the tiles' progress as one stage, "n tiles".</param>
     /// <param name="tileSize">The side of a tile's own pixels, a multiple of the coarsest lattice step.</param>
     public static RenderResult Render(Scene scene, Func<RenderOptions, IHitSearch> search, RenderOptions options, IRenderProgress? progress = null, int tileSize = TileSize)
     {
@@ -37,15 +37,16 @@ public static class TiledRender
         var image = new RgbImage(options.Width, options.Height);
         var passes = new List<PassMetrics[]>();
         var expected = 0.0;
+        var tileProgress = progress is null ? null : new TileProgress(progress, tiles.Count);
         foreach (var tile in tiles)
         {
+            tileProgress?.Start(tile.Index);
             var traced = tile.Traced;
             var tileOptions = options with
             {
                 Width = traced.Width, Height = traced.Height, Seed = TileSeed(options.Seed, tile.Index),
                 Budget = options.Budget * tile.Interior.Pixels / traced.Pixels,
             };
-            var tileProgress = progress is null ? null : new TileProgress(progress, tile.Index, tiles.Count);
             RenderResult part;
             using (var tileSearch = search(tileOptions))
                 part = SceneRenderer.Render(scene, tileSearch, tileOptions, tileProgress, traced);
@@ -59,13 +60,35 @@ public static class TiledRender
             expected += part.Budget.ExpectedWrongPixels;
         }
         // Every tile runs the same passes in the same order; each pass's metrics are summed over the tiles.
+        tileProgress?.Start(tiles.Count);
         var merged = Enumerable.Range(0, passes[0].Length).Select(k => PassMetrics.Total(passes[0][k].Name, [.. passes.Select(p => p[k])])).ToArray();
         return new RenderResult(image, merged) { Budget = new AccuracyBudget(expected, (long)options.Width * options.Height, options.Budget) };
     }
 
-    // A tile's passes reported under its number.
-    private sealed class TileProgress(IRenderProgress inner, int tile, int tiles) : IRenderProgress
+    // The whole render as one stage, "n tiles": the tiles done, and of the running tile the share of its passes done (counted
+    // from the first tile, which runs the same passes), so the time left is the render's.
+    private sealed class TileProgress(IRenderProgress inner, int tiles) : IRenderProgress
     {
-        public void Report(string stage, double done) => inner.Report($"tile {tile + 1} of {tiles}, {stage}", done);
+        private readonly List<string> _passes = [];
+        private (int Tile, int Pass, string? Stage) _at;
+
+        public string Stage => $"{tiles} tiles";
+
+        public void Start(int tile)
+        {
+            _at = (tile, -1, null);
+            inner.Report(Stage, (double)tile / tiles);
+        }
+
+        public void Report(string stage, double done)
+        {
+            if (stage != _at.Stage)
+            {
+                _at = (_at.Tile, _at.Pass + 1, stage);
+                if (_at.Tile == 0) _passes.Add(stage);
+            }
+            var share = _at.Tile == 0 || _passes.Count == 0 ? 0 : Math.Min(1, (_at.Pass + Math.Clamp(done, 0, 1)) / _passes.Count);
+            inner.Report(Stage, (_at.Tile + share) / tiles);
+        }
     }
 }
