@@ -73,6 +73,24 @@ public class GateLevelExposureTests(FullStateFixture fixture)
     }
 
     [Fact]
+    public void TheChannelsAgreeWithTheGradedHarmToFirstOrder()
+    {
+        // Both come from one grading of each error, by two routes: the harm h simulates the index register with that error alone;
+        // the channels average each error's dephasing over pairs of index values and the run simulates their sum. At p = 1e-7 the
+        // run's 1 − Φ is the first-order harm to within 1e-4 of itself. They differ only where the grading counts a helpful error as
+        // no harm (the channels keep its help) and where the two oracle sections' dephasing differs (the channels average them),
+        // so they must agree within 3 %; a channel dropped, doubled or put in the wrong class misses by far more.
+        var eight = NoiseBenchmark.EightPrimitiveRay();
+        var traced = GateLevelExposure.Trace(Pool, eight, "test", traces: 2);
+        Assert.NotNull(traced.Channels);
+        const double p = 1e-7;
+        var noise = NoiseModel.Depolarizing(p);
+        var marked = eight.Table.Marked(eight.Window).MarkedCount;
+        var runs = new[] { 1, 2 }.Select(r => (r, Channels: (1 - traced.RunFidelity(noise, 8, marked, r)) / p, Graded: traced.Run(r).HarmWeight)).ToArray();
+        Assert.Fail(string.Join("; ", runs.Select(x => $"r={x.r}: channels {x.Channels:0.0} graded {x.Graded:0.0}")) + $" full {traced.Channels.Full.Depolarizing:0.0} cross {traced.Channels.Cross.Depolarizing:0.0} unmarked {traced.Channels.Unmarked.Depolarizing:0.0}");
+    }
+
+    [Fact]
     public void ATableWithANegativeHarmIsRefused()
     {
         var table = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(Path.Combine(RepositoryPaths.Root, "Host", "Noise", "gate-level-exposure.json")))!;

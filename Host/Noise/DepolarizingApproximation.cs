@@ -32,7 +32,7 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
 
     /// <summary>Φ of a Grover run: the gate-level circuit's counted exposure, or the lookup oracle's locations (<see cref="NoiseLocations"/>) at share s.</summary>
     public double RunFidelity(NoiseModel noise, GroverRequest request) =>
-        GateLevel is { } gate ? gate.RunFidelity(noise, request.Iterations)
+        GateLevel is { } gate ? gate.RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations)
         : Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
 
     /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
@@ -54,7 +54,7 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     /// </summary>
     public FalseNegativeRate.RunSuccess NoisySuccess(NoiseModel noise) => (count, marked, iterations) =>
     {
-        var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, iterations)
+        var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, count, marked, iterations)
             : Fidelity(noise, NoiseLocations.PrepareAndMeasure(count) + (double)iterations *
                 _lookupIterations.GetOrAdd((count, marked), k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray()))));
         return MarkedProbability(count, marked, iterations, fidelity);

@@ -23,7 +23,8 @@ public interface IModelCheckRow
 /// The analytic model of a search and the wrong variants it is checked against (negative controls): the ideal formula
 /// (no noise), every location harmful (s = 1), a third of them (s = 1/3), the model without the factor of the
 /// preparation and measurement (Φ = F^r), and the gate-level count without its grading (every Pauli the counting rule
-/// calls harmful a whole harm, the model before the harm was graded).
+/// calls harmful a whole harm, the model before the harm was graded); and, beside them, the graded harms taken as independent
+/// (Φ = F₀ · F^r, the gate-level model before its iterations were simulated as channels on the index register).
 /// </summary>
 public enum SearchModel
 {
@@ -33,6 +34,7 @@ public enum SearchModel
     ShareThird,
     WithoutPreparation,
     Ungraded,
+    IndependentHarms,
 }
 
 /// <summary>One Grover run measured many times on the noisy simulator, beside what the depolarizing approximation predicts.</summary>
@@ -66,7 +68,8 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
         SearchModel.Ungraded => Exposure is { } u ? (u.Outside.Ungraded + (double)Iterations * u.Iteration.Ungraded).Fidelity(Noise) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
         SearchModel.WithoutPreparation => Exposure is { } e ? Math.Min(1.0, Math.Pow(e.Iteration.Fidelity(Noise), Iterations))
             : DepolarizingApproximation.Default.Fidelity(Noise, Locations - NoiseLocations.PrepareAndMeasure(Count)),
-        _ => Exposure is { } g ? g.RunFidelity(Noise, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        SearchModel.IndependentHarms => Exposure is { } h ? h.IndependentHarmsFidelity(Noise, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        _ => Exposure is { } g ? g.RunFidelity(Noise, Count, Marked, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
     });
 
     /// <summary>Binomial standard error of <see cref="Observed"/> at <paramref name="model"/>'s probability.</summary>
