@@ -13,6 +13,10 @@
 // can unmark the marked index or mark others, which costs a run more or less than the uniform readout, by how many.
 // The tables track the support of the state, not its amplitudes; the index register's amplitudes are simulated exactly
 // (2^n values, the oracle's marking read from its diagonal gates). Negative harm (an error that helps) is counted as none.
+//
+// Beside the harm, `channels` gives the same errors per iteration as channels on the index register, for a model in which
+// several errors need not harm independently (Host/Noise/SearchChannels.cs): the whole harm of the effects graded FULL, and
+// the dephasing of the others, averaged over each class of index pairs (pairClasses).
 
 import { applyBoth, Circuit, diagonal, locationPatterns, product, superposeBoth, uniformDifference } from "./noise-exposure.mjs";
 
@@ -33,9 +37,10 @@ export function gradedHarm(ops, marked = null, circuit = new Circuit(ops), { fra
   if (!search.graded) return null;
   const harm = {};
   const outsideHarm = {};
-  // The iterations' errors as channels on the index register (noise-dephasing below): the whole harm of the effects graded
-  // FULL, and per oracle section the class-averaged dephasing of the errors whose effect is a known phase or garbage.
-  const fullHarm = { X: 0, Y: 0, Z: 0 };
+  // The iterations' errors as channels on the index register (pairClasses below), per iteration: the whole harm of the effects
+  // graded FULL at its locations (a diffusion's with its oracle section, those after the last diffusion with the last), and the
+  // class-averaged dephasing of the errors whose effect is a known phase or garbage in its oracle section.
+  const fullHarm = Array.from({ length: search.iterations }, () => ({ X: 0, Y: 0, Z: 0 }));
   const dephasing = Array.from({ length: search.iterations }, () => ({ X: pairClasses(), Y: pairClasses(), Z: pairClasses() }));
   const random = seededUniform(seed);
   let graded = 0;
@@ -52,7 +57,7 @@ export function gradedHarm(ops, marked = null, circuit = new Circuit(ops), { fra
     if (!outside) {
       for (const pauli of ["X", "Y", "Z"]) {
         const effect = effects[pauli];
-        if (effect.full) fullHarm[pauli] += weight;
+        if (effect.full) fullHarm[search.iterationOf[k] - 1][pauli] += weight;
         else if (effect.branches.some((b) => b.phase || b.garbage)) {
           const section = effect.branches.find((b) => b.phase || b.garbage).section;
           if (section >= 1 && section <= search.iterations) addPairClasses(dephasing[section - 1][pauli], search.pairDephasing(effect), weight);
@@ -276,6 +281,13 @@ class SearchStructure {
       this.section[k] = inside ? -1 : section;
     });
     this.iterations = section - 1;
+    // The iteration each op belongs to: the last oracle section begun at or before it, at most the last iteration.
+    this.iterationOf = new Int32Array(ops.length);
+    let owner = 1;
+    for (let k = 0; k < ops.length; k++) {
+      if (this.sectionBefore[k] > 0) owner = this.sectionBefore[k];
+      this.iterationOf[k] = Math.max(1, Math.min(owner, this.iterations));
+    }
     this.n = this.indexSources.length;
     this.graded &&= this.n === index.size && this.n > 0 && this.iterations > 0;
     if (!this.graded) return;

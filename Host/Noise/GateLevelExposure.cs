@@ -21,10 +21,10 @@ namespace QuantumRayTracing.Noise;
 /// <param name="Iteration">One Grover iteration: the phase oracle and the reflection.</param>
 /// <param name="Estimate">How the graded harm was estimated and its spread; null when it is not graded.</param>
 /// <param name="Channels">
-/// One iteration's errors as channels on the index register (<see cref="IterationChannels"/>), the run's Φ simulated with them;
+/// The iterations' errors as channels on the index register (<see cref="SearchChannels"/>), the run's Φ simulated with them;
 /// null: Φ = F₀ · F^r, the graded harms taken as independent.
 /// </param>
-public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration, HarmEstimate? Estimate = null, IterationChannels? Channels = null)
+public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration, HarmEstimate? Estimate = null, SearchChannels? Channels = null)
 {
     /// <summary>The most iterations of a traced run whose graded harm the table holds.</summary>
     public const int MaxTracedIterations = 2;
@@ -45,7 +45,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
 
     private readonly System.Collections.Concurrent.ConcurrentDictionary<NoiseModel, (double Outside, double Iteration)> _logFidelities = new();
 
-    private readonly System.Collections.Concurrent.ConcurrentDictionary<(NoiseModel Noise, int Register, int Marked, int Iterations), double> _channelFidelities = new();
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, int Iterations), double> _channelFidelities = new();
 
     /// <summary>Φ = F₀ · F^r of a run with <paramref name="iterations"/> iterations, the graded harms taken as independent.</summary>
     public double IndependentHarmsFidelity(NoiseModel noise, int iterations)
@@ -60,17 +60,20 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     /// simulated channels keep, (P − u) / (P₀ − u), clamped to [0, 1] (a run past its optimum, P₀ below u, can be dephased
     /// beyond u); otherwise <see cref="IndependentHarmsFidelity"/>. F₀ (<see cref="Outside"/>) stays a whole-harm factor.
     /// </summary>
-    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations)
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations) =>
+        Channels is null || noise.PerGate <= 0 ? IndependentHarmsFidelity(noise, iterations)
+        : _channelFidelities.GetOrAdd((noise, count, marked, iterations), key => RunFidelity(key.Noise, key.Count, key.Marked, key.Iterations, SearchChannels.FittedWholeHarm));
+
+    /// <summary>The same with <paramref name="wholeHarm"/> for the harm of an error the grading cannot follow (the fit tries several), not kept.</summary>
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, double wholeHarm)
     {
         if (Channels is not { } channels || noise.PerGate <= 0) return IndependentHarmsFidelity(noise, iterations);
-        return _channelFidelities.GetOrAdd((noise, 1 << Search.SearchRegisters.For(count).IndexQubits, marked, iterations), key =>
-        {
-            var uniform = (double)key.Marked / key.Register;
-            var ideal = DephasedSearch.MarkedProbability(key.Register, key.Marked, key.Iterations, 1, DephasedSearch.Iteration.Ideal);
-            if (Math.Abs(ideal - uniform) < 1e-9) return IndependentHarmsFidelity(key.Noise, key.Iterations);
-            var noisy = DephasedSearch.MarkedProbability(key.Register, key.Marked, key.Iterations, Outside.Fidelity(key.Noise), channels.Under(key.Noise));
-            return Math.Clamp((noisy - uniform) / (ideal - uniform), 0, 1);
-        });
+        var register = 1 << Search.SearchRegisters.For(count).IndexQubits;
+        var uniform = (double)marked / register;
+        var ideal = DephasedSearch.MarkedProbability(register, marked, iterations, 1, DephasedSearch.Iteration.Ideal);
+        if (Math.Abs(ideal - uniform) < 1e-9) return IndependentHarmsFidelity(noise, iterations);
+        var noisy = channels.MarkedProbability(noise, register, marked, iterations, Outside.Fidelity(noise), wholeHarm);
+        return Math.Clamp((noisy - uniform) / (ideal - uniform), 0, 1);
     }
 
     /// <summary>
@@ -99,7 +102,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         var marked = input.Table.Marked(input.Window).Indices.ToArray();
         string Expression(int r) => $"{QSharpOperations.MeasureGateGroverSearch}({argument}, {r.ToString(CultureInfo.InvariantCulture)})";
         NoiseExposure outsideCounts = null!;
-        var graded = new (NoiseExposure Run, NoiseExposure Outside, IterationChannels Channels)[traces];
+        var graded = new (NoiseExposure Run, NoiseExposure Outside, SearchChannels Channels)[traces];
         pool.ForEach(Enumerable.Range(-1, traces + 1).ToArray(), (copy, bridge) =>
         {
             if (copy < 0)
@@ -111,7 +114,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
                 sampling: fraction < 1 ? (fraction, (uint)copy + 1) : null);
             if (summary["harm"] is not { } harm || summary["outsideHarm"] is not { } outside || summary["harmChannels"] is not { } channels)
                 throw new InvalidOperationException($"the grading did not read {shape}'s traced circuit as a Grover search over its index register");
-            graded[copy] = (NoiseExposure.Parse(summary["exposure"]!, harm), NoiseExposure.Parse(summary["exposure"]!, outside), IterationChannels.FromTrace(channels));
+            graded[copy] = (NoiseExposure.Parse(summary["exposure"]!, harm), NoiseExposure.Parse(summary["exposure"]!, outside), SearchChannels.FromTrace(channels));
         });
         // Per trace: the outside locations' harm, and the rest shared by the iterations (counts: the run's less the r = 0 circuit's).
         var iterations = graded.Select(g => (1.0 / traced) * (g.Run - (outsideCounts with { Harm = g.Outside.Harm }))).ToArray();
@@ -158,7 +161,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
             json["outsideHarm"] = outside;
             json["iterationHarm"] = iteration;
             if (Estimate is { } estimate) json["harmEstimate"] = estimate.ToJson();
-            if (Channels is { } channels) json["iterationChannels"] = channels.ToJson();
+            if (Channels is { } channels) json["channels"] = channels.ToJson();
         }
         return json;
     }
@@ -169,7 +172,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         var shape = node["shape"]!.GetValue<string>();
         var exposure = new GateLevelExposure(shape, NoiseExposure.Parse(node["outside"]!, node["outsideHarm"]), NoiseExposure.Parse(node["iteration"]!, node["iterationHarm"]),
             node["harmEstimate"] is { } estimate ? HarmEstimate.Parse(estimate) : null,
-            node["iterationChannels"] is { } channels ? IterationChannels.Parse(channels, shape) : null);
+            node["channels"] is { } channels ? SearchChannels.Parse(channels, shape) : null);
         foreach (var (part, harm) in new[] { ("outsideHarm", exposure.Outside.Harm), ("iterationHarm", exposure.Iteration.Harm) })
             foreach (var (kind, paulis) in harm ?? new Dictionary<string, IReadOnlyDictionary<string, double>>())
                 foreach (var (pauli, h) in paulis)

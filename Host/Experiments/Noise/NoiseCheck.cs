@@ -72,6 +72,11 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
         _ => Exposure is { } g ? g.RunFidelity(Noise, Count, Marked, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
     });
 
+    /// <summary>P(marked) of the gate-level model with <paramref name="wholeHarm"/> for an error the grading cannot follow; the engines' model on a lookup row.</summary>
+    public double PredictedWithWholeHarm(double wholeHarm) => Exposure is { } g
+        ? DepolarizingApproximation.MarkedProbability(Count, Marked, Iterations, g.RunFidelity(Noise, Count, Marked, Iterations, wholeHarm))
+        : Predicted(SearchModel.Counted);
+
     /// <summary>Binomial standard error of <see cref="Observed"/> at <paramref name="model"/>'s probability.</summary>
     public double StandardError(SearchModel model)
     {
@@ -150,6 +155,27 @@ public static class NoiseCheck
                 ExposureCache[key] = exposure = GateLevelExposure.Trace(pool, oracle, $"N = {oracle.Table.Count}, {oracle.Table.CoordinateBits} coordinate bits");
             return exposure;
         }
+    }
+
+    /// <summary>
+    /// The harm of an error the grading cannot follow, as a share of a whole harm, that best fits the gate-level
+    /// <paramref name="rows"/> (least squares in units of each row's standard error, on a grid of step 0.01 over 0.2 … 1.5):
+    /// the fit behind <see cref="SearchChannels.FittedWholeHarm"/>.
+    /// </summary>
+    public static double FitWholeHarm(IReadOnlyList<NoiseCheckRow> rows)
+    {
+        var (best, bestCost) = (1.0, double.PositiveInfinity);
+        for (var k = 20; k <= 150; k++)
+        {
+            var cost = rows.Sum(r =>
+            {
+                var p = Math.Clamp(r.PredictedWithWholeHarm(k / 100.0), 1e-3, 1 - 1e-3);
+                var d = r.Observed - p;
+                return d * d * r.Shots / (p * (1 - p));
+            });
+            if (cost < bestCost) (best, bestCost) = (k / 100.0, cost);
+        }
+        return best;
     }
 
     /// <summary>
