@@ -167,12 +167,7 @@ public static class NoiseCheck
         var (best, bestCost) = (1.0, double.PositiveInfinity);
         for (var k = 20; k <= 150; k++)
         {
-            var cost = rows.Sum(r =>
-            {
-                var p = Math.Clamp(r.PredictedWithWholeHarm(k / 100.0), 1e-3, 1 - 1e-3);
-                var d = r.Observed - p;
-                return d * d * r.Shots / (p * (1 - p));
-            });
+            var cost = rows.Sum(r => SquaredError(r.Observed, r.PredictedWithWholeHarm(k / 100.0), r.Shots));
             if (cost < bestCost) (best, bestCost) = (k / 100.0, cost);
         }
         return best;
@@ -188,14 +183,17 @@ public static class NoiseCheck
         for (var s = 0.05; s <= 1.5 + 1e-9; s += 0.005)
         {
             var approximation = new DepolarizingApproximation(s);
-            var cost = rows.Sum(r =>
-            {
-                var p = Math.Clamp(r.Predicted(approximation), 1e-3, 1 - 1e-3);
-                var d = r.Observed - p;
-                return d * d * r.Shots / (p * (1 - p));
-            });
+            var cost = rows.Sum(r => SquaredError(r.Observed, r.Predicted(approximation), r.Shots));
             if (cost < bestCost) (best, bestCost) = (s, cost);
         }
         return best;
+    }
+
+    /// <summary>A row's squared gap in units of its binomial variance at the prediction (kept off 0 and 1).</summary>
+    private static double SquaredError(double observed, double predicted, int shots)
+    {
+        var p = Math.Clamp(predicted, 1e-3, 1 - 1e-3);
+        var d = observed - p;
+        return d * d * shots / (p * (1 - p));
     }
 }
