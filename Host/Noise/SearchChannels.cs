@@ -17,7 +17,8 @@ public sealed record SearchChannels(IterationChannels? Inner, IterationChannels 
     /// The harm of an error whose effect the grading cannot follow (inside a diffusion, on a superposed qubit, garbage an
     /// oracle computes on), as a share of a whole harm: a fit, not a count. Least squares in units of the binomial standard
     /// error over the gate-level oracle's N = 8 runs (r = 1 and 2) at p = 6e-4 and 2e-3, 3200 shots each, rates the model
-    /// check does not use (docs/noise.md, "The fitted share of a whole harm").
+    /// check does not use (docs/noise.md, "The fitted share of a whole harm"; <c>qrt bench noise --shots 3200 --parts model</c>
+    /// measures those runs again and refits on them).
     /// </summary>
     public const double FittedWholeHarm = 0.68;
 
