@@ -95,7 +95,7 @@ export function summariseCircuit(group, withExposure = false, marked = null, sam
 
 /**
  * The exposure, and the graded harm when `marked` (the search's marked indices) is given: "harm" over every location,
- * "outsideHarm" at the preparation and the final measurement, "harmSampling" (noise-harm.mjs), each location's pattern found once.
+ * "outsideHarm" at the preparation and the final measurement, "harmSampling" and "harmChannels" (noise-harm.mjs), each location's pattern found once.
  */
 function exposureOf(traced, marked, sampling) {
   const ops = trackableOrder(traced);
@@ -104,6 +104,6 @@ function exposureOf(traced, marked, sampling) {
   const graded = marked ? gradedHarm(ops, marked, circuit, { ...sampling, patterns }) : null;
   return {
     exposure: noiseExposure(ops, circuit, patterns),
-    ...(graded ? { harm: graded.harm, outsideHarm: graded.outsideHarm, harmSections: graded.sections, harmSampling: graded.sampling } : {}),
+    ...(graded ? { harm: graded.harm, outsideHarm: graded.outsideHarm, harmSections: graded.sections, harmSampling: graded.sampling, harmChannels: graded.channels } : {}),
   };
 }

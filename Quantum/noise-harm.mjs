@@ -13,6 +13,10 @@
 // can unmark the marked index or mark others, which costs a run more or less than the uniform readout, by how many.
 // The tables track the support of the state, not its amplitudes; the index register's amplitudes are simulated exactly
 // (2^n values, the oracle's marking read from its diagonal gates). Negative harm (an error that helps) is counted as none.
+//
+// Beside the harm, `channels` gives the same errors per iteration as channels on the index register, for a model in which
+// several errors need not harm independently (Host/Noise/SearchChannels.cs): the whole harm of the effects graded FULL, and
+// the dephasing of the others, averaged over each class of index pairs (pairClasses).
 
 import { applyBoth, Circuit, diagonal, locationPatterns, product, superposeBoth, uniformDifference } from "./noise-exposure.mjs";
 
@@ -33,6 +37,11 @@ export function gradedHarm(ops, marked = null, circuit = new Circuit(ops), { fra
   if (!search.graded) return null;
   const harm = {};
   const outsideHarm = {};
+  // The iterations' errors as channels on the index register (pairClasses below), per iteration: the whole harm of the effects
+  // graded FULL at its locations (a diffusion's with its oracle section, those after the last diffusion with the last), and the
+  // class-averaged dephasing of the errors whose effect is a known phase or garbage in its oracle section.
+  const fullHarm = Array.from({ length: search.iterations }, () => ({ X: 0, Y: 0, Z: 0 }));
+  const dephasing = Array.from({ length: search.iterations }, () => ({ X: pairClasses(), Y: pairClasses(), Z: pairClasses() }));
   const random = seededUniform(seed);
   let graded = 0;
   let variance = 0;
@@ -43,7 +52,18 @@ export function gradedHarm(ops, marked = null, circuit = new Circuit(ops), { fra
     const weight = outside || fraction === 1 ? 1 : random() < fraction ? 1 / fraction : 0;
     if (weight === 0) continue;
     graded++;
-    const h = locationHarm(search, conjugated, k, q, pattern);
+    const effects = locationEffects(search, conjugated, k, q, pattern);
+    const h = { X: search.harmOf(effects.X), Y: search.harmOf(effects.Y), Z: search.harmOf(effects.Z) };
+    if (!outside) {
+      for (const pauli of ["X", "Y", "Z"]) {
+        const effect = effects[pauli];
+        if (effect.full) fullHarm[search.iterationOf[k] - 1][pauli] += weight;
+        else if (effect.branches.some((b) => b.phase || b.garbage)) {
+          const section = effect.branches.find((b) => b.phase || b.garbage).section;
+          if (section >= 1 && section <= search.iterations) addPairClasses(dephasing[section - 1][pauli], search.pairDephasing(effect), weight);
+        }
+      }
+    }
     tally.X += weight * h.X;
     tally.Y += weight * h.Y;
     tally.Z += weight * h.Z;
@@ -56,18 +76,33 @@ export function gradedHarm(ops, marked = null, circuit = new Circuit(ops), { fra
       part.Z += h.Z;
     }
   }
-  return { harm, outsideHarm, sections: search.iterations, sampling: { fraction, graded, variance } };
+  const channels = { fullHarm, dephasing, marked: search.markedCount, register: search.marked.length };
+  return { harm, outsideHarm, sections: search.iterations, sampling: { fraction, graded, variance }, channels };
 }
 
-/** The graded harm of X, Y and Z at op k's location on qubit q, whose harmful Paulis the counting rule gives as `pattern`. */
-function locationHarm(search, conjugated, k, q, pattern) {
+/** The effects of X, Y and Z at op k's location on qubit q, whose harmful Paulis the counting rule gives as `pattern`. */
+function locationEffects(search, conjugated, k, q, pattern) {
   if (conjugated.has(`${k}:${q}`)) {
     // Between the H gates of a controlled phase the target is in the Hadamard basis: counted by the rule alone.
-    return { X: pattern.includes("X") ? 1 : 0, Y: 1, Z: pattern.includes("Z") ? 1 : 0 };
+    return { X: pattern.includes("X") ? FULL : NONE, Y: FULL, Z: pattern.includes("Z") ? FULL : NONE };
   }
   const x = pattern.includes("X") ? search.xEffect(k, q) : NONE;
   const z = pattern.includes("Z") ? search.zEffect(k, q) : NONE;
-  return { X: search.harmOf(x), Y: search.harmOf(combine(x, z)), Z: search.harmOf(z) };
+  return { X: x, Y: combine(x, z), Z: z };
+}
+
+// The dephasing an error leaves between two index branches b and b': with the error, their coherence is multiplied by
+// E = Σ over the effect's branches of weight · σ(b) σ(b') · [same garbage], so at rate q it is multiplied by 1 − q · (1 − E).
+// Summed over locations per pair class (marked with unmarked, two unmarked, two marked) and averaged within the class: the
+// rate of that class's coherence decay per unit of the Pauli's probability.
+function pairClasses() {
+  return { cross: 0, unmarked: 0, marked: 0 };
+}
+
+function addPairClasses(into, rates, weight) {
+  into.cross += weight * rates.cross;
+  into.unmarked += weight * rates.unmarked;
+  into.marked += weight * rates.marked;
 }
 
 /** Uniform numbers in [0, 1) from a 32-bit seed (mulberry32): the sampled locations are the same for the same seed and circuit. */
@@ -246,6 +281,13 @@ class SearchStructure {
       this.section[k] = inside ? -1 : section;
     });
     this.iterations = section - 1;
+    // The iteration each op belongs to: the last oracle section begun at or before it, at most the last iteration.
+    this.iterationOf = new Int32Array(ops.length);
+    let owner = 1;
+    for (let k = 0; k < ops.length; k++) {
+      if (this.sectionBefore[k] > 0) owner = this.sectionBefore[k];
+      this.iterationOf[k] = Math.max(1, Math.min(owner, this.iterations));
+    }
     this.n = this.indexSources.length;
     this.graded &&= this.n === index.size && this.n > 0 && this.iterations > 0;
     if (!this.graded) return;
@@ -267,6 +309,7 @@ class SearchStructure {
     }
     this.markedCount = this.marked.reduce((s, v) => s + v, 0);
     this.cache = new Map();
+    this.pairCache = new Map();
     this.clean = this.success(0, null);
     this.uniform = this.markedCount / this.marked.length;
   }
@@ -318,9 +361,35 @@ class SearchStructure {
     return p;
   }
 
+  /** The class-averaged 1 − E of an effect's branches over the index register's pairs (see pairClasses). */
+  pairDephasing(effect) {
+    const key = effect.branches.map((b) => `${b.weight}:${b.phase?.join("")}:${b.garbage?.join(",")}`).join("|");
+    let rates = this.pairCache.get(key);
+    if (rates) return rates;
+    const size = this.marked.length;
+    const sums = pairClasses();
+    const counts = pairClasses();
+    for (let a = 0; a < size; a++) {
+      for (let b = a + 1; b < size; b++) {
+        let kept = 0;
+        for (const branch of effect.branches) {
+          if (branch.garbage && branch.garbage[a] !== branch.garbage[b]) continue;
+          const flipped = branch.phase ? branch.phase[a] ^ branch.phase[b] : 0;
+          kept += branch.weight * (flipped ? -1 : 1);
+        }
+        const cls = this.marked[a] && this.marked[b] ? "marked" : this.marked[a] || this.marked[b] ? "cross" : "unmarked";
+        sums[cls] += 1 - kept;
+        counts[cls]++;
+      }
+    }
+    rates = { cross: counts.cross ? sums.cross / counts.cross : 0, unmarked: counts.unmarked ? sums.unmarked / counts.unmarked : 0, marked: counts.marked ? sums.marked / counts.marked : 0 };
+    this.pairCache.set(key, rates);
+    return rates;
+  }
+
   harmOf(effect) {
     if (effect.full) return 1;
-    if (effect.branches.every((b) => !b.phase)) return 0;
+    if (effect.branches.every((b) => !b.phase && !b.garbage)) return 0;
     if (!this.graded) return 1;
     return Math.max(0, effect.branches.reduce((sum, b) => sum + b.weight * this.phaseHarm(b.section, b.phase, b.garbage), 0));
   }

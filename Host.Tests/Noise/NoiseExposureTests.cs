@@ -27,8 +27,8 @@ public class NoiseExposureTests
         var run = new GateLevelExposure("test", Of(("H", "XYZ", 3)), Of(("CX", "XYZ", 100), ("M", "XY", 6)));
         var noise = NoiseModel.Depolarizing(3e-3);
         Assert.Equal(3 + 3 * 106, run.Run(3).Locations, 12);
-        Assert.Equal(run.Run(3).Fidelity(noise), run.RunFidelity(noise, 3), 12);
-        Assert.Equal(run.Outside.Fidelity(noise), run.RunFidelity(noise, 0), 12);
+        Assert.Equal(run.Run(3).Fidelity(noise), run.IndependentHarmsFidelity(noise, 3), 12);
+        Assert.Equal(run.Outside.Fidelity(noise), run.IndependentHarmsFidelity(noise, 0), 12);
     }
 
     [Fact]

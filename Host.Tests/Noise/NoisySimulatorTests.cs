@@ -70,28 +70,45 @@ public class NoisySimulatorTests(FullStateFixture fixture)
     }
 
     [Fact]
-    public void GateLevelModelNeverOverstatesSuccessAndRejectsTheIdealAndAThirdShare()
+    public void GateLevelModelAgreesOnTheDeviceRayAndRejectsTheIdealAndAThirdShare()
     {
-        // The device experiment's ray (N = 4, t = 1, r = 1, ideal P(marked) = 1) at p = 1e-3 and 3e-3, 600 shots each. The
-        // counted model errs towards harm (docs/noise.md: it understates P(marked) on the gate-level oracle), so the check is
-        // one-sided: the observed share may not fall below the model by more than δ + zσ. The ideal formula and s = 1/3 overstate
-        // success by 0.23 to 0.71 here and must be rejected: observed below them by more than δ + zσ.
+        // The device experiment's ray (N = 4, t = 1, r = 1, ideal P(marked) = 1) at p = 1e-3 and 3e-3, 600 shots each, a shape the
+        // whole-harm share was not fitted on. The model must lie within δ + zσ (3200-shot runs observed 0.614 and 0.337 against its
+        // 0.621 and 0.341). The ideal formula and s = 1/3 overstate success by 0.2 to 0.7 here and must be rejected: observed below
+        // them by more than δ + zσ.
         var device = DeviceExperimentScene.Ray();
         var rows = NoiseCheck.Measure(Pool, [new(device.Table.Marked(device.Window), 1, device)], [NoiseModel.Depolarizing(1e-3), NoiseModel.Depolarizing(3e-3)], shots: 600);
         foreach (var row in rows)
         {
-            Assert.True(row.Observed >= row.Predicted(SearchModel.Counted) - NoiseCheck.SearchTolerance - Z * row.StandardError(SearchModel.Counted), Describe(row, SearchModel.Counted));
+            Assert.True(row.Accepts(SearchModel.Counted, NoiseCheck.SearchTolerance, Z), Describe(row, SearchModel.Counted));
             foreach (var control in new[] { SearchModel.Ideal, SearchModel.ShareThird })
                 Assert.True(row.Observed < row.Predicted(control) - NoiseCheck.SearchTolerance - Z * row.StandardError(control), $"{control} was not rejected: " + Describe(row, control));
         }
     }
 
     [Fact]
+    public void TheChannelsFollowTheTwoIterationRunWhereIndependentHarmsUnderstateIt()
+    {
+        // The 8-primitive ray at its optimum (N = 8, t = 1, r = 2, ideal 0.945) at p = 1e-3, a rate the whole-harm share was not
+        // fitted on, 10000 shots (σ ≈ 0.0047). 3200-shot runs observed 0.335 against the channels' 0.336; the graded harms taken as
+        // independent give 0.282 (their gap was +0.054, +0.073, +0.022 and +0.050 over four runs). Acceptance here is
+        // |gap| ≤ δ + 3σ = 0.034: a false failure of the channels has probability below 1e-12 if their bias is 0, 3e-5 if it is
+        // 0.015. The independent harms must be rejected, observed above them by more than their bound (0.316): at the measured
+        // share that fails by chance with probability 6e-6 (4.4σ), at a true share 0.005 lower 5e-4.
+        const double z = 3;
+        var eight = NoiseBenchmark.EightPrimitiveRay();
+        var row = Assert.Single(NoiseCheck.Measure(Pool, [new(eight.Table.Marked(eight.Window), 2, eight)], [NoiseModel.Depolarizing(1e-3)], shots: 10000));
+        Assert.True(row.Accepts(SearchModel.Counted, NoiseCheck.SearchTolerance, z), Describe(row, SearchModel.Counted));
+        Assert.True(row.Observed > row.Predicted(SearchModel.IndependentHarms) + NoiseCheck.SearchTolerance + z * row.StandardError(SearchModel.IndependentHarms),
+            "the independent harms were not rejected: " + Describe(row, SearchModel.IndependentHarms));
+    }
+
+    [Fact]
     public void GradedGateLevelModelAgreesWithTheNoisySimulatorWhereTheUngradedCountIsRejected()
     {
         // The 8-primitive ray of the model check (N = 8, t = 1, r = 1, ideal P(marked) = 0.781) at p = 1e-3, 4000 shots
-        // (σ ≈ 0.008). The graded model must lie within δ + zσ (z = 4.89: false failure 1e-6 if its bias is at most δ; it
-        // predicts 0.414; docs/noise.md's runs of 800 shots observed 0.389 to 0.418). The ungraded count (every Pauli the rule
+        // (σ ≈ 0.008). The model must lie within δ + zσ (z = 4.89: false failure 1e-6 if its bias is at most δ; it predicts
+        // 0.393; a 3200-shot run observed 0.408, docs/noise.md's runs of 800 shots 0.389 to 0.418). The ungraded count (every Pauli the rule
         // calls harmful a whole harm, 0.310) must be rejected: observed above it by more than δ + zσ; at the graded model's share
         // it sits about 7σ beyond that bound, so this fails by chance with probability below 1e-7.
         var eight = NoiseBenchmark.EightPrimitiveRay();

@@ -6,9 +6,10 @@ namespace QuantumRayTracing.Noise;
 /// <summary>
 /// The global depolarizing approximation of a noisy Grover run: with probability Φ the run is the ideal
 /// one, otherwise the index register is left maximally mixed and reads uniformly over its 2^n values.
-/// So P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n (t / N when N is a power of two), with
+/// So P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n (t / N when N is a power of two). On the lookup oracle
 /// Φ = F₀ · F^r, F = (1 − p)^(s · L) per iteration of L noise locations, F₀ the same for the preparation
-/// and measurement, and s the share of Pauli errors that harm the run.
+/// and measurement, and s the share of Pauli errors that harm the run; on the gate-level oracle Φ is what its
+/// iterations' channels on the index register keep (<see cref="GateLevelExposure.RunFidelity(NoiseModel, int, int, int)"/>).
 /// </summary>
 /// <param name="HarmfulShare">
 /// s of the lookup oracle's closed-form locations: by default 2/3, as a Z error on a qubit in a basis state does nothing.
@@ -32,7 +33,7 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
 
     /// <summary>Φ of a Grover run: the gate-level circuit's counted exposure, or the lookup oracle's locations (<see cref="NoiseLocations"/>) at share s.</summary>
     public double RunFidelity(NoiseModel noise, GroverRequest request) =>
-        GateLevel is { } gate ? gate.RunFidelity(noise, request.Iterations)
+        GateLevel is { } gate ? gate.RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations)
         : Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
 
     /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
@@ -54,7 +55,7 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     /// </summary>
     public FalseNegativeRate.RunSuccess NoisySuccess(NoiseModel noise) => (count, marked, iterations) =>
     {
-        var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, iterations)
+        var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, count, marked, iterations)
             : Fidelity(noise, NoiseLocations.PrepareAndMeasure(count) + (double)iterations *
                 _lookupIterations.GetOrAdd((count, marked), k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray()))));
         return MarkedProbability(count, marked, iterations, fidelity);
@@ -65,5 +66,6 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
         noise.IsNoiseless ? noise.Description()
         : GateLevel is { } gate
             ? $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.GateLevel.Description()}, {gate.Shape}: harm counted per noise location"
+                + (gate.Channels is null ? "" : $", the iterations simulated as channels on the index register (whole-harm share {SearchChannels.FittedWholeHarm:0.00}, fitted)")
             : $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.Lookup.Description()}, harmful share {HarmfulShare:0.###} of errors";
 }

@@ -20,7 +20,11 @@ namespace QuantumRayTracing.Noise;
 /// <param name="Outside">The preparation and the index measurement.</param>
 /// <param name="Iteration">One Grover iteration: the phase oracle and the reflection.</param>
 /// <param name="Estimate">How the graded harm was estimated and its spread; null when it is not graded.</param>
-public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration, HarmEstimate? Estimate = null)
+/// <param name="Channels">
+/// The iterations' errors as channels on the index register (<see cref="SearchChannels"/>), the run's Φ simulated with them;
+/// null: Φ = F₀ · F^r, the graded harms taken as independent.
+/// </param>
+public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, NoiseExposure Iteration, HarmEstimate? Estimate = null, SearchChannels? Channels = null)
 {
     /// <summary>The most iterations of a traced run whose graded harm the table holds.</summary>
     public const int MaxTracedIterations = 2;
@@ -41,11 +45,35 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
 
     private readonly System.Collections.Concurrent.ConcurrentDictionary<NoiseModel, (double Outside, double Iteration)> _logFidelities = new();
 
-    /// <summary>Φ = F₀ · F^r of a run with <paramref name="iterations"/> iterations, F₀ and F computed once per noise model.</summary>
-    public double RunFidelity(NoiseModel noise, int iterations)
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, int Iterations), double> _channelFidelities = new();
+
+    /// <summary>Φ = F₀ · F^r of a run with <paramref name="iterations"/> iterations, the graded harms taken as independent.</summary>
+    public double IndependentHarmsFidelity(NoiseModel noise, int iterations)
     {
         var (outside, iteration) = _logFidelities.GetOrAdd(noise, n => (Math.Log(Outside.Fidelity(n)), Math.Log(Iteration.Fidelity(n))));
         return Math.Exp(outside + iterations * iteration);
+    }
+
+    /// <summary>
+    /// Φ of a run with <paramref name="iterations"/> iterations over <paramref name="count"/> values, <paramref name="marked"/>
+    /// of them marked: with <see cref="Channels"/>, the share of the ideal run's excess over the uniform readout that the
+    /// simulated channels keep, (P − u) / (P₀ − u), clamped to [0, 1] (a run past its optimum, P₀ below u, can be dephased
+    /// beyond u); otherwise <see cref="IndependentHarmsFidelity"/>. F₀ (<see cref="Outside"/>) stays a whole-harm factor.
+    /// </summary>
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations) =>
+        Channels is null || noise.PerGate <= 0 ? IndependentHarmsFidelity(noise, iterations)
+        : _channelFidelities.GetOrAdd((noise, count, marked, iterations), key => RunFidelity(key.Noise, key.Count, key.Marked, key.Iterations, SearchChannels.FittedWholeHarm));
+
+    /// <summary>The same with <paramref name="wholeHarm"/> for the harm of an error the grading cannot follow (the fit tries several), not kept.</summary>
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, double wholeHarm)
+    {
+        if (Channels is not { } channels || noise.PerGate <= 0) return IndependentHarmsFidelity(noise, iterations);
+        var register = 1 << Search.SearchRegisters.For(count).IndexQubits;
+        var uniform = (double)marked / register;
+        var ideal = DephasedSearch.MarkedProbability(register, marked, iterations, 1, DephasedSearch.Iteration.Ideal);
+        if (Math.Abs(ideal - uniform) < 1e-9) return IndependentHarmsFidelity(noise, iterations);
+        var noisy = channels.MarkedProbability(noise, register, marked, iterations, Outside.Fidelity(noise), wholeHarm);
+        return Math.Clamp((noisy - uniform) / (ideal - uniform), 0, 1);
     }
 
     /// <summary>
@@ -74,7 +102,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         var marked = input.Table.Marked(input.Window).Indices.ToArray();
         string Expression(int r) => $"{QSharpOperations.MeasureGateGroverSearch}({argument}, {r.ToString(CultureInfo.InvariantCulture)})";
         NoiseExposure outsideCounts = null!;
-        var graded = new (NoiseExposure Run, NoiseExposure Outside)[traces];
+        var graded = new (NoiseExposure Run, NoiseExposure Outside, SearchChannels Channels)[traces];
         pool.ForEach(Enumerable.Range(-1, traces + 1).ToArray(), (copy, bridge) =>
         {
             if (copy < 0)
@@ -84,15 +112,16 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
             }
             var summary = bridge.Circuit(Expression(traced), timeout: TimeSpan.FromMinutes(60), exposure: true, marked: marked,
                 sampling: fraction < 1 ? (fraction, (uint)copy + 1) : null);
-            if (summary["harm"] is not { } harm || summary["outsideHarm"] is not { } outside)
+            if (summary["harm"] is not { } harm || summary["outsideHarm"] is not { } outside || summary["harmChannels"] is not { } channels)
                 throw new InvalidOperationException($"the grading did not read {shape}'s traced circuit as a Grover search over its index register");
-            graded[copy] = (NoiseExposure.Parse(summary["exposure"]!, harm), NoiseExposure.Parse(summary["exposure"]!, outside));
+            graded[copy] = (NoiseExposure.Parse(summary["exposure"]!, harm), NoiseExposure.Parse(summary["exposure"]!, outside), SearchChannels.FromTrace(channels));
         });
         // Per trace: the outside locations' harm, and the rest shared by the iterations (counts: the run's less the r = 0 circuit's).
         var iterations = graded.Select(g => (1.0 / traced) * (g.Run - (outsideCounts with { Harm = g.Outside.Harm }))).ToArray();
         var mean = (1.0 / traces) * iterations.Aggregate((a, b) => a + b);
         var outsideHarm = (1.0 / traces) * graded.Select(g => outsideCounts with { Harm = g.Outside.Harm }).Aggregate((a, b) => a + b);
-        return new GateLevelExposure(shape, outsideHarm, mean, new HarmEstimate(traced, iterations.Select(i => i.HarmWeight).ToArray(), fraction));
+        var channelMean = (1.0 / traces) * graded.Select(g => g.Channels).Aggregate((a, b) => a + b);
+        return new GateLevelExposure(shape, outsideHarm, mean, new HarmEstimate(traced, iterations.Select(i => i.HarmWeight).ToArray(), fraction), channelMean);
     }
 
     /// <summary>Graded traces averaged per shape by default.</summary>
@@ -132,6 +161,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
             json["outsideHarm"] = outside;
             json["iterationHarm"] = iteration;
             if (Estimate is { } estimate) json["harmEstimate"] = estimate.ToJson();
+            if (Channels is { } channels) json["channels"] = channels.ToJson();
         }
         return json;
     }
@@ -141,7 +171,8 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     {
         var shape = node["shape"]!.GetValue<string>();
         var exposure = new GateLevelExposure(shape, NoiseExposure.Parse(node["outside"]!, node["outsideHarm"]), NoiseExposure.Parse(node["iteration"]!, node["iterationHarm"]),
-            node["harmEstimate"] is { } estimate ? HarmEstimate.Parse(estimate) : null);
+            node["harmEstimate"] is { } estimate ? HarmEstimate.Parse(estimate) : null,
+            node["channels"] is { } channels ? SearchChannels.Parse(channels, shape) : null);
         foreach (var (part, harm) in new[] { ("outsideHarm", exposure.Outside.Harm), ("iterationHarm", exposure.Iteration.Harm) })
             foreach (var (kind, paulis) in harm ?? new Dictionary<string, IReadOnlyDictionary<string, double>>())
                 foreach (var (pauli, h) in paulis)

@@ -14,7 +14,7 @@ public sealed class NoiseReportTests
     private static readonly NoiseBenchSettings ModelOnly = new(new HashSet<string> { "model" }, 1000, 16, [], 8, 0, [], 1);
 
     private static NoiseBenchResult Measured(params NoiseCheckRow[] rows) =>
-        new("a test machine", TimeSpan.FromMinutes(1.5), rows, [], [], null, null, [], [], []);
+        new("a test machine", TimeSpan.FromMinutes(1.5), rows, [], [], null, null, [], [], [], []);
 
     // N = 16, t = 1, r = 3 at p = 1e-3 over 152 noise locations: Φ = (1 − 1e-3)^(152 · 2/3) = 0.9037 and
     // sin²(7θ) = 0.9613 with sin²θ = 1/16, so the model's P(marked) = 0.9037 · 0.9613 + 0.0963 / 16 = 0.875.

@@ -14,4 +14,5 @@ public sealed record NoiseBenchResult(
     CircuitCounts? DeviceOracle,
     IReadOnlyList<NoisyRenderBenchmark.Sweep> Sweeps,
     IReadOnlyList<(string Scene, double PerGate, RenderMeasurement Analytic, RenderMeasurement FullState)> Confirmations,
-    IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> Exposures);
+    IReadOnlyList<(string Key, string Scenes, GateLevelExposure Exposure)> Exposures,
+    IReadOnlyList<NoiseCheckRow> Fit);

@@ -5,7 +5,7 @@ using QuantumRayTracing.Scenes;
 namespace QuantumRayTracing.Experiments;
 
 /// <summary>What `bench noise` measures.</summary>
-/// <param name="Parts">Any of "exposure" (the gate-level oracle's noise exposure traced per scene shape), "model" (the approximation against the simulator), "supersampling" (the same for the coins and QSS), "device" (fig. 15), "render" (rendering under noise).</param>
+/// <param name="Parts">Any of "exposure" (the gate-level oracle's noise exposure traced per scene shape), "model" (the approximation against the simulator, and the gate-level runs its whole-harm share is fitted on), "supersampling" (the same for the coins and QSS), "device" (fig. 15), "render" (rendering under noise).</param>
 /// <param name="Shots">Runs per case of the model checks.</param>
 /// <param name="DeviceShots">Measurements per error rate of the device experiment.</param>
 /// <param name="Scenes">The scenes rendered under noise, by name.</param>

@@ -24,7 +24,7 @@ public static class NoiseBenchmark
         var clock = System.Diagnostics.Stopwatch.StartNew();
         void Say(string message) => progress($"{message} ({clock.Elapsed.TotalSeconds:0} s so far)");
         string machine;
-        IReadOnlyList<NoiseCheckRow> check = [];
+        IReadOnlyList<NoiseCheckRow> check = [], fit = [];
         IReadOnlyList<SupersamplingCheckRow> supersampling = [];
         IReadOnlyList<DeviceRun> device = [];
         CircuitCounts? deviceSearch = null, deviceOracle = null;
@@ -54,6 +54,8 @@ public static class NoiseBenchmark
                 Say($"model check: {requests.Count} runs x {CheckRates.Length} error rates x {settings.Shots} shots");
                 check = [.. NoiseCheck.Measure(pool, requests.Where(r => r.Oracle is null).ToArray(), CheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots),
                     .. NoiseCheck.Measure(pool, requests.Where(r => r.Oracle is not null).ToArray(), GateCheckRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots)];
+                Say($"whole-harm fit: {FitRequests().Count} runs x {GateFitRates.Length} error rates x {settings.Shots} shots");
+                fit = NoiseCheck.Measure(pool, FitRequests(), GateFitRates.Select(p => NoiseModel.Depolarizing(p)).ToArray(), settings.Shots);
             }
             if (settings.Parts.Contains("supersampling"))
             {
@@ -86,7 +88,7 @@ public static class NoiseBenchmark
                 }
             }
         }
-        return new NoiseBenchResult(machine, clock.Elapsed, check, supersampling, device, deviceSearch, deviceOracle, sweeps, confirmations, exposures);
+        return new NoiseBenchResult(machine, clock.Elapsed, check, supersampling, device, deviceSearch, deviceOracle, sweeps, confirmations, exposures, fit);
     }
 
     /// <summary>Gate counts and depth of a Q# call's circuit, as the bridge summarises it.</summary>
@@ -124,6 +126,19 @@ public static class NoiseBenchmark
             new(eight.Table.Marked(eight.Window), 1, eight),
             new(eight.Table.Marked(eight.Window), 2, eight),
         ];
+    }
+
+    /// <summary>
+    /// Per-gate error rates at which the gate-level runs the fit of <see cref="SearchChannels.FittedWholeHarm"/> reads are measured:
+    /// between the model check's, none of them, so the check's rows are not the fit's.
+    /// </summary>
+    public static readonly double[] GateFitRates = [6e-4, 2e-3];
+
+    /// <summary>The runs the whole-harm share is fitted on: the 8-primitive ray at r = 1 and 2 (the device ray's N = 4 is left to the check).</summary>
+    public static IReadOnlyList<GroverRequest> FitRequests()
+    {
+        var eight = EightPrimitiveRay();
+        return [new(eight.Table.Marked(eight.Window), 1, eight), new(eight.Table.Marked(eight.Window), 2, eight)];
     }
 
     /// <summary>Per-gate error rates of the supersampling model check: the coins' and QSS's fidelities span about 0.99 to 0 over them.</summary>

@@ -23,7 +23,8 @@ public interface IModelCheckRow
 /// The analytic model of a search and the wrong variants it is checked against (negative controls): the ideal formula
 /// (no noise), every location harmful (s = 1), a third of them (s = 1/3), the model without the factor of the
 /// preparation and measurement (Φ = F^r), and the gate-level count without its grading (every Pauli the counting rule
-/// calls harmful a whole harm, the model before the harm was graded).
+/// calls harmful a whole harm, the model before the harm was graded); and, beside them, the graded harms taken as independent
+/// (Φ = F₀ · F^r, the gate-level model before its iterations were simulated as channels on the index register).
 /// </summary>
 public enum SearchModel
 {
@@ -33,6 +34,7 @@ public enum SearchModel
     ShareThird,
     WithoutPreparation,
     Ungraded,
+    IndependentHarms,
 }
 
 /// <summary>One Grover run measured many times on the noisy simulator, beside what the depolarizing approximation predicts.</summary>
@@ -66,8 +68,14 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
         SearchModel.Ungraded => Exposure is { } u ? (u.Outside.Ungraded + (double)Iterations * u.Iteration.Ungraded).Fidelity(Noise) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
         SearchModel.WithoutPreparation => Exposure is { } e ? Math.Min(1.0, Math.Pow(e.Iteration.Fidelity(Noise), Iterations))
             : DepolarizingApproximation.Default.Fidelity(Noise, Locations - NoiseLocations.PrepareAndMeasure(Count)),
-        _ => Exposure is { } g ? g.RunFidelity(Noise, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        SearchModel.IndependentHarms => Exposure is { } h ? h.IndependentHarmsFidelity(Noise, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        _ => Exposure is { } g ? g.RunFidelity(Noise, Count, Marked, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
     });
+
+    /// <summary>P(marked) of the gate-level model with <paramref name="wholeHarm"/> for an error the grading cannot follow; the engines' model on a lookup row.</summary>
+    public double PredictedWithWholeHarm(double wholeHarm) => Exposure is { } g
+        ? DepolarizingApproximation.MarkedProbability(Count, Marked, Iterations, g.RunFidelity(Noise, Count, Marked, Iterations, wholeHarm))
+        : Predicted(SearchModel.Counted);
 
     /// <summary>Binomial standard error of <see cref="Observed"/> at <paramref name="model"/>'s probability.</summary>
     public double StandardError(SearchModel model)
@@ -150,6 +158,22 @@ public static class NoiseCheck
     }
 
     /// <summary>
+    /// The harm of an error the grading cannot follow, as a share of a whole harm, that best fits the gate-level
+    /// <paramref name="rows"/> (least squares in units of each row's standard error, on a grid of step 0.01 over 0.2 … 1.5):
+    /// the fit behind <see cref="SearchChannels.FittedWholeHarm"/>.
+    /// </summary>
+    public static double FitWholeHarm(IReadOnlyList<NoiseCheckRow> rows)
+    {
+        var (best, bestCost) = (1.0, double.PositiveInfinity);
+        for (var k = 20; k <= 150; k++)
+        {
+            var cost = rows.Sum(r => SquaredError(r.Observed, r.PredictedWithWholeHarm(k / 100.0), r.Shots));
+            if (cost < bestCost) (best, bestCost) = (k / 100.0, cost);
+        }
+        return best;
+    }
+
+    /// <summary>
     /// The harmful share that best fits the rows (least squares in units of each row's standard error, on a
     /// grid of step 0.005 over 0.05 … 1.5): the fitted effective F = (1 − p)^(s · L) of one circuit shape.
     /// </summary>
@@ -159,14 +183,17 @@ public static class NoiseCheck
         for (var s = 0.05; s <= 1.5 + 1e-9; s += 0.005)
         {
             var approximation = new DepolarizingApproximation(s);
-            var cost = rows.Sum(r =>
-            {
-                var p = Math.Clamp(r.Predicted(approximation), 1e-3, 1 - 1e-3);
-                var d = r.Observed - p;
-                return d * d * r.Shots / (p * (1 - p));
-            });
+            var cost = rows.Sum(r => SquaredError(r.Observed, r.Predicted(approximation), r.Shots));
             if (cost < bestCost) (best, bestCost) = (s, cost);
         }
         return best;
+    }
+
+    /// <summary>A row's squared gap in units of its binomial variance at the prediction (kept off 0 and 1).</summary>
+    private static double SquaredError(double observed, double predicted, int shots)
+    {
+        var p = Math.Clamp(predicted, 1e-3, 1 - 1e-3);
+        var d = observed - p;
+        return d * d * shots / (p * (1 - p));
     }
 }
