@@ -107,7 +107,10 @@ public static class IteratedSearch
     {
         if (settled is null) return [.. Enumerable.Range(0, rays)];
         var skip = new bool[rays];
-        Parallel.For(0, rays, i => skip[i] = settled(i));
+        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, rays, BlockSize * 16), range =>
+        {
+            for (var i = range.Item1; i < range.Item2; i++) skip[i] = settled(i);
+        });
         var unsettled = new int[skip.AsSpan().Count(false)];
         for (int i = 0, k = 0; k < unsettled.Length; i++)
             if (!skip[i]) unsettled[k++] = i;
