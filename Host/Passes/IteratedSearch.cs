@@ -106,6 +106,7 @@ public static class IteratedSearch
     private static int[] Unsettled(int rays, Func<int, bool>? settled)
     {
         if (settled is null) return [.. Enumerable.Range(0, rays)];
+        if (rays == 0) return [];
         var skip = new bool[rays];
         Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, rays, BlockSize * 16), range =>
         {
