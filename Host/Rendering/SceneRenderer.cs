@@ -137,15 +137,18 @@ public static class SceneRenderer
         Ray? RayAt(int k, int l) => l < pointLights
             ? SecondaryRays.Shadow(points[k], scene.Lights[l])
             : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-        // Which (point, light) slots have a ray, on all cores; then the slots with one, in order. Only the slot is kept per
+        // Which (point, light) slots have a ray, on all cores and without building it; then the slots with one, in order. Only the slot is kept per
         // shadow ray: the ray, its pixel and its layout channel (the light, and whether the point is primary or reflected,
         // so gathering compares rays towards the same light from the same kind of point) are computed when the pass reads them.
         var present = new bool[points.Count * lightCount];
         Parallel.For(0, points.Count, k =>
         {
-            for (var l = 0; l < lightCount; l++) present[k * lightCount + l] = RayAt(k, l) is not null;
+            for (var l = 0; l < lightCount; l++)
+                present[k * lightCount + l] = l < pointLights
+                    ? SecondaryRays.HasShadow(points[k], scene.Lights[l])
+                    : SecondaryRays.HasDirectional(points[k], scene.DirectionalLights[l - pointLights]);
         });
-        var slots = new int[present.Count(p => p)];
+        var slots = new int[present.AsSpan().Count(true)];
         for (int slot = 0, i = 0; slot < present.Length; slot++)
             if (present[slot]) slots[i++] = slot;
         var rays = new ComputedList<Ray>(slots.Length, i => RayAt(slots[i] / lightCount, slots[i] % lightCount)!);
