@@ -137,9 +137,10 @@ public static class SceneRenderer
         Ray? RayAt(int k, int l) => l < pointLights
             ? SecondaryRays.Shadow(points[k], scene.Lights[l])
             : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-        // Which (point, light) slots have a ray, on all cores and without building it; then the slots with one, in order. Only the slot is kept per
-        // shadow ray: the ray, its pixel and its layout channel (the light, and whether the point is primary or reflected,
-        // so gathering compares rays towards the same light from the same kind of point) are computed when the pass reads them.
+        // Which (point, light) slots have a ray, on all cores and without building it; then the slots with one, in order.
+        // Only the slot is kept per shadow ray: the ray, its pixel and its layout channel (the light, and whether the point
+        // is primary or reflected, so gathering compares rays towards the same light from the same kind of point) are
+        // computed when the pass reads them.
         var present = new bool[points.Count * lightCount];
         Parallel.For(0, points.Count, k =>
         {
