@@ -25,13 +25,16 @@ public sealed class RayTable
 {
     public const double SnapTolerance = 1e-9;
 
-    // Full form: one entry per primitive. Compact form: _valid and _points are null and the arrays hold
-    // only the rows listed, in ascending order, in _rows.
+    // Full form: one entry per primitive in each array, _kept null. Compact form: only _kept, the rows inside their
+    // rectangles in ascending order (one array: a compact table is built for every ray of every pass).
     private readonly bool[]? _valid;
     private readonly int[]? _points;
-    private readonly int[] _depths;
-    private readonly double[] _distances;
-    private readonly int[]? _rows;
+    private readonly int[]? _depths;
+    private readonly double[]? _distances;
+    private readonly KeptRow[]? _kept;
+
+    /// <summary>A compact table's row: the primitive, its quantised depth and its ray parameter t.</summary>
+    internal readonly record struct KeptRow(int Primitive, int Depth, double Distance);
 
     private RayTable(SceneGeometry geometry, Ray ray)
     {
@@ -58,19 +61,17 @@ public sealed class RayTable
     }
 
     private RayTable(RayTable full, int[] rows)
-        : this(full.Geometry, full.Ray, full.DepthBits, rows, [.. rows.Select(full.Depth)], [.. rows.Select(full.Distance)])
+        : this(full.Geometry, full.Ray, full.DepthBits, [.. rows.Select(p => new KeptRow(p, full.Depth(p), full.Distance(p)))])
     {
     }
 
-    private RayTable(SceneGeometry geometry, Ray ray, int depthBits, int[] rows, int[] depths, double[] distances)
+    private RayTable(SceneGeometry geometry, Ray ray, int depthBits, KeptRow[] kept)
     {
         Geometry = geometry;
         Ray = ray;
         Count = geometry.Count;
         DepthBits = depthBits;
-        _rows = rows;
-        _depths = depths;
-        _distances = distances;
+        _kept = kept;
     }
 
     /// <summary>One row of a ray's table: eval-rpc for primitive <paramref name="p"/> alone, O(1).</summary>
@@ -128,17 +129,14 @@ public sealed class RayTable
     {
         ArgumentNullException.ThrowIfNull(geometry);
         ArgumentNullException.ThrowIfNull(ray);
-        // It runs for every ray of every pass: the rows go into per-thread scratch, then into arrays of their exact size.
+        // It runs for every ray of every pass: the rows go into per-thread scratch, then into one array of their exact size.
         var n = geometry.Count;
-        if (_scratchRows is null || _scratchRows.Length < n) (_scratchRows, _scratchDepths, _scratchDistances) = (new int[n], new int[n], new double[n]);
-        var count = CompactRows.Evaluate(geometry, ray, _scratchRows, _scratchDepths!, _scratchDistances!, out var maxDepth);
-        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)),
-            _scratchRows.AsSpan(0, count).ToArray(), _scratchDepths.AsSpan(0, count).ToArray(), _scratchDistances.AsSpan(0, count).ToArray());
+        if (_scratch is null || _scratch.Length < n) _scratch = new KeptRow[n];
+        var count = CompactRows.Evaluate(geometry, ray, _scratch, out var maxDepth);
+        return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)), _scratch.AsSpan(0, count).ToArray());
     }
 
-    [ThreadStatic] private static int[]? _scratchRows;
-    [ThreadStatic] private static int[]? _scratchDepths;
-    [ThreadStatic] private static double[]? _scratchDistances;
+    [ThreadStatic] private static KeptRow[]? _scratch;
 
     public SceneGeometry Geometry { get; }
 
@@ -148,7 +146,7 @@ public sealed class RayTable
     public int Count { get; }
 
     /// <summary>Whether this table holds only the rows inside their rectangles (see <see cref="Compact"/>).</summary>
-    public bool IsCompact => _rows is not null;
+    public bool IsCompact => _kept is not null;
 
     /// <summary>
     /// The same table holding only the rows whose point lies inside their rectangle: what verify-rpc
@@ -174,17 +172,17 @@ public sealed class RayTable
     public int Point(int p, int axis) => Full.Valid[p] ? Full.Points[p * 3 + axis] : 0;
 
     /// <summary>Quantised depth along the ray's principal axis (0 for a row without a point or, compact, outside its rectangle).</summary>
-    public int Depth(int p) => Slot(p) is var k and >= 0 ? _depths[k] : 0;
+    public int Depth(int p) => _kept is not null ? Kept(p) is var k and >= 0 ? _kept[k].Depth : 0 : _depths![p];
 
     /// <summary>The ray parameter t of the unquantised ray/plane point, for shading (0 where <see cref="Depth"/> is).</summary>
-    public double Distance(int p) => Slot(p) is var k and >= 0 ? _distances[k] : 0;
+    public double Distance(int p) => _kept is not null ? Kept(p) is var k and >= 0 ? _kept[k].Distance : 0 : _distances![p];
 
     /// <summary>verify-rpc: the point lies in the rectangle on every axis and its (depth, id) in the window.</summary>
     public bool Verify(int p, HitWindow window)
     {
-        if (_rows is not null) return Array.BinarySearch(_rows, p) is var k and >= 0 && window.Accepts(_depths[k], p);
+        if (_kept is not null) return Kept(p) is var k and >= 0 && window.Accepts(_kept[k].Depth, p);
         var (valid, points) = Full;
-        return valid[p] && Inside(Geometry, p, points[p * 3], points[p * 3 + 1], points[p * 3 + 2]) && window.Accepts(_depths[p], p);
+        return valid[p] && Inside(Geometry, p, points[p * 3], points[p * 3 + 1], points[p * 3 + 2]) && window.Accepts(_depths![p], p);
     }
 
     /// <summary>
@@ -195,30 +193,31 @@ public sealed class RayTable
     {
         int? best = null;
         var bestDepth = 0;
-        if (_rows is not null)
+        if (_kept is not null)
         {
             // Rows ascend, so the first of equal depths has the smaller id.
-            for (var k = 0; k < _rows.Length; k++)
-                if (window.Accepts(_depths[k], _rows[k]) && (best is null || _depths[k] < bestDepth)) (best, bestDepth) = (_rows[k], _depths[k]);
+            foreach (var (p, depth, _) in _kept)
+                if (window.Accepts(depth, p) && (best is null || depth < bestDepth)) (best, bestDepth) = (p, depth);
             return best;
         }
+        var depths = _depths!;
         for (var p = 0; p < Count; p++)
-            if (Verify(p, window) && (best is null || _depths[p] < bestDepth)) (best, bestDepth) = (p, _depths[p]);
+            if (Verify(p, window) && (best is null || depths[p] < bestDepth)) (best, bestDepth) = (p, depths[p]);
         return best;
     }
 
     /// <summary>The oracle's marked set for <paramref name="window"/>: every row verify-rpc accepts.</summary>
     public MarkedSet Marked(HitWindow window)
     {
-        if (_rows is null) return new MarkedSet(Count, Enumerable.Range(0, Count).Where(p => Verify(p, window)));
+        if (_kept is null) return new MarkedSet(Count, Enumerable.Range(0, Count).Where(p => Verify(p, window)));
         // A compact table's rows ascend: the accepted ones are the set as it is, without a list or a sort.
         var accepted = 0;
-        for (var k = 0; k < _rows.Length; k++)
-            if (window.Accepts(_depths[k], _rows[k])) accepted++;
+        foreach (var (p, depth, _) in _kept)
+            if (window.Accepts(depth, p)) accepted++;
         var marked = new int[accepted];
         accepted = 0;
-        for (var k = 0; k < _rows.Length; k++)
-            if (window.Accepts(_depths[k], _rows[k])) marked[accepted++] = _rows[k];
+        foreach (var (p, depth, _) in _kept)
+            if (window.Accepts(depth, p)) marked[accepted++] = p;
         return MarkedSet.FromAscending(Count, marked);
     }
 
@@ -226,8 +225,18 @@ public sealed class RayTable
         ? (_valid, _points)
         : throw new InvalidOperationException("a compact table holds only the rows inside their rectangles; build the full table");
 
-    // Index of row p in the depth and distance arrays, −1 when a compact table does not hold it.
-    private int Slot(int p) => _rows is null ? p : Array.BinarySearch(_rows, p) is var k and >= 0 ? k : -1;
+    // Index of row p among a compact table's rows (ascending), −1 when it does not hold it.
+    private int Kept(int p)
+    {
+        var (low, high) = (0, _kept!.Length - 1);
+        while (low <= high)
+        {
+            var middle = (low + high) >>> 1;
+            if (_kept[middle].Primitive == p) return middle;
+            (low, high) = _kept[middle].Primitive < p ? (middle + 1, high) : (low, middle - 1);
+        }
+        return -1;
+    }
 
     /// <summary>The window of this ray's own depth range.</summary>
     public HitWindow FullRange => HitWindow.Range(Ray.Near, Ray.Far, Count);

@@ -48,18 +48,22 @@ public sealed class RgbImage
     /// <summary>
     /// An image from a colour function with channels nominally in [0, 1]. Each channel is clamped to [0, 1]
     /// (NaN becomes 0) and quantised as <c>Math.Round(v * 255, MidpointRounding.AwayFromZero)</c>.
-    /// No gamma or sRGB transfer is applied: the values are written as they are.
+    /// No gamma or sRGB transfer is applied: the values are written as they are. Rows are filled on all cores, so
+    /// <paramref name="colour"/> must only read shared state.
     /// </summary>
     public static RgbImage FromLinear(int width, int height, Func<int, int, (double R, double G, double B)> colour)
     {
         ArgumentNullException.ThrowIfNull(colour);
         var image = new RgbImage(width, height);
-        for (var y = 0; y < height; y++)
+        // Rows on all cores: each pixel is written once, from its own colour.
+        Parallel.For(0, height, y =>
+        {
             for (var x = 0; x < width; x++)
             {
                 var (r, g, b) = colour(x, y);
                 image.SetPixel(x, y, Quantise(r), Quantise(g), Quantise(b));
             }
+        });
         return image;
     }
 

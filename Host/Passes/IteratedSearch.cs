@@ -26,7 +26,7 @@ public static class IteratedSearch
     /// <param name="observe">Takes ray i's outcome; returns true when the ray needs no further round.</param>
     /// <param name="progress">Told after each block.</param>
     /// <param name="afterRound">Runs after each round (neighbour gathering); returns its classical tests and the rays it changed.</param>
-    /// <param name="settled">Rays the pass has finished by other means (a neighbour's occluder), skipped like finished ones.</param>
+    /// <param name="settled">Rays the pass has finished by other means (a neighbour's occluder), skipped like finished ones; asked on all cores, so it must only read.</param>
     /// <param name="schedule">QSearch's schedule for (round, ray), or null for the engine's own.</param>
     /// <param name="ledger">Records every search, for the pass's expected wrong rays.</param>
     /// <param name="settle">Whether ray (round, ray) is settled classically this round instead: N tests, a certain answer.</param>
@@ -55,11 +55,25 @@ public static class IteratedSearch
             finished = new bool[active.Length];
             RayTable?[]? keep = null;
             var settledThisRound = 0;
-            for (var start = 0; start < active.Length; start += BlockSize)
+            // A block's tables are built while the block before it is searched and observed: they read only the rays and
+            // the tables kept from the last round, and the searches and observations in between run mostly on one core.
+            Task<RayTable[]> Tables(int from, int[] block) => Task.Run(() =>
             {
-                var (from, block) = (start, active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray());
                 var tables = new RayTable[block.Length];
                 Parallel.For(0, block.Length, k => tables[k] = kept?[from + k] ?? RayTable.BuildCompact(geometry, rays[block[k]]));
+                return tables;
+            });
+            int[] Block(int start) => active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
+            var nextBlock = Block(0);
+            var nextTables = Tables(0, nextBlock);
+            for (var start = 0; start < active.Length; start += BlockSize)
+            {
+                var (from, block, tables) = (start, nextBlock, nextTables.GetAwaiter().GetResult());
+                if (start + BlockSize < active.Length)
+                {
+                    nextBlock = Block(start + BlockSize);
+                    nextTables = Tables(start + BlockSize, nextBlock);
+                }
                 tableRows += (long)(kept is null ? block.Length : kept.AsSpan(from, block.Length).Count((RayTable?)null)) * geometry.Count;
                 var queries = new HitQuery[block.Length];
                 for (var k = 0; k < block.Length; k++) queries[k] = new HitQuery(tables[k], window(block[k], tables[k]), schedule?.Invoke(round, block[k]));
@@ -86,17 +100,21 @@ public static class IteratedSearch
         return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated) { SettledRays = settledRays };
     }
 
-    // The first round's rays: every ray not settled by other means. Counted first, so a pass's level of a few rays among
-    // millions holds no list sized for all of them.
+    // The first round's rays: every ray not settled by other means. Each ray is asked once, on all cores (every lattice
+    // level asks about all the pass's rays), into a flag per ray; the rays are then counted, so a pass's level of a few
+    // rays among millions holds no list sized for all of them.
     private static int[] Unsettled(int rays, Func<int, bool>? settled)
     {
         if (settled is null) return [.. Enumerable.Range(0, rays)];
-        var count = 0;
-        for (var i = 0; i < rays; i++)
-            if (!settled(i)) count++;
-        var unsettled = new int[count];
-        for (int i = 0, k = 0; k < count; i++)
-            if (!settled(i)) unsettled[k++] = i;
+        if (rays == 0) return [];
+        var skip = new bool[rays];
+        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, rays, BlockSize * 16), range =>
+        {
+            for (var i = range.Item1; i < range.Item2; i++) skip[i] = settled(i);
+        });
+        var unsettled = new int[skip.AsSpan().Count(false)];
+        for (int i = 0, k = 0; k < unsettled.Length; i++)
+            if (!skip[i]) unsettled[k++] = i;
         return unsettled;
     }
 

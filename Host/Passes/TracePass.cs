@@ -26,8 +26,9 @@ public static class TracePass
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
         var levels = CheapConfirmation.Levels(options, rays.Count); // each ray's lattice level, with a lattice
         var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, levels);
+        // The table's own ray: a pass's rays may be computed on each read.
         HitWindow Window(int i, RayTable table) =>
-            Hit.Beyond(rays[i], hits[i], table.Count, options.TieBreak);
+            Hit.Beyond(table.Ray, hits[i], table.Count, options.TieBreak);
         void Apply(int i, RayTable table, HitOutcome outcome)
         {
             if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);

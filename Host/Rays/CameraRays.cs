@@ -41,13 +41,13 @@ public static class CameraRays
         var up = forward.Cross(right);
         var halfHeight = Math.Tan(camera.VerticalFov * Math.PI / 360);
         var halfWidth = halfHeight * width / height;
+        // A ray is read many times in a render: each column's step along right and each row's along up are computed once.
+        var across = Enumerable.Range(window.X, window.Width).Select(x => ((x + 0.5) / width * 2 - 1) * halfWidth * right).ToArray();
+        var down = Enumerable.Range(window.Y, window.Height).Select(y => (1 - (y + 0.5) / height * 2) * halfHeight * up).ToArray();
         return pixel =>
         {
             var (y, x) = Math.DivRem(pixel, window.Width);
-            (y, x) = (y + window.Y, x + window.X);
-            var u = ((x + 0.5) / width * 2 - 1) * halfWidth;
-            var v = (1 - (y + 0.5) / height * 2) * halfHeight;
-            return new Ray(camera.Position, forward + u * right + v * up);
+            return new Ray(camera.Position, forward + across[x] + down[y]);
         };
     }
 }

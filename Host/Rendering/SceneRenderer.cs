@@ -79,22 +79,25 @@ public static class SceneRenderer
         passes.Add(metrics);
         var points = new List<SurfacePoint>(cameraRays.Count);
         var specular = new List<SpecularRayWorkItem>();
-        for (var pixel = 0; pixel < cameraRays.Count; pixel++)
+        InOrder.Run(cameraRays.Count, pixel =>
         {
             var ray = cameraRays[pixel];
-            if (SeenLight(plan.Scene, ray, hits[pixel]) is { } light)
-            {
-                radiance[pixel] = light;
-                continue;
-            }
-            if (hits[pixel] is not { } hit) continue;
+            if (SeenLight(plan.Scene, ray, hits[pixel]) is { } light) return new HitResult(light, null, null);
+            if (hits[pixel] is not { } hit) return default;
             var material = plan.Scene.Rectangles[hit.Primitive].Material;
             var point = SurfacePoint.Of(pixel, ray, hit, plan.Scene.Rectangles[hit.Primitive], 1 - material.Mirror);
-            if (point.Weight > 0) points.Add(point);
-            if (material.IsMirror) specular.Add(new(pixel, material.Mirror, SecondaryRays.Specular(ray, point)));
-        }
+            return new HitResult(null, point, material.IsMirror ? new(pixel, material.Mirror, SecondaryRays.Specular(ray, point)) : null);
+        }, (pixel, result) =>
+        {
+            if (result.Light is { } light) radiance[pixel] = light;
+            if (result.Point is { Weight: > 0 } point) points.Add(point);
+            if (result.Reflection is { } reflection) specular.Add(reflection);
+        });
         return (points, specular);
     }
+
+    // What a camera or mirror ray's hit gives its pixel: an area light's exitance, or a surface point (and, on a mirror, its reflection).
+    private readonly record struct HitResult(Vec3? Light, SurfacePoint? Point, SpecularRayWorkItem? Reflection);
 
     // Mirror reflections to their closest hits: one bounce, so a mirror seen in a mirror shows only its diffuse share.
     private static SurfacePoints TraceSpecularRays(PassPlan plan, List<SurfacePoint> points, List<SpecularRayWorkItem> queue, Vec3[] radiance, List<PassMetrics> passes,
@@ -106,18 +109,18 @@ public static class SceneRenderer
         passes.Add(metrics);
         // Room for the reflected points at once: growing by doubling would hold up to twice the points.
         points.Capacity = Math.Max(points.Capacity, points.Count + queue.Count);
-        for (var k = 0; k < queue.Count; k++)
+        InOrder.Run(queue.Count, k =>
         {
             var (pixel, mirror, ray) = queue[k];
-            if (SeenLight(plan.Scene, ray, hits[k]) is { } light)
-            {
-                radiance[pixel] += mirror * light;
-                continue;
-            }
-            if (hits[k] is not { } hit) continue;
+            if (SeenLight(plan.Scene, ray, hits[k]) is { } light) return new HitResult(mirror * light, null, null);
+            if (hits[k] is not { } hit) return default;
             var rectangle = plan.Scene.Rectangles[hit.Primitive];
-            points.Add(SurfacePoint.Of(pixel, ray, hit, rectangle, mirror * (1 - rectangle.Material.Mirror)));
-        }
+            return new HitResult(null, SurfacePoint.Of(pixel, ray, hit, rectangle, mirror * (1 - rectangle.Material.Mirror)), null);
+        }, (k, result) =>
+        {
+            if (result.Light is { } light) radiance[queue[k].Pixel] += light;
+            if (result.Point is { } point) points.Add(point);
+        });
         return new SurfacePoints(points, primaryCount);
     }
 
@@ -134,15 +137,19 @@ public static class SceneRenderer
         Ray? RayAt(int k, int l) => l < pointLights
             ? SecondaryRays.Shadow(points[k], scene.Lights[l])
             : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-        // Which (point, light) slots have a ray, on all cores; then the slots with one, in order. Only the slot is kept per
-        // shadow ray: the ray, its pixel and its layout channel (the light, and whether the point is primary or reflected,
-        // so gathering compares rays towards the same light from the same kind of point) are computed when the pass reads them.
+        // Which (point, light) slots have a ray, on all cores and without building it; then the slots with one, in order.
+        // Only the slot is kept per shadow ray: the ray, its pixel and its layout channel (the light, and whether the point
+        // is primary or reflected, so gathering compares rays towards the same light from the same kind of point) are
+        // computed when the pass reads them.
         var present = new bool[points.Count * lightCount];
         Parallel.For(0, points.Count, k =>
         {
-            for (var l = 0; l < lightCount; l++) present[k * lightCount + l] = RayAt(k, l) is not null;
+            for (var l = 0; l < lightCount; l++)
+                present[k * lightCount + l] = l < pointLights
+                    ? SecondaryRays.HasShadow(points[k], scene.Lights[l])
+                    : SecondaryRays.HasDirectional(points[k], scene.DirectionalLights[l - pointLights]);
         });
-        var slots = new int[present.Count(p => p)];
+        var slots = new int[present.AsSpan().Count(true)];
         for (int slot = 0, i = 0; slot < present.Length; slot++)
             if (present[slot]) slots[i++] = slot;
         var rays = new ComputedList<Ray>(slots.Length, i => RayAt(slots[i] / lightCount, slots[i] % lightCount)!);
@@ -182,17 +189,16 @@ public static class SceneRenderer
         passes.AddRange([traceMetrics, shadowMetrics]);
     }
 
-    // Whitted shading of every point with the lights it sees, plus the extra irradiance on its diffuse colour.
-    private static void Shade(Scene scene, SurfacePoints points, bool[,] visible, Vec3[] extra, Vec3[] radiance)
-    {
-        for (var k = 0; k < points.Count; k++)
+    // Whitted shading of every point with the lights it sees, plus the extra irradiance on its diffuse colour; a pixel
+    // adds its points in order (its primary point first).
+    private static void Shade(Scene scene, SurfacePoints points, bool[,] visible, Vec3[] extra, Vec3[] radiance) =>
+        InOrder.Run(points.Count, k =>
         {
             var point = points[k];
             var local = WhittedShading.Radiance(scene, point, l => visible[k, l]);
             if (extra[k] != Vec3.Zero) local += scene.Rectangles[point.Hit.Primitive].Material.Diffuse * extra[k];
-            radiance[point.Pixel] += point.Weight * local;
-        }
-    }
+            return point.Weight * local;
+        }, (k, shaded) => radiance[points[k].Pixel] += shaded);
 
     private static RenderResult Result(PassPlan plan, Vec3[] radiance, List<PassMetrics> passes, AccuracyBudget budget)
     {

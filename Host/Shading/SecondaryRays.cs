@@ -21,15 +21,24 @@ public static class SecondaryRays
     public static Ray? Shadow(SurfacePoint point, PointLight light)
     {
         var toLight = light.Position - point.Hit.Point;
-        if (toLight.Dot(point.Normal) <= 0) return null;
+        if (!InFront(toLight, point)) return null;
         return new Ray(point.Hit.Point, toLight, MaxDistance: 1.0, ExcludedPrimitive: point.Hit.Primitive);
     }
+
+    /// <summary>Whether <see cref="Shadow"/> gives a ray, without building it.</summary>
+    public static bool HasShadow(SurfacePoint point, PointLight light) => InFront(light.Position - point.Hit.Point, point);
+
+    /// <summary>Whether <see cref="TowardsDirectional"/> gives a ray, without building it.</summary>
+    public static bool HasDirectional(SurfacePoint point, DirectionalLight light) => InFront(-light.Direction, point);
+
+    // Whether a ray along `toward` leaves the surface on the side its normal faces (as "not behind": a NaN counts as in front).
+    private static bool InFront(Vec3 toward, SurfacePoint point) => !(toward.Dot(point.Normal) <= 0);
 
     /// <summary>The segment from <paramref name="point"/> to <paramref name="target"/> (exact end t = 1 there), or null when the target is not in front of the surface.</summary>
     public static Ray? Towards(SurfacePoint point, Vec3 target)
     {
         var toTarget = target - point.Hit.Point;
-        if (toTarget.Dot(point.Normal) <= 0) return null;
+        if (!InFront(toTarget, point)) return null;
         return new Ray(point.Hit.Point, toTarget, MaxDistance: 1.0, ExcludedPrimitive: point.Hit.Primitive);
     }
 
@@ -41,7 +50,7 @@ public static class SecondaryRays
     public static Ray? TowardsDirectional(SurfacePoint point, DirectionalLight light, CoordinateGrid grid)
     {
         var toLight = -light.Direction;
-        if (toLight.Dot(point.Normal) <= 0) return null;
+        if (!InFront(toLight, point)) return null;
         var extent = grid.Max + grid.Step;
         var exit = double.PositiveInfinity;
         for (var axis = 0; axis < 3; axis++)
