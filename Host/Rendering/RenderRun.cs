@@ -38,7 +38,7 @@ public static class RenderRun
             throw new UserError($"{scene.Name}: {e.Message}");
         }
         var renderTime = clock.Elapsed;
-        FinishedPass.Release((long)options.Width * options.Height);
+        FinishedRender.Release((long)options.Width * options.Height);
 
         clock.Restart();
         var classical = new EngineSetup(EngineKind.Classical);

@@ -37,11 +37,8 @@ public static class SceneRenderer
         var radiance = new Vec3[pixels];
         var allowed = (options.Budget ?? 0) * pixels;
         var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
-        FinishedPass.Release(pixels);
         var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, Left(allowed, passes) / 3);
-        FinishedPass.Release(pixels);
         var visible = TraceShadowRays(plan, points, passes, Left(allowed, passes));
-        FinishedPass.Release(pixels);
         var budgeted = passes.ToArray();
         var extra = DirectionalLight(scene, points, visible);
         AddAreaLight(plan, points, extra, passes);

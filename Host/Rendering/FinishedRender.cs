@@ -1,0 +1,16 @@
+namespace QuantumRayTracing.Rendering;
+
+/// <summary>
+/// Hands back, between a large render and its classical reference, the memory the render's tiles no longer need: their
+/// per-ray arrays are large objects, which the runtime frees only in a full collection (docs/rendering.md, large renders).
+/// Small renders skip it: a full collection would cost them more than it saves.
+/// </summary>
+public static class FinishedRender
+{
+    public static void Release(long pixels)
+    {
+        if (pixels < RenderForecast.LargePixels) return;
+        System.Runtime.GCSettings.LargeObjectHeapCompactionMode = System.Runtime.GCLargeObjectHeapCompactionMode.CompactOnce;
+        GC.Collect(GC.MaxGeneration, GCCollectionMode.Forced, blocking: true, compacting: true);
+    }
+}
