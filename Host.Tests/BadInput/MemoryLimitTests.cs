@@ -40,7 +40,7 @@ public sealed class MemoryLimitTests : IDisposable
         Assert.NotNull(told);
         Assert.Equal(calibration / (128.0 * 128), told.RaysPerPixel, 9);
         Assert.Equal(1024L * 1024, told.Pixels);
-        Assert.True(told.PeakBytes > RenderForecast.BaseBytes + 1024L * 1024 * RenderForecast.BytesPerPixel + RenderForecast.TilePixels * RenderForecast.BytesPerRay,
+        Assert.True(told.PeakBytes > RenderForecast.BaseBytes + 1024L * 1024 * RenderForecast.BytesPerPixel + TiledRender.MostTracedPixels(settings.Options.LatticeLevels) * RenderForecast.BytesPerRay,
             "the image's bytes and at least one ray per pixel of a tile");
         Outcome.AssertEmpty(_output.Path);
     }

@@ -62,7 +62,8 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     /// </summary>
     public double RunFidelity(NoiseModel noise, int count, int marked, int iterations) =>
         Channels is null || noise.PerGate <= 0 ? IndependentHarmsFidelity(noise, iterations)
-        : _channelFidelities.GetOrAdd((noise, count, marked, iterations), key => RunFidelity(key.Noise, key.Count, key.Marked, key.Iterations, SearchChannels.FittedWholeHarm));
+        : _channelFidelities.GetOrAdd((noise, count, marked, iterations),
+            static (key, self) => self.RunFidelity(key.Noise, key.Count, key.Marked, key.Iterations, SearchChannels.FittedWholeHarm), this);
 
     /// <summary>The same with <paramref name="wholeHarm"/> for the harm of an error the grading cannot follow (the fit tries several), not kept.</summary>
     public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, double wholeHarm)
@@ -70,7 +71,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
         if (Channels is not { } channels || noise.PerGate <= 0) return IndependentHarmsFidelity(noise, iterations);
         var register = 1 << Search.SearchRegisters.For(count).IndexQubits;
         var uniform = (double)marked / register;
-        var ideal = DephasedSearch.MarkedProbability(register, marked, iterations, 1, DephasedSearch.Iteration.Ideal);
+        var ideal = Engines.GroverProbability.OfMarked(register, marked, iterations);
         if (Math.Abs(ideal - uniform) < 1e-9) return IndependentHarmsFidelity(noise, iterations);
         var noisy = channels.MarkedProbability(noise, register, marked, iterations, Outside.Fidelity(noise), wholeHarm);
         return Math.Clamp((noisy - uniform) / (ideal - uniform), 0, 1);

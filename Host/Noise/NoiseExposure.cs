@@ -47,9 +47,8 @@ public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictiona
         if (Harm is { } graded)
         {
             // Each location's Pauli P contributes (1 − p_P)^h: a whole harm h = 1 is the pattern rule's factor.
-            static double Log(double p) => Math.Log(1 - Math.Min(p, 1 - 1e-12));
             return Math.Exp(graded.Values.Sum(h =>
-                h.GetValueOrDefault("X") * Log(noise.Px) + h.GetValueOrDefault("Y") * Log(noise.Py) + h.GetValueOrDefault("Z") * Log(noise.Pz)));
+                new PauliWeights(h.GetValueOrDefault("X"), h.GetValueOrDefault("Y"), h.GetValueOrDefault("Z")).LogSurvival(noise)));
         }
         var log = 0.0;
         foreach (var (pattern, count) in ByPattern)

@@ -26,8 +26,7 @@ public static class DirectPass
         var misses = new int[shadowRays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var levels = CheapConfirmation.Levels(options, shadowRays.Count); // each ray's lattice level, with a lattice
-        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, levels);
+        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, CheapConfirmation.Levels(options, shadowRays.Count));
         void Apply(int i, RayTable table, HitOutcome outcome) => occluders[i] ??= outcome.Primitive;
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
@@ -60,8 +59,8 @@ public static class DirectPass
                     : NeighbourGathering.FromLatticeOccluders(geometry, shadowRays, levelRays, occluders, layout, lattice.Levels, agreed);
                 levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, shadowRays.Count), ledger.CheapPrior(level + 1));
                 var searched = IteratedSearch.Run(name, search, geometry, shadowRays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, settled: i => occluders[i] is not null || levels![i] != level, schedule: schedule,
-                    ledger: ledger, settle: settle);
+                    level == 0 ? gather : null, settled: i => occluders[i] is not null, schedule: schedule,
+                    ledger: ledger, settle: settle, among: levelRays);
                 return (searched, tests, updated);
             });
         }

@@ -30,11 +30,13 @@ public static class IteratedSearch
     /// <param name="schedule">QSearch's schedule for (round, ray), or null for the engine's own.</param>
     /// <param name="ledger">Records every search, for the pass's expected wrong rays.</param>
     /// <param name="settle">Whether ray (round, ray) is settled classically this round instead: N tests, a certain answer.</param>
+    /// <param name="among">The rays the first round may search, ascending (a lattice level's); null: every ray.</param>
     public static PassMetrics Run(
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, int iterations,
         Func<int, RayTable, HitWindow> window, Func<int, RayTable, HitOutcome, bool> observe, IRenderProgress? progress,
         Func<(long Tests, long Updated)>? afterRound = null, Func<int, bool>? settled = null,
-        Func<int, int, QSearchSchedule?>? schedule = null, RayLedger? ledger = null, Func<int, int, bool>? settle = null)
+        Func<int, int, QSearchSchedule?>? schedule = null, RayLedger? ledger = null, Func<int, int, bool>? settle = null,
+        int[]? among = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(iterations, 1);
         var clock = Stopwatch.StartNew();
@@ -50,7 +52,7 @@ public static class IteratedSearch
         bool[] finished = [];
         for (; round < iterations; round++)
         {
-            (active, kept) = round == 0 ? (Unsettled(rays.Count, settled), null) : Unfinished(active, kept, finished, settled);
+            (active, kept) = round == 0 ? (Unsettled(among ?? [.. Enumerable.Range(0, rays.Count)], settled), null) : Unfinished(active, kept, finished, settled);
             if (active.Length == 0) break;
             finished = new bool[active.Length];
             RayTable?[]? keep = null;
@@ -100,21 +102,18 @@ public static class IteratedSearch
         return new PassMetrics(name, rays.Count, round, cost, tableRows, clock.Elapsed, updated) { SettledRays = settledRays };
     }
 
-    // The first round's rays: every ray not settled by other means. Each ray is asked once, on all cores (every lattice
-    // level asks about all the pass's rays), into a flag per ray; the rays are then counted, so a pass's level of a few
-    // rays among millions holds no list sized for all of them.
-    private static int[] Unsettled(int rays, Func<int, bool>? settled)
+    // The first round's rays: those of <paramref name="among"/> not settled by other means, each asked once, on all cores.
+    private static int[] Unsettled(int[] among, Func<int, bool>? settled)
     {
-        if (settled is null) return [.. Enumerable.Range(0, rays)];
-        if (rays == 0) return [];
-        var skip = new bool[rays];
-        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, rays, BlockSize * 16), range =>
+        if (settled is null || among.Length == 0) return among;
+        var skip = new bool[among.Length];
+        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, among.Length, BlockSize * 16), range =>
         {
-            for (var i = range.Item1; i < range.Item2; i++) skip[i] = settled(i);
+            for (var k = range.Item1; k < range.Item2; k++) skip[k] = settled(among[k]);
         });
         var unsettled = new int[skip.AsSpan().Count(false)];
-        for (int i = 0, k = 0; k < unsettled.Length; i++)
-            if (!skip[i]) unsettled[k++] = i;
+        for (int k = 0, n = 0; n < unsettled.Length; k++)
+            if (!skip[k]) unsettled[n++] = among[k];
         return unsettled;
     }
 

@@ -52,14 +52,12 @@ public static class PooledRound
         {
             var pool = chosen.Skip(start).Take(size).ToList();
             start += size;
-            var tables = new RayTable[pool.Count];
-            Parallel.For(0, pool.Count, k => tables[k] = RayTable.BuildCompact(geometry, rays[pool[k]]));
-            var poolTables = tables.ToList();
+            var tables = pool.AsParallel().AsOrdered().Select(i => RayTable.BuildCompact(geometry, rays[i])).ToList();
             tableRows += (long)pool.Count * count;
             while (pool.Count > 0)
             {
                 var schedule = pooled.PooledSchedule(pool.Count, count);
-                var outcome = pooled.RunPooled([.. pool.Select((ray, k) => new HitQuery(poolTables[k], window(ray, poolTables[k])))]);
+                var outcome = pooled.RunPooled([.. pool.Select((ray, k) => new HitQuery(tables[k], window(ray, tables[k])))]);
                 cost += outcome.Cost;
                 if (outcome is not { Query: { } k, Primitive: { } primitive })
                 {
@@ -67,12 +65,12 @@ public static class PooledRound
                     break;
                 }
                 var found = new HitOutcome(primitive, false, default);
-                apply(pool[k], poolTables[k], found);
+                apply(pool[k], tables[k], found);
                 ledger.Record(pool[k], schedule, found);
                 // A ray the ledger no longer charges (an occluder found settles it) leaves the pool; after a closer hit it stays.
                 if (ledger.Expected(pool[k]) > 0) continue;
                 pool.RemoveAt(k);
-                poolTables.RemoveAt(k);
+                tables.RemoveAt(k);
             }
         }
         return new PassMetrics(name, rays.Count, 1, cost, tableRows, clock.Elapsed);

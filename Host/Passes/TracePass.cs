@@ -24,8 +24,7 @@ public static class TracePass
         var misses = new int[rays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var levels = CheapConfirmation.Levels(options, rays.Count); // each ray's lattice level, with a lattice
-        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, levels);
+        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, CheapConfirmation.Levels(options, rays.Count));
         // The table's own ray: a pass's rays may be computed on each read.
         HitWindow Window(int i, RayTable table) =>
             Hit.Beyond(table.Ray, hits[i], table.Count, options.TieBreak);
@@ -63,7 +62,7 @@ public static class TracePass
                     : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
                 levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, rays.Count), ledger.CheapPrior(level + 1));
                 var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, settled: i => levels![i] != level, schedule: schedule, ledger: ledger, settle: settle);
+                    level == 0 ? gather : null, schedule: schedule, ledger: ledger, settle: settle, among: levelRays);
                 return (searched, tests, updated);
             });
         }

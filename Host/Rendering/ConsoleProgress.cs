@@ -5,8 +5,8 @@ namespace QuantumRayTracing.Rendering;
 
 /// <summary>
 /// Progress on standard error, only once work has run longer than a second: a line rewritten in place
-/// on a terminal, a line per tenth of a stage when redirected (logs stay short), with the time left in the pass once
-/// it can be told.
+/// on a terminal, a line per tenth of a stage when redirected (logs stay short), with the time left in the stage (a pass,
+/// or a tiled render's tiles) once it can be told.
 /// </summary>
 public sealed class ConsoleProgress(string label) : IRenderProgress
 {
@@ -24,10 +24,9 @@ public sealed class ConsoleProgress(string label) : IRenderProgress
         if (_clock.Elapsed < Delay) return;
         var percent = (int)Math.Floor(Math.Clamp(done, 0, 1) * 100);
         // Redirected, a line per tenth of a pass: the time left rides along, it does not add lines.
-        // A pass reports its name ("shadow"); a tiled render reports its tiles as one stage ("64 tiles"), its time left the render's.
-        var (what, scope) = stage.EndsWith(" tiles", StringComparison.Ordinal) ? (stage, "render") : ($"{stage} pass", "pass");
-        var step = $"{label}: {what} {(_terminal ? percent : percent / 10 * 10)}%";
-        var line = step + Left(done, scope);
+        // The stage as its reporter names it: a pass ("shadow"), a tiled render's tiles ("64 tiles"), the supersampler.
+        var step = $"{label}: {stage} {(_terminal ? percent : percent / 10 * 10)}%";
+        var line = step + Left(done);
         if ((_terminal ? line : step) == _lastLine) return;
         _lastLine = _terminal ? line : step;
         if (_terminal)
@@ -39,12 +38,12 @@ public sealed class ConsoleProgress(string label) : IRenderProgress
     }
 
     // The stage's time left at its pace so far, once it has run long enough to say (a few seconds and a tenth of its work).
-    private string Left(double done, string scope)
+    private string Left(double done)
     {
         var elapsed = (_clock.Elapsed - _stageStart).TotalSeconds;
         if (elapsed < 3 || done < 0.1 || done >= 1) return "";
         var left = elapsed * (1 - done) / done;
-        return FormattableString.Invariant($", about {Math.Ceiling(left):F0} s left in this {scope}");
+        return FormattableString.Invariant($", about {Math.Ceiling(left):F0} s left");
     }
 
     /// <summary>Clears the in-place line so the results print on a clean line.</summary>

@@ -32,9 +32,6 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
 
     public const long BytesPerPixel = 8;
 
-    /// <summary>The most pixels one tile traces: its own and a border of the coarsest lattice step (4 levels) on each side.</summary>
-    public const long TilePixels = (TiledRender.TileSize + 2 * 16L) * (TiledRender.TileSize + 2 * 16L);
-
     /// <summary>Whether <paramref name="settings"/> ask for a render large enough to forecast: on an engine whose work runs here in C#.</summary>
     public static bool Applies(RenderRunSettings settings) =>
         (long)settings.Options.Width * settings.Options.Height >= LargePixels && !settings.Engine.RunsQSharp;
@@ -58,7 +55,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
         var pixels = (long)options.Width * options.Height;
         var time = largeTime + TimeSpan.FromSeconds(perPixel * (pixels - largePixels));
         var raysPerPixel = rays / largePixels;
-        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * TilePixels) + BytesPerPixel * pixels, time);
+        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * TiledRender.MostTracedPixels(options.LatticeLevels)) + BytesPerPixel * pixels, time);
     }
 
     private static (TimeSpan Time, long Rays) Timed(RenderRunSettings settings, RenderOptions options)

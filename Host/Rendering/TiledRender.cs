@@ -21,6 +21,9 @@ public static class TiledRender
     /// <summary>Renders from this many pixels on are tiled (<see cref="RenderForecast.LargePixels"/>, where the forecast starts).</summary>
     public static bool Applies(RenderOptions options) => (long)options.Width * options.Height >= RenderForecast.LargePixels;
 
+    /// <summary>The most pixels one tile traces: its own and, on each side, a border of the coarsest lattice step.</summary>
+    public static long MostTracedPixels(int latticeLevels) => (long)(TileSize + 2 * (1 << latticeLevels)) * (TileSize + 2 * (1 << latticeLevels));
+
     /// <summary>A tile's seed: the render's seed forked for the tile, so no two tiles draw alike.</summary>
     public static ulong TileSeed(ulong seed, int tile) => new SeededRandom(seed).Fork(RandomStreams.Tiles + (ulong)tile).NextUInt64();
 

@@ -133,8 +133,8 @@ public static class AccuracyExperiment
             (below: more required misses, the fixed cheap confirmation at every level, one lattice level more). A search that must find a hit
             among N costs about sqrt(N) queries, and so does a confirmation that nothing is closer for a given miss rate: every part grows with N.
             The default sizes each lattice level's cheap confirmation so that the ledger's charge for it, with the rounds it would still need,
-            costs least, and the rounds buy the expectation down where a stratum's finds put it, searching the thousands of rays a
-            stratum's finds put under suspicion together in pooled searches over their (ray, primitive) pairs (docs/rendering.md).
+            costs least, and the rounds buy the expectation down where a stratum's finds put it, searching the rays a stratum's finds
+            put under suspicion together in pooled searches over their (ray, primitive) pairs (docs/rendering.md).
             """);
         var others = AccuracyBenchmark.Alternatives.Skip(1).ToArray();
         var growth = new TextTable("growth", ["N", "default: Int/Ray", "cheap confirmations", "other searches and tests", "budget rounds", "settled",
@@ -143,8 +143,7 @@ public static class AccuracyExperiment
         foreach (var n in primitives)
         {
             progress($"{n} random rectangles, {GrowthSize}x{GrowthSize}");
-            var scene = RandomScene.Scattered(n, 1);
-            var reference = RenderMeasurement.Reference(scene, RenderOptions.PaperPipeline(GrowthSize, GrowthSize));
+            var (scene, reference) = GrowthScene(n, 1);
             var (kept, free) = (RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), AccuracyBenchmark.Standard[0].Options(GrowthSize, 1), reference),
                 RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), AccuracyBenchmark.Standard[1].Options(GrowthSize, 1), reference));
             seedOne.Add((n, kept));
@@ -177,8 +176,7 @@ public static class AccuracyExperiment
             var runs = Enumerable.Range(2, seeds - 1).Select(seed =>
             {
                 progress($"{n} random rectangles, {GrowthSize}x{GrowthSize}, seed {seed} of {seeds}");
-                var scene = RandomScene.Scattered(n, (ulong)seed);
-                var reference = RenderMeasurement.Reference(scene, RenderOptions.PaperPipeline(GrowthSize, GrowthSize));
+                var (scene, reference) = GrowthScene(n, (ulong)seed);
                 return RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic), AccuracyBenchmark.Standard[0].Options(GrowthSize, 1), reference);
             }).Prepend(first).ToArray(); // seed 1 is the growth table's render
             var perRay = runs.Select(r => r.Result.Total.PerRayConservative).ToArray();
@@ -188,6 +186,13 @@ public static class AccuracyExperiment
                 Invariant($"{runs.Sum(r => r.Result.Budget.ExpectedWrongPixels):0.0}"), Invariant($"{runs.Sum(r => r.Error.DifferentPixels)}")]);
         }
         report.Table(table);
+    }
+
+    // The growth tables' scene of n scattered rectangles for a seed, and its classical render at their size.
+    private static (Scenes.Scene Scene, RenderMeasurement Reference) GrowthScene(int n, ulong seed)
+    {
+        var scene = RandomScene.Scattered(n, seed);
+        return (scene, RenderMeasurement.Reference(scene, RenderOptions.PaperPipeline(GrowthSize, GrowthSize)));
     }
 
     private static string KindName(RandomSceneKind kind) => kind switch

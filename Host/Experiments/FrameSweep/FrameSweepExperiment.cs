@@ -54,7 +54,7 @@ public static class FrameSweepExperiment
 
         public void Report(string stage, double done)
         {
-            var line = $"{label}: {stage} pass {(int)Math.Floor(Math.Clamp(done, 0, 1) * 10) * 10}%";
+            var line = $"{label}: {stage} {(int)Math.Floor(Math.Clamp(done, 0, 1) * 10) * 10}%";
             if (line == _last) return;
             _last = line;
             lines(line);
