@@ -35,15 +35,7 @@ public sealed class ClusterFaultTests
             Interlocked.Increment(ref counts[k]);
             answers[k] = Assert.Single(shots);
         }));
-        // Polled in real time; the deadline only ends a test that is failing anyway.
-        var deadline = DateTime.UtcNow + TimeSpan.FromMinutes(2);
-        while (!run.Wait(20))
-        {
-            if (transport.InFlightOn(good) == 0 && transport.InFlightOn(bad) > 0)
-                clock.Advance(TimeSpan.FromSeconds(ChunkSeconds + 1));
-            Assert.True(DateTime.UtcNow < deadline, $"{counts.Sum()} of {Requests} requests answered after two minutes");
-        }
-        run.GetAwaiter().GetResult();
+        TestCluster.WaitPastTheFaultyWorker(run, transport, clock, bad, good, ChunkSeconds, () => $"{counts.Sum()} of {Requests} requests answered");
         Assert.All(counts, c => Assert.Equal(1, c));
         Assert.True(transport.Retries >= 1, "no chunk was sent again, so the test proved nothing");
         Assert.Contains("sent again after a worker failed to answer", pool.Where);

@@ -4,6 +4,7 @@ using System.Text.Json.Nodes;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
+using Microsoft.Extensions.Time.Testing;
 using Orleans.Runtime;
 using QuantumRayTracing.Cluster;
 
@@ -73,6 +74,23 @@ public sealed class TestCluster : IDisposable
             silo.Dispose();
         }
         _scratch.Dispose();
+    }
+
+    /// <summary>
+    /// Waits for <paramref name="run"/>, moving the chunk time limit's <paramref name="clock"/> past the limit whenever every
+    /// request in flight waits on the faulty worker <paramref name="bad"/>: so only its chunks can time out, however slow or
+    /// loaded the machine. Polled in real time; the two-minute deadline only ends a test that is failing anyway.
+    /// </summary>
+    public static void WaitPastTheFaultyWorker(Task run, ClusterTransport transport, FakeTimeProvider clock, string bad, string good, double chunkSeconds, Func<string> state)
+    {
+        var deadline = DateTime.UtcNow + TimeSpan.FromMinutes(2);
+        while (!run.Wait(20))
+        {
+            if (transport.InFlightOn(good) == 0 && transport.InFlightOn(bad) > 0)
+                clock.Advance(TimeSpan.FromSeconds(chunkSeconds + 1));
+            Assert.True(DateTime.UtcNow < deadline, $"{state()} after two minutes");
+        }
+        run.GetAwaiter().GetResult();
     }
 
     public static int[] FreePorts(int count)

@@ -55,7 +55,7 @@ public class TiledRenderTests
     }
 
     private static RenderResult Tiled(Scene scene, EngineKind kind, RenderOptions options, int tileSize = 32) =>
-        TiledRender.Render(scene, o => EngineFactory.CreateSearch(kind, new SeededRandom(o.Seed), 1, new QSearchOptions()), options, tileSize: tileSize);
+        TiledRender.Render(new LocalParts(scene, new EngineSetup(kind)), options, tileSize: tileSize);
 
     private static RenderResult Whole(Scene scene, EngineKind kind, RenderOptions options) =>
         Renderer.Render(scene, new EngineSetup(kind), options);

@@ -45,6 +45,9 @@ public sealed class BridgePool : IDisposable
     private readonly IBridgeTransport? _remote;
     private readonly IDisposable? _owned;
 
+    /// <summary>Where requests go when they do not run on local bridges (a cluster's workers); null for local bridges.</summary>
+    public IBridgeTransport? Remote => _remote;
+
     /// <summary>Where the requests run, for reports: local bridges or a cluster's workers.</summary>
     public RunPlace Place => _remote?.Place ?? RunPlace.LocalBridges(Workers);
 

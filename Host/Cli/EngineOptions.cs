@@ -58,6 +58,18 @@ public sealed class EngineOptions
 
     public readonly Option<FileInfo?> Cluster = CommonOptions.LocalBridgesOrCluster();
 
+    private bool _imagePartsOnCluster;
+
+    /// <summary>
+    /// `render`: --cluster also takes the seeded engines' image parts (<see cref="Rendering.RemoteParts"/>), so it serves every engine.
+    /// </summary>
+    public EngineOptions WithImagePartsOnCluster()
+    {
+        _imagePartsOnCluster = true;
+        Cluster.Description = "Render on the workers of this cluster file (docs/cluster.md): the Q# engines send their chunks there; the seeded engines (analytic, classical, bvh, randomized) their image, as one part or, from 1024x1024 pixels on, in tiles of 512x512, the same image as here. Default: none; local bridges and this process.";
+        return this;
+    }
+
     public EngineOptions(EngineKind fallback, params EngineKind[] accepted)
     {
         Engine = new Option<EngineKind>("--engine", "-e")
@@ -87,11 +99,12 @@ public sealed class EngineOptions
     public NoiseModel GetNoise(ParseResult parse) => NoiseModel.Of(parse.GetValue(Noise), parse.GetValue(QubitLoss));
 
     /// <summary>
-    /// The cluster's bridges when <c>--cluster</c> names a file and the engine runs Q#; null otherwise (the
-    /// engine then starts local bridges of its own). Connecting fails with one line and exit code 3.
+    /// The cluster's bridges when <c>--cluster</c> names a file and the engine runs Q# (or, after <see cref="WithImagePartsOnCluster"/>,
+    /// is seeded); null otherwise (the engine then starts local bridges of its own, or needs none). Connecting fails with one line
+    /// and exit code 3.
     /// </summary>
     public BridgePool? StartBridges(ParseResult parse) =>
-        parse.GetValue(Cluster) is { } file && parse.GetValue(Engine).RunsQSharp
+        parse.GetValue(Cluster) is { } file && parse.GetValue(Engine) is var kind && (kind.RunsQSharp || _imagePartsOnCluster && kind.IsSeedable)
             ? QuantumRayTracing.Cluster.ClusterBridges.Start(file.FullName, parse.GetValue(Workers))
             : null;
 

@@ -29,8 +29,8 @@ public sealed class RenderCommand : Command
 
     private readonly RenderOptionSet _render = new();
 
-    private readonly EngineOptions _engine = new(EngineKind.Analytic,
-        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Bvh, EngineKind.Randomized);
+    private readonly EngineOptions _engine = new EngineOptions(EngineKind.Analytic,
+        EngineKind.FullState, EngineKind.Gate, EngineKind.Analytic, EngineKind.Classical, EngineKind.Bvh, EngineKind.Randomized).WithImagePartsOnCluster();
 
     private readonly QSearchOptionSet _qsearch = new();
 

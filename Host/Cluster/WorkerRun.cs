@@ -5,8 +5,8 @@ using Orleans.Runtime;
 namespace QuantumRayTracing.Cluster;
 
 /// <summary>
-/// One worker of a cluster: an Orleans silo running the chunks renders send it on its own Node bridges, until SIGINT
-/// or SIGTERM stops it and its bridges. It says when it is ready, its load now and then, and what it served.
+/// One worker of a cluster: an Orleans silo running the chunks renders send it (Q# chunks on its own Node bridges, image
+/// parts in this process), until SIGINT or SIGTERM stops it and its bridges. It says when it is ready, its load now and then, and what it served.
 /// </summary>
 public static class WorkerRun
 {
@@ -18,7 +18,7 @@ public static class WorkerRun
         using var bridges = new WorkerBridges(settings.Workers);
         say($"starting {bridges.Capacity} bridge{(bridges.Capacity == 1 ? "" : "s")} (loading the QDK, compiling the Q# sources)");
         var qsharp = bridges.Start();
-        using var host = WorkerSilo.Build(config, siloPort, gatewayPort, bridges, settings.Advertise);
+        using var host = WorkerSilo.Build(config, siloPort, gatewayPort, new WorkerExecutor(bridges), settings.Advertise);
         try
         {
             host.Start();

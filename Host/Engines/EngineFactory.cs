@@ -88,6 +88,8 @@ public static class EngineFactory
 
     /// <summary><see cref="Where"/> for scripts (<c>--json</c>): local or cluster, bridges and workers.</summary>
     /// <remarks>Without <paramref name="bridges"/> a Q# engine starts <paramref name="workers"/> local bridges of its own.</remarks>
+    /// <remarks>A seeded engine given a cluster's bridges renders its image parts on the cluster's workers.</remarks>
     public static RunPlace Place(EngineKind kind, BridgePool? bridges, int workers) =>
-        kind.RunsQSharp ? bridges?.Place ?? RunPlace.LocalBridges(workers) : RunPlace.NoBridges;
+        kind.RunsQSharp ? bridges?.Place ?? RunPlace.LocalBridges(workers)
+        : kind.IsSeedable && bridges?.Remote is not null ? bridges.Place : RunPlace.NoBridges;
 }

@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Engines;
 /// <param name="Workers">Local Node bridges a Q# engine starts when <paramref name="Pool"/> is null.</param>
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model of the quantum engines; null for the ideal machine.</param>
-/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones. A cluster's also renders a seeded engine's image parts (<see cref="Rendering.RemoteParts"/>).</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts: the gate-level oracle by default.</param>
 /// <param name="NoiseAware">The passes plan with the noisy runs' success (analytic engine under noise), not the ideal one.</param>
 public sealed record EngineSetup(

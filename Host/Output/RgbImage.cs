@@ -20,6 +20,15 @@ public sealed class RgbImage
         _pixels = new byte[width * height * 3];
     }
 
+    /// <summary>An image over <paramref name="pixels"/>, row-major R, G, B (as <see cref="Pixels"/> gives them), taken as they are.</summary>
+    public static RgbImage FromPixels(int width, int height, byte[] pixels)
+    {
+        var image = new RgbImage(width, height);
+        if (pixels.Length != image._pixels.Length) throw new ArgumentException($"{pixels.Length} bytes are not the {width}x{height} pixels' {image._pixels.Length}", nameof(pixels));
+        pixels.CopyTo(image._pixels, 0);
+        return image;
+    }
+
     /// <summary>Number of columns, at least 1.</summary>
     public int Width { get; }
 

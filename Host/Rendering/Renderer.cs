@@ -1,15 +1,13 @@
 using QuantumRayTracing.Engines;
-using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Scenes;
-using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Rendering;
 
 /// <summary>
 /// The one way to render: `render`, every experiment and the soak come here. It checks the engine's noise model
-/// once, builds the engine's search from the options' seed, runs <see cref="SceneRenderer"/> and releases the
-/// engine (a pool it was given keeps running). The accuracy budget holds on the seeded engines; the simulator engines
-/// run their searches as configured.
+/// once and renders the image as one part or, when large, in tiles (<see cref="TiledRender"/>); the parts render here
+/// or, on a seeded engine given a cluster's bridges, on the cluster's workers (<see cref="RemoteParts"/>), the same image
+/// either way. The accuracy budget holds on the seeded engines; the simulator engines run their searches as configured.
 /// </summary>
 public static class Renderer
 {
@@ -20,11 +18,9 @@ public static class Renderer
         // clusters, the qubit guard), and the budget's classical settle would take the small images they can simulate
         // off the simulator altogether.
         if (engine.Kind.RunsQSharp) options = options with { Budget = null };
-        var approximation = engine.Kind.ApproximatesNoise && !engine.NoiseModel.IsNoiseless ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
-        IHitSearch Search(RenderOptions o) => EngineFactory.CreateSearch(engine.Kind, new SeededRandom(o.Seed), engine.Workers, engine.Search,
-            engine.MaxQubits, engine.Pool, engine.Noise, approximation, engine.NoiseAware);
-        if (TiledRender.Applies(options)) return TiledRender.Render(scene, Search, options, progress);
-        using var search = Search(options);
-        return SceneRenderer.Render(scene, search, options, progress);
+        IPartRenderer parts = engine.Kind.IsSeedable && engine.Pool?.Remote is { } cluster
+            ? new RemoteParts(cluster, engine.Pool.Workers, scene, engine)
+            : new LocalParts(scene, engine);
+        return TiledRender.Applies(options) ? TiledRender.Render(parts, options, progress) : parts.Render(options, null, progress);
     }
 }

@@ -11,7 +11,8 @@ namespace QuantumRayTracing.Rendering;
 /// rendered on their own by <see cref="SceneRenderer"/> with a seed of the tile's own, and its interior copied into the image.
 /// A render then holds the image and one tile's work, not every pixel's, and a tile renders the same whenever it runs. Each
 /// tile keeps the budget for its own pixels (its allowance is the budget's share of its interior, spent on its traced pixels),
-/// so the image keeps it too; the border's rays are traced and counted in every tile that traces them.
+/// so the image keeps it too; the border's rays are traced and counted in every tile that traces them. Where the tiles render
+/// (<see cref="IPartRenderer"/>: one after another here, several at once on a cluster's workers) does not change the image.
 /// </summary>
 public static class TiledRender
 {
@@ -27,45 +28,63 @@ public static class TiledRender
     /// <summary>A tile's seed: the render's seed forked for the tile, so no two tiles draw alike.</summary>
     public static ulong TileSeed(ulong seed, int tile) => new SeededRandom(seed).Fork(RandomStreams.Tiles + (ulong)tile).NextUInt64();
 
-    /// <param name="scene">The scene.</param>
-    /// <param name="search">The engine's search for a tile's options (their seed is the tile's); disposed after the tile.</param>
+    /// <param name="parts">Renders a tile's part, here or on a cluster's workers.</param>
     /// <param name="options">The whole render's options.</param>
     /// <param name="progress">Told the tiles' progress as one stage, "n tiles".</param>
     /// <param name="tileSize">The side of a tile's own pixels, a multiple of the coarsest lattice step.</param>
-    public static RenderResult Render(Scene scene, Func<RenderOptions, IHitSearch> search, RenderOptions options, IRenderProgress? progress = null, int tileSize = TileSize)
+    public static RenderResult Render(IPartRenderer parts, RenderOptions options, IRenderProgress? progress = null, int tileSize = TileSize)
     {
         var step = 1 << options.LatticeLevels;
         if (tileSize % step != 0) throw new ArgumentException($"tiles of {tileSize} pixels do not hold whole lattice steps of {step}", nameof(tileSize));
         var tiles = ImageTiles.Of(options.Width, options.Height, tileSize, step);
         var image = new RgbImage(options.Width, options.Height);
-        var passes = new List<PassMetrics[]>();
-        var expected = 0.0;
-        var tileProgress = progress is null ? null : new TileProgress(progress, tiles.Count);
-        foreach (var tile in tiles)
+        var passes = new PassMetrics[tiles.Count][];
+        var expected = new double[tiles.Count];
+        void Run(ImageTile tile, IRenderProgress? tileProgress)
         {
-            tileProgress?.Start(tile.Index);
             var traced = tile.Traced;
             var tileOptions = options with
             {
                 Width = traced.Width, Height = traced.Height, Seed = TileSeed(options.Seed, tile.Index),
                 Budget = options.Budget * tile.Interior.Pixels / traced.Pixels,
             };
-            RenderResult part;
-            using (var tileSearch = search(tileOptions))
-                part = SceneRenderer.Render(scene, tileSearch, tileOptions, tileProgress, traced);
+            var part = parts.Render(tileOptions, traced, tileProgress);
+            // Tiles own disjoint pixels: tiles rendered at once copy into the image side by side.
             for (var y = 0; y < tile.Interior.Height; y++)
                 for (var x = 0; x < tile.Interior.Width; x++)
                 {
                     var (r, g, b) = part.Image.GetPixel(tile.Interior.X - traced.X + x, tile.Interior.Y - traced.Y + y);
                     image.SetPixel(tile.Interior.X + x, tile.Interior.Y + y, r, g, b);
                 }
-            passes.Add([.. part.Passes]);
-            expected += part.Budget.ExpectedWrongPixels;
+            passes[tile.Index] = [.. part.Passes];
+            expected[tile.Index] = part.Budget.ExpectedWrongPixels;
         }
-        // Every tile runs the same passes in the same order; each pass's metrics are summed over the tiles.
-        tileProgress?.Start(tiles.Count);
+        if (parts.Concurrency <= 1)
+        {
+            var tileProgress = progress is null ? null : new TileProgress(progress, tiles.Count);
+            foreach (var tile in tiles)
+            {
+                tileProgress?.Start(tile.Index);
+                Run(tile, tileProgress);
+            }
+        }
+        else
+        {
+            // Parts rendered elsewhere report only when they are done.
+            var done = 0;
+            progress?.Report($"{tiles.Count} tiles", 0);
+            Parallel.ForEach(tiles, new ParallelOptions { MaxDegreeOfParallelism = parts.Concurrency }, tile =>
+            {
+                Run(tile, null);
+                progress?.Report($"{tiles.Count} tiles", (double)Interlocked.Increment(ref done) / tiles.Count);
+            });
+        }
+        // Every tile runs the same passes in the same order; each pass's metrics are summed over the tiles, in tile order.
+        progress?.Report($"{tiles.Count} tiles", 1);
         var merged = Enumerable.Range(0, passes[0].Length).Select(k => PassMetrics.Total(passes[0][k].Name, [.. passes.Select(p => p[k])])).ToArray();
-        return new RenderResult(image, merged) { Budget = new AccuracyBudget(expected, (long)options.Width * options.Height, options.Budget) };
+        var expectedWrong = 0.0;
+        foreach (var e in expected) expectedWrong += e;
+        return new RenderResult(image, merged) { Budget = new AccuracyBudget(expectedWrong, (long)options.Width * options.Height, options.Budget) };
     }
 
     // The whole render as one stage, "n tiles": the tiles done, and of the running tile the share of its passes done (counted
