@@ -79,7 +79,7 @@ public sealed class ClusterTileTests
         var options = RenderDefaults.CommandLine(1024, 1024, 3);
         var engine = new EngineSetup(EngineKind.Analytic);
 
-        var remote = Renderer.Render(Qornell, engine with { Pool = pool }, options);
+        var remote = Renderer.Render(Qornell, engine with { Pool = pool, ImagePartsOnCluster = true }, options);
         var local = Renderer.Render(Qornell, engine, options);
 
         AssertSameRender(local, remote);

@@ -12,8 +12,8 @@ namespace QuantumRayTracing.Cluster;
 
 /// <summary>
 /// Sends bridge requests to a cluster's workers: each request goes to the least loaded worker; a worker that
-/// fails to answer (it died, hangs past the chunk time limit, cannot be reached) is dropped and the request
-/// goes to another, so every request gets exactly one answer or the render stops with a <see cref="ClusterException"/>.
+/// fails to answer (it died, hangs past the chunk time limit, misses its heartbeats, cannot be reached) is dropped and
+/// the request goes to another, so every request gets exactly one answer or the render stops with a <see cref="ClusterException"/>.
 /// What a worker's bridge reports (a Q# failure, a rejected request) is raised as the local bridge raises it.
 /// </summary>
 public sealed class ClusterTransport : IBridgeTransport, IDisposable
@@ -132,23 +132,36 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         }
     }
 
+    /// <summary>How often a render asks a worker holding one of its chunks whether it still answers.</summary>
+    public static readonly TimeSpan Heartbeat = TimeSpan.FromSeconds(5);
+
+    /// <summary>How long a worker may take to answer a heartbeat.</summary>
+    public static readonly TimeSpan HeartbeatTimeout = TimeSpan.FromSeconds(10);
+
+    /// <summary>Heartbeats missed in a row after which a worker holding a chunk counts as lost (one missed may be a busy moment).</summary>
+    public const int MissedHeartbeats = 3;
+
+    /// <summary>How often one request may go to the same worker when its calls fail while the worker still answers.</summary>
+    public const int AttemptsPerWorker = 3;
+
     public JsonNode Send(JsonObject request)
     {
         var text = request.ToJsonString();
-        var tried = new HashSet<Worker>();
+        var attempts = new Dictionary<Worker, int>();
         Exception? last = null;
-        while (Pick(tried) is { } worker)
+        while (Pick(attempts) is { } worker)
         {
             ChunkReply reply;
             try
             {
-                reply = worker.Grain.Run(text).WaitAsync(_config.ChunkTimeout, _clock).GetAwaiter().GetResult();
+                reply = Await(worker, worker.Grain.Run(text));
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
-                // Died, hung or unreachable: its answer, if one ever comes, is dropped with the task.
+                // Died, hung or unreachable: its answer, if one ever comes, is dropped with the task. A call can also fail on
+                // the way (through another worker's gateway that died) while its worker still answers: that worker stays.
                 last = e;
-                worker.Failed = true;
+                if (e is TimeoutException or WorkerLostException || !Answers(worker)) worker.Failed = true;
                 Interlocked.Increment(ref _retries);
                 continue;
             }
@@ -158,19 +171,55 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
             }
             return Unpack(reply);
         }
-        var why = last is TimeoutException ? $"no answer within the chunk time limit of {_config.ChunkTimeout.TotalSeconds:0.###} s" : FirstLine(last?.Message ?? "no worker left");
+        var why = last switch
+        {
+            TimeoutException => $"no answer within the chunk time limit of {_config.ChunkTimeout.TotalSeconds:0.###} s",
+            WorkerLostException lost => lost.Message,
+            _ => FirstLine(last?.Message ?? "no worker left"),
+        };
         throw new ClusterException($"{_config.Path}: no worker of cluster '{_config.ClusterId}' could run a chunk ({why}); {_workers.Count(w => w.Failed)} of {_workers.Length} workers failed", last);
     }
 
-    /// <summary>The least busy worker, relative to its bridges, that has not failed and has not had this request.</summary>
-    private Worker? Pick(HashSet<Worker> tried)
+    // The chunk's answer within the chunk time limit; while it runs, the worker is asked for its load every heartbeat, so a
+    // worker killed with the chunk in hand is noticed in seconds even when its connection does not say so.
+    private ChunkReply Await(Worker worker, Task<ChunkReply> call)
+    {
+        var answer = call.WaitAsync(_config.ChunkTimeout, _clock);
+        var missed = 0;
+        while (Task.WaitAny([answer], Heartbeat) < 0)
+        {
+            missed = Answers(worker) ? 0 : missed + 1;
+            if (missed >= MissedHeartbeats) throw new WorkerLostException($"a worker stopped answering for {MissedHeartbeats} heartbeats with a chunk in hand");
+        }
+        return answer.GetAwaiter().GetResult();
+    }
+
+    private static bool Answers(Worker worker)
+    {
+        try
+        {
+            worker.Grain.Load().WaitAsync(HeartbeatTimeout).GetAwaiter().GetResult();
+            return true;
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            return false;
+        }
+    }
+
+    /// <summary>
+    /// The least busy worker, relative to its bridges, that has not failed, among those this request has tried least often
+    /// (at most <see cref="AttemptsPerWorker"/> times each).
+    /// </summary>
+    private Worker? Pick(Dictionary<Worker, int> attempts)
     {
         lock (_gate)
         {
-            var worker = _workers.Where(w => !w.Failed && !tried.Contains(w)).MinBy(w => (double)w.Busy / w.Capacity);
+            var worker = _workers.Where(w => !w.Failed && attempts.GetValueOrDefault(w) < AttemptsPerWorker)
+                .MinBy(w => (attempts.GetValueOrDefault(w), (double)w.Busy / w.Capacity));
             if (worker is null) return null;
             worker.Busy++;
-            tried.Add(worker);
+            attempts[worker] = attempts.GetValueOrDefault(worker) + 1;
             return worker;
         }
     }
@@ -197,6 +246,8 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         }
         _host.Dispose();
     }
+
+    private sealed class WorkerLostException(string message) : Exception(message);
 
     private sealed class Worker(string silo, IChunkWorker grain, int capacity)
     {

@@ -13,9 +13,11 @@ namespace QuantumRayTracing.Engines;
 /// <param name="Workers">Local Node bridges a Q# engine starts when <paramref name="Pool"/> is null.</param>
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model of the quantum engines; null for the ideal machine.</param>
-/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones. A cluster's also renders a seeded engine's image parts (<see cref="Rendering.RemoteParts"/>).</param>
+/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts: the gate-level oracle by default.</param>
 /// <param name="NoiseAware">The passes plan with the noisy runs' success (analytic engine under noise), not the ideal one.</param>
+/// <param name="ImagePartsOnCluster">A seeded engine renders its image parts on the workers of <paramref name="Pool"/>'s cluster
+/// (<see cref="Rendering.RemoteParts"/>; `render --cluster`); otherwise here, whatever pool its Q# counterparts are given.</param>
 public sealed record EngineSetup(
     EngineKind Kind,
     QSearchOptions Search,
@@ -24,7 +26,8 @@ public sealed record EngineSetup(
     NoiseModel? Noise = null,
     BridgePool? Pool = null,
     NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
-    bool NoiseAware = false)
+    bool NoiseAware = false,
+    bool ImagePartsOnCluster = false)
 {
     public EngineSetup(EngineKind kind) : this(kind, new QSearchOptions()) { }
 

@@ -21,6 +21,9 @@ namespace QuantumRayTracing.Rendering;
 /// </remarks>
 public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakBytes, TimeSpan Time)
 {
+    /// <summary>A cluster's workers render the image (`render --cluster`): the time is this machine's alone, the memory an upper bound (the tiles' work is the workers').</summary>
+    public bool ImageOnCluster { get; init; }
+
     /// <summary>Renders from this many pixels (1024x1024) on are forecast first.</summary>
     public const long LargePixels = 1L << 20;
 
@@ -55,7 +58,10 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
         var pixels = (long)options.Width * options.Height;
         var time = largeTime + TimeSpan.FromSeconds(perPixel * (pixels - largePixels));
         var raysPerPixel = rays / largePixels;
-        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * TiledRender.MostTracedPixels(options.LatticeLevels)) + BytesPerPixel * pixels, time);
+        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * TiledRender.MostTracedPixels(options.LatticeLevels)) + BytesPerPixel * pixels, time)
+        {
+            ImageOnCluster = settings.EngineSetup.ImagePartsOnCluster,
+        };
     }
 
     private static (TimeSpan Time, long Rays) Timed(RenderRunSettings settings, RenderOptions options)
@@ -68,7 +74,8 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
     // The render and its classical references at the calibration size; the render's rays.
     private static long Calibrate(RenderRunSettings settings, RenderOptions small)
     {
-        var rays = Renderer.Render(settings.Scene, settings.EngineSetup, small).Total.Rays;
+        // Timed here even when a cluster's workers will render the image: a small render there times the trip, not the work.
+        var rays = Renderer.Render(settings.Scene, settings.EngineSetup with { ImagePartsOnCluster = false }, small).Total.Rays;
         var classical = new EngineSetup(EngineKind.Classical);
         Renderer.Render(settings.Scene, classical, RenderDefaults.Reference(small));
         if (settings.WithConverged) Renderer.Render(settings.Scene, classical, RenderDefaults.Converged(small, Math.Max(1, settings.ReferenceSamples)));

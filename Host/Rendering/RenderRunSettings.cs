@@ -20,7 +20,7 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="Workers">Local Node bridges a Q# engine starts when <paramref name="Pool"/> is null; null: one per core.</param>
 /// <param name="MaxQubits">The widest circuit a Q# engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model the quantum engines run under; null for the ideal machine.</param>
-/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones. A cluster's also renders a seeded engine's image parts.</param>
+/// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones. A cluster's also renders a seeded engine's image parts (`render --cluster`).</param>
 /// <param name="MaxMemory">The peak memory a large render may be forecast to need (<see cref="RenderForecast"/>); null: what the machine has available.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts.</param>
 /// <param name="NoiseAware">The passes plan with the noisy runs' success probabilities (analytic engine).</param>
@@ -54,7 +54,7 @@ public sealed record RenderRunSettings(
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>The engine as <see cref="Renderer"/> builds it.</summary>
-    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, NoiseAware);
+    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, NoiseAware, ImagePartsOnCluster: Engine.IsSeedable && Pool?.Remote is not null);
 
     /// <summary>The noise model as this run's results name it.</summary>
     public string NoiseDescription => EngineFactory.NoiseDescription(Engine, NoiseModel,

@@ -40,7 +40,7 @@ public static class RenderRunView
     /// <summary>A large render's forecast, printed before it starts.</summary>
     public static void PrintForecast(RenderForecast forecast) =>
         AnsiConsole.WriteLine(FormattableString.Invariant(
-            $"forecast: peak memory about {RenderForecast.Bytes(forecast.PeakBytes)} ({forecast.RaysPerPixel:F2} rays per pixel), at most about {forecast.Time.TotalSeconds:F0} s with the references (a line through calibration renders at {RenderForecast.CalibrationSide / 2}x{RenderForecast.CalibrationSide / 2} and {RenderForecast.CalibrationSide}x{RenderForecast.CalibrationSide}; larger renders spend less per pixel)"));
+            $"forecast: peak memory about {RenderForecast.Bytes(forecast.PeakBytes)} ({forecast.RaysPerPixel:F2} rays per pixel), at most about {forecast.Time.TotalSeconds:F0} s with the references{(forecast.ImageOnCluster ? " if this machine rendered it alone" : "")} (a line through calibration renders at {RenderForecast.CalibrationSide / 2}x{RenderForecast.CalibrationSide / 2} and {RenderForecast.CalibrationSide}x{RenderForecast.CalibrationSide} here; larger renders spend less per pixel)"));
 
     /// <summary>Where the run went, the cost per pass, the error against the references and the files written.</summary>
     public static void Print(RenderRunSettings settings, RenderRunResult run)

@@ -73,11 +73,20 @@ public static class TiledRender
             // Parts rendered elsewhere report only when they are done.
             var done = 0;
             progress?.Report($"{tiles.Count} tiles", 0);
-            Parallel.ForEach(tiles, new ParallelOptions { MaxDegreeOfParallelism = parts.Concurrency }, tile =>
+            try
             {
-                Run(tile, null);
-                progress?.Report($"{tiles.Count} tiles", (double)Interlocked.Increment(ref done) / tiles.Count);
-            });
+                Parallel.ForEach(tiles, new ParallelOptions { MaxDegreeOfParallelism = parts.Concurrency }, tile =>
+                {
+                    Run(tile, null);
+                    progress?.Report($"{tiles.Count} tiles", (double)Interlocked.Increment(ref done) / tiles.Count);
+                });
+            }
+            catch (AggregateException e)
+            {
+                // The first failure as itself (a cluster's, a worker's request error), as a render one part at a time raises it.
+                System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(e.InnerExceptions[0]).Throw();
+                throw;
+            }
         }
         // Every tile runs the same passes in the same order; each pass's metrics are summed over the tiles, in tile order.
         progress?.Report($"{tiles.Count} tiles", 1);

@@ -86,18 +86,7 @@ public static class FullStateBenchmark
     }
 
     /// <summary>The 1-minute load average (Linux /proc/loadavg), or NaN: what else the machine was running.</summary>
-    public static double LoadAverage()
-    {
-        try
-        {
-            var first = File.ReadAllText("/proc/loadavg").Split(' ')[0];
-            return double.Parse(first, System.Globalization.CultureInfo.InvariantCulture);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException)
-        {
-            return double.NaN;
-        }
-    }
+    public static double LoadAverage() => MachineLoad.OneMinute() ?? double.NaN;
 
     /// <summary>
     /// The fullstate engine as first built: a plain Grover engine, so QSearch advances in lock-step rounds of

@@ -36,7 +36,7 @@ public static partial class ScaleExperiment
         var scratch = Directory.CreateTempSubdirectory("qrt-scale-");
         try
         {
-            var loadBefore = LoadAverage();
+            var loadBefore = MachineLoad.OneMinute();
             var rows = new List<Row>();
             foreach (var size in settings.Sizes)
                 foreach (var engine in settings.Engines)
@@ -44,7 +44,7 @@ public static partial class ScaleExperiment
                     progress(Invariant($"scale: {engine.Name} at {size}x{size}"));
                     rows.Add(Measure(settings, engine, size, scratch.FullName));
                 }
-            return Write(settings, rows, (loadBefore, LoadAverage()));
+            return Write(settings, rows, (loadBefore, MachineLoad.OneMinute()));
         }
         finally
         {
@@ -76,10 +76,6 @@ public static partial class ScaleExperiment
 
     [GeneratedRegex(@"forecast: peak memory about ([0-9.]+ [MG]B) .*?at most about ([0-9]+) s")]
     private static partial Regex ForecastLine();
-
-    // The one-minute load average (Linux), to say how busy the machine was while it was timed; null elsewhere.
-    private static double? LoadAverage() =>
-        File.Exists("/proc/loadavg") && double.TryParse(File.ReadAllText("/proc/loadavg").Split(' ')[0], NumberStyles.Float, CultureInfo.InvariantCulture, out var load) ? load : null;
 
     private static Report Write(ScaleSettings settings, IReadOnlyList<Row> rows, (double? Before, double? After) load)
     {
