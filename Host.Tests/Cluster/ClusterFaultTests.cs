@@ -69,6 +69,28 @@ public sealed class ClusterFaultTests
         Assert.Equal(Requests, good.Calls);
     }
 
+    /// <summary>
+    /// A worker that freezes with a chunk in hand, its connection open, is noticed by its missed heartbeats, not the chunk time
+    /// limit: with a limit of ten minutes on the real clock, every request is answered within two, once each.
+    /// </summary>
+    [Fact]
+    public async Task AFrozenWorkerIsNoticedByItsHeartbeats()
+    {
+        var (frozen, good) = (new FrozenExecutor(), new EchoExecutor());
+        using var cluster = new TestCluster(600, frozen, good);
+        using var transport = ClusterTransport.Connect(ClusterConfig.Load(cluster.ConfigPath), heartbeat: TimeSpan.FromMilliseconds(200));
+        using var pool = new BridgePool(transport, transport.Capacity);
+        var answers = new string?[Requests];
+        var run = Task.Run(() => pool.ForEach(Enumerable.Range(0, Requests).ToArray(), (k, bridge) => answers[k] = Assert.Single(bridge.Run($"Request({k})"))));
+
+        await run.WaitAsync(TimeSpan.FromMinutes(2));
+
+        Assert.Equal(Enumerable.Range(0, Requests).Select(k => $"Request({k})"), answers);
+        Assert.True(frozen.Calls >= 1, "the frozen worker was never given a chunk, so the test proved nothing");
+        Assert.Equal(Requests, good.Calls);
+        Assert.True(transport.Retries >= 1, "no chunk was sent again, so the test proved nothing");
+    }
+
     [Fact]
     public void EveryWorkerHangingIsAClusterError()
     {

@@ -155,3 +155,30 @@ public sealed class DyingExecutor : IChunkExecutor
         throw new InvalidOperationException("unreachable");
     }
 }
+
+/// <summary>
+/// On its first request freezes, as a process stopped with SIGSTOP would: the request is never answered and the worker's load,
+/// which a heartbeat asks for, no longer comes either (for a minute, long past any test). Its connection stays open.
+/// </summary>
+public sealed class FrozenExecutor : IChunkExecutor
+{
+    private int _calls;
+
+    public int Calls => Volatile.Read(ref _calls);
+
+    public int Capacity
+    {
+        get
+        {
+            if (Calls > 0) Thread.Sleep(TimeSpan.FromMinutes(1));
+            return 2;
+        }
+    }
+
+    public async Task<JsonNode> Execute(JsonObject request)
+    {
+        Interlocked.Increment(ref _calls);
+        await Task.Delay(Timeout.Infinite);
+        throw new InvalidOperationException("unreachable");
+    }
+}

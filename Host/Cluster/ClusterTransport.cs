@@ -31,8 +31,10 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     private readonly Lock _gate = new();
     private int _retries;
 
-    private ClusterTransport(IHost host, ClusterConfig config, Worker[] workers, TimeProvider clock) =>
-        (_host, _config, _workers, _clock) = (host, config, workers, clock);
+    private readonly TimeSpan _heartbeat;
+
+    private ClusterTransport(IHost host, ClusterConfig config, Worker[] workers, TimeProvider clock, TimeSpan heartbeat) =>
+        (_host, _config, _workers, _clock, _heartbeat) = (host, config, workers, clock, heartbeat);
 
     /// <summary>Bridges over all workers.</summary>
     public int Capacity => _workers.Sum(w => w.Capacity);
@@ -59,9 +61,10 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
 
     /// <summary>
     /// Connects to the cluster and asks each worker how many bridges it has; none reachable is a <see cref="ClusterException"/>.
-    /// <paramref name="chunkClock"/> measures the chunk time limit (default: the system's).
+    /// <paramref name="chunkClock"/> measures the chunk time limit (default: the system's); <paramref name="heartbeat"/> is
+    /// <see cref="DefaultHeartbeat"/> unless given.
     /// </summary>
-    public static ClusterTransport Connect(ClusterConfig config, TimeProvider? chunkClock = null)
+    public static ClusterTransport Connect(ClusterConfig config, TimeProvider? chunkClock = null, TimeSpan? heartbeat = null)
     {
         Exception? refused = null;
         var clock = System.Diagnostics.Stopwatch.StartNew();
@@ -117,7 +120,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
                 }
             }
             if (reachable.Count == 0) throw new ClusterException($"{config.Path}: the cluster '{config.ClusterId}' at {where} has no worker that answers");
-            return new ClusterTransport(host, config, [.. reachable], chunkClock ?? TimeProvider.System);
+            return new ClusterTransport(host, config, [.. reachable], chunkClock ?? TimeProvider.System, heartbeat ?? DefaultHeartbeat);
         }
         catch (Exception e) when (e is not ClusterException and not OutOfMemoryException)
         {
@@ -132,11 +135,8 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         }
     }
 
-    /// <summary>How often a render asks a worker holding one of its chunks whether it still answers.</summary>
-    public static readonly TimeSpan Heartbeat = TimeSpan.FromSeconds(5);
-
-    /// <summary>How long a worker may take to answer a heartbeat.</summary>
-    public static readonly TimeSpan HeartbeatTimeout = TimeSpan.FromSeconds(10);
+    /// <summary>How often a render asks a worker holding one of its chunks whether it still answers; it may take twice as long to answer.</summary>
+    public static readonly TimeSpan DefaultHeartbeat = TimeSpan.FromSeconds(5);
 
     /// <summary>Heartbeats missed in a row after which a worker holding a chunk counts as lost (one missed may be a busy moment).</summary>
     public const int MissedHeartbeats = 3;
@@ -186,7 +186,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     {
         var answer = call.WaitAsync(_config.ChunkTimeout, _clock);
         var missed = 0;
-        while (Task.WaitAny([answer], Heartbeat) < 0)
+        while (Task.WaitAny([answer], _heartbeat) < 0)
         {
             missed = Answers(worker) ? 0 : missed + 1;
             if (missed >= MissedHeartbeats) throw new WorkerLostException($"a worker stopped answering for {MissedHeartbeats} heartbeats with a chunk in hand");
@@ -194,11 +194,11 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
         return answer.GetAwaiter().GetResult();
     }
 
-    private static bool Answers(Worker worker)
+    private bool Answers(Worker worker)
     {
         try
         {
-            worker.Grain.Load().WaitAsync(HeartbeatTimeout).GetAwaiter().GetResult();
+            worker.Grain.Load().WaitAsync(2 * _heartbeat).GetAwaiter().GetResult();
             return true;
         }
         catch (Exception e) when (e is not OutOfMemoryException)
