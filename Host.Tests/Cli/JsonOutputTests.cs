@@ -218,6 +218,20 @@ public sealed partial class JsonOutputTests : IDisposable
         Assert.Equal(cluster.ConfigPath, (string?)json["options"]!["cluster"]);
     }
 
+    /// <summary>`render --cluster` on a seeded engine sends its image to the workers: it says so, and writes the image this machine renders alone.</summary>
+    [Fact]
+    public void ASeededRenderOnTheClusterNamesItAndIsTheLocalImage()
+    {
+        using var cluster = new TestCluster(120, new WorkerExecutor(new EchoExecutor()), new WorkerExecutor(new EchoExecutor()));
+        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
+        var (output, json) = Run("render", scene, "--engine", "analytic", "--size", "24", "--seed", "4", "--cluster", cluster.ConfigPath, "-o", "c.png");
+        Run("render", scene, "--engine", "analytic", "--size", "24", "--seed", "4", "-o", "l.png");
+
+        AssertRanOn(Match(output, @"^analytic ran on (?<where>.+)$")["where"].Value, json, RunPlace.ClusterKind, bridges: 4, workers: 2);
+        Assert.True(cluster.Served(0) + cluster.Served(1) >= 1, "no worker rendered a part");
+        Assert.Equal(File.ReadAllBytes(_scratch.File("l.png")), File.ReadAllBytes(_scratch.File("c.png")));
+    }
+
     /// <summary>
     /// The JSON place is the printed one: its description is the printed text, and its kind, bridges and workers are
     /// those the text names, and those the run had (<paramref name="kind"/>, <paramref name="bridges"/>, <paramref name="workers"/>).
