@@ -59,6 +59,7 @@ public static class NoiseReport
         (SearchModel.Ideal, "ideal formula"),
         (SearchModel.ShareOne, "s = 1"),
         (SearchModel.ShareThird, "s = 1/3"),
+        (SearchModel.ShareTwoThirds, "s = 2/3"),
         (SearchModel.WithoutPreparation, "without F₀"),
         (SearchModel.Ungraded, "ungraded count"),
     ];
@@ -82,8 +83,14 @@ public static class NoiseReport
             "  channels on the index register (below); Φ is the share of the ideal run's excess over t / 2^n they keep, (P − t/2^n) / (P₀ − t/2^n),",
             "  P simulated with them. F₀ = Π over the preparation's H and the final measurement's locations and Paulis P of (1 − p_P)^h, h the graded harm.",
             $"  One number is fitted: an error whose effect the grading cannot follow costs {F(SearchChannels.FittedWholeHarm, "0.00")} of a whole harm (the fit below).",
-            "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out):",
-            "  Φ = (1 − p)^(s · L) over its closed-form locations L (`NoiseLocations`) with s = 2/3, as before."));
+            "- Lookup oracle (`--noise-oracle lookup`; intersections computed classically beforehand, their cost left out): no share s is",
+            "  counted. Its circuit is small (n index qubits and the n − 2 auxiliaries of the Toffoli ladder, 10 qubits at N = 64), so it is",
+            "  evolved exactly as a density matrix (`LookupCircuitDensity`): every gate of `MeasureGroverSearch` in order, each followed by",
+            "  the Pauli channel on every qubit it touches, the measurement's X or Y flipping the read bit; P(marked) read after every",
+            "  iteration. Φ = (P − t/2^n) / (P₀ − t/2^n), so the analytic engine samples exactly the evolved P(marked). Which indices are marked",
+            "  changes the circuit only by its X toggles; the engine evolves one typical set per N and t (drawn once with a fixed seed) and",
+            "  keeps it per noise model (`LookupSearchModel`), so a render evolves each marked count once. N above 64 or not a power of two:",
+            "  Φ = (1 − p)^(s · L) over the closed-form locations L (`NoiseLocations`) with s = 2/3."));
         report.Text(Lines(
             "**Counting rule** (Quantum/noise-exposure.mjs). The circuit's state is followed classically as branches: each qubit's value as a",
             "truth table over the qubits put into superposition (the index register), X, CX and CCX acting on the tables, diagonal gates leaving them.",
@@ -131,17 +138,21 @@ public static class NoiseReport
             "(two-sided false-failure 1e-6 per comparison). The negative controls, each a wrong variant, must fall outside the same region",
             "on every row where they differ from the model by more than both regions together (bold: rejected there). Beside them, on the",
             "gate-level rows, the graded harms taken as independent (Φ = F₀ · F^r, F from the harm shared equally by the traced iterations):",
-            "the model before the channels."));
+            "the model before the channels; on the lookup rows the evolution on the row's own marked set rather than the typical one the model",
+            "takes (how much the set moves it). s = 2/3 is the lookup model before its circuit was evolved; on lookup rows \"without F₀\" is",
+            "the evolution with a noiseless preparation and measurement, and \"ungraded count\" is s = 2/3 again. Harm-weighted L on lookup",
+            "rows is the evolution's first-order harm, −ln Φ / p at p = 1e-6."));
         var check = new TextTable("model-check", ["oracle", "N", "t", "r", "p", "L", "harm-weighted L", "observed", "model", "gap", "gap/σ", "within δ + zσ",
-            "independent harms", .. NegativeControls.Select(c => c.Name)]);
+            "independent harms (lookup: own set)", .. NegativeControls.Select(c => c.Name)]);
         foreach (var r in rows)
         {
             var predicted = r.Predicted(model);
             var gap = r.Observed - predicted;
-            var harm = r.Exposure is { } e ? e.Run(r.Iterations).HarmWeight : 2.0 / 3 * r.Locations;
+            var harm = r.Exposure is { } e ? e.Run(r.Iterations).HarmWeight
+                : LookupSearchModel.Evolves(r.Count) ? LookupSearchModel.HarmWeight(r.Count, r.Marked, r.Iterations) : 2.0 / 3 * r.Locations;
             check.Row([r.Oracle, I(r.Count), I(r.Marked), I(r.Iterations), Rate(r.Noise.PerGate), F(r.Locations, "0"), F(harm, "0"), F(r.Observed, "0.000"), F(predicted, "0.000"),
                 F(gap, "+0.000;-0.000;0.000"), F(gap / r.StandardError(model), "+0.0;-0.0;0.0"), r.Accepts(model, tolerance, z) ? "yes" : "**no**",
-                r.Exposure is null ? "" : F(r.Predicted(SearchModel.IndependentHarms), "0.000"),
+                r.Exposure is null ? (r.OwnSetProbability is { } own ? $"own set: {F(own, "0.000")}" : "") : F(r.Predicted(SearchModel.IndependentHarms), "0.000"),
                 .. NegativeControls.Select(c => r.Separates(c.Model, tolerance, z) && !r.Accepts(c.Model, tolerance, z) ? $"**{F(r.Predicted(c.Model), "0.000")}**" : F(r.Predicted(c.Model), "0.000"))]);
         }
         report.Table(check);

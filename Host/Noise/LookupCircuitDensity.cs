@@ -1,0 +1,353 @@
+using System.Numerics;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Noise;
+
+/// <summary>
+/// The lookup oracle's Grover run (<c>MeasureGroverSearch</c>) evolved exactly as a density matrix under a Pauli channel after
+/// every gate on each qubit it touches and before every measurement: the n index qubits and the n − 2 auxiliaries of the
+/// Toffoli ladder (<c>ApplyPhaseToAllOnes</c>), gate for gate as the Q# operations apply them. Every gate of the circuit and
+/// every Pauli is real, so the matrix is. X gates are kept as a relabelling of the basis (a Pauli channel is unchanged by it),
+/// so they cost no pass over the matrix. Defined for N a power of two (the preparation is H on every index qubit) whose
+/// circuit fits <see cref="MaxQubits"/> qubits: N ≤ 64.
+/// </summary>
+public static class LookupCircuitDensity
+{
+    /// <summary>The widest circuit evolved: 10 qubits, a matrix of 2^20 entries (8 MB).</summary>
+    public const int MaxQubits = 10;
+
+    /// <summary>Qubits of the run over <paramref name="count"/> indices: the index register and the ladder's auxiliaries.</summary>
+    public static int Qubits(int count)
+    {
+        var n = SearchRegisters.For(count).IndexQubits;
+        return n + Auxiliaries(n);
+    }
+
+    /// <summary>Whether the run over <paramref name="count"/> indices is evolved here: N a power of two of at most <see cref="MaxQubits"/> qubits.</summary>
+    public static bool Evolves(int count) => count >= 1 && BitOperations.IsPow2(count) && Qubits(count) <= MaxQubits;
+
+    /// <summary>
+    /// P(the measured index is marked) after r = 0 … <paramref name="maxIterations"/> iterations over <paramref name="marked"/>
+    /// under <paramref name="rates"/>; with <paramref name="noisyOutside"/> false the preparation and the measurement are noiseless.
+    /// </summary>
+    public static double[] MarkedProbabilities(MarkedSet marked, int maxIterations, CircuitRates rates, bool noisyOutside = true)
+    {
+        ArgumentNullException.ThrowIfNull(marked);
+        ArgumentOutOfRangeException.ThrowIfNegative(maxIterations);
+        if (!Evolves(marked.Count)) throw new ArgumentOutOfRangeException(nameof(marked), marked.Count, $"the lookup circuit is evolved for N a power of two up to {MaxQubits} qubits");
+        var run = new Run(marked, rates);
+        var outside = noisyOutside ? rates : CircuitRates.Noiseless;
+        var probabilities = new double[maxIterations + 1];
+        for (var q = 0; q < run.N; q++) run.H(q, outside);
+        probabilities[0] = run.ReadMarked(outside);
+        for (var r = 1; r <= maxIterations; r++)
+        {
+            run.Oracle();
+            run.Diffusion();
+            probabilities[r] = run.ReadMarked(outside);
+        }
+        return probabilities;
+    }
+
+    /// <summary>Noise locations the evolution applied a channel at, per run of <paramref name="iterations"/>: the closed form's count (<see cref="NoiseLocations"/>), for tests.</summary>
+    public static long Locations(MarkedSet marked, int iterations)
+    {
+        var run = new Run(marked, CircuitRates.Noiseless, countOnly: true);
+        for (var q = 0; q < run.N; q++) run.H(q, CircuitRates.Noiseless);
+        for (var r = 0; r < iterations; r++)
+        {
+            run.Oracle();
+            run.Diffusion();
+        }
+        return run.Channels + run.N;
+    }
+
+    private static int Auxiliaries(int n) => n > 2 ? n - 2 : 0;
+
+    private sealed class Run
+    {
+        private readonly int _dimension;
+        private readonly double[] _rho;
+        private readonly int[] _oracleSet;
+        private readonly MarkedSet _marked;
+        private readonly CircuitRates _rates;
+        private readonly bool _countOnly;
+        // X gates not yet applied to the matrix: logical basis state = stored state ^ _frame.
+        private int _frame;
+
+        public Run(MarkedSet marked, CircuitRates rates, bool countOnly = false)
+        {
+            _marked = marked;
+            _rates = rates;
+            _countOnly = countOnly;
+            N = SearchRegisters.For(marked.Count).IndexQubits;
+            _dimension = 1 << (N + Auxiliaries(N));
+            _rho = countOnly ? [] : new double[_dimension * _dimension];
+            if (!countOnly) _rho[0] = 1;
+            // More than half marked: the complement is marked instead, a global phase, as the Q# operation does.
+            _oracleSet = 2 * marked.MarkedCount > marked.Count
+                ? Enumerable.Range(0, marked.Count).Where(i => !marked.Contains(i)).ToArray()
+                : marked.Indices.ToArray();
+        }
+
+        /// <summary>Index qubits n.</summary>
+        public int N { get; }
+
+        /// <summary>Channels applied so far (one per qubit per gate).</summary>
+        public long Channels { get; private set; }
+
+        private int Auxiliary(int k) => N + k;
+
+        public void Oracle()
+        {
+            if (_oracleSet.Length == 0) return;
+            var allOnes = (1 << N) - 1;
+            var previous = 0;
+            foreach (var m in _oracleSet)
+            {
+                var flips = allOnes ^ m;
+                Toggle(previous ^ flips);
+                PhaseToAllOnes();
+                previous = flips;
+            }
+            Toggle(previous);
+        }
+
+        public void Diffusion()
+        {
+            for (var q = 0; q < N; q++) H(q, _rates);
+            Toggle((1 << N) - 1);
+            PhaseToAllOnes();
+            Toggle((1 << N) - 1);
+            for (var q = 0; q < N; q++) H(q, _rates);
+        }
+
+        // X on every index qubit whose bit is set, each followed by its channel (the channels in one pass).
+        private void Toggle(int bits)
+        {
+            var qubits = Enumerable.Range(0, N).Where(q => (bits >> q & 1) == 1).ToArray();
+            _frame ^= bits;
+            Local(qubits, static (x, _) => (x, 1), _rates.OneQubit);
+        }
+
+        private void PhaseToAllOnes()
+        {
+            if (N == 1)
+            {
+                Z(0);
+            }
+            else if (N == 2)
+            {
+                CZ(0, 1);
+            }
+            else if (N > 2)
+            {
+                Toffoli(0, 1, Auxiliary(0));
+                for (var k = 2; k <= N - 2; k++) Toffoli(Auxiliary(k - 2), k, Auxiliary(k - 1));
+                CZ(Auxiliary(N - 3), N - 1);
+                for (var k = N - 2; k >= 2; k--) Toffoli(Auxiliary(k - 2), k, Auxiliary(k - 1));
+                Toffoli(0, 1, Auxiliary(0));
+            }
+        }
+
+        private void Z(int a) => Local([a], Sign(1 << a), _rates.OneQubit);
+
+        private void CZ(int a, int b) => Local([a, b], Sign((1 << a) | (1 << b)), _rates.TwoQubit);
+
+        private void Toffoli(int control1, int control2, int target)
+        {
+            Channels += 3;
+            if (_countOnly) return;
+            // The target flips where both controls read 1 through the pending X's: swap those rows with their partners, then the columns.
+            var (c1, c2, t) = (1 << control1, 1 << control2, 1 << target);
+            var pairs = Enumerable.Range(0, _dimension).Where(s => (s & t) == 0 && ((s ^ _frame) & (c1 | c2)) == (c1 | c2)).ToArray();
+            var temp = new double[_dimension];
+            foreach (var s in pairs)
+            {
+                var a = _rho.AsSpan(s * _dimension, _dimension);
+                var b = _rho.AsSpan((s | t) * _dimension, _dimension);
+                a.CopyTo(temp);
+                b.CopyTo(a);
+                temp.CopyTo(b);
+            }
+            var (dimension, rho) = (_dimension, _rho);
+            Parallel.For(0, dimension, r =>
+            {
+                var row = rho.AsSpan(r * dimension, dimension);
+                foreach (var s in pairs) (row[s], row[s | t]) = (row[s | t], row[s]);
+            });
+            var noise = _rates.TwoQubit;
+            foreach (var q in new[] { control1, control2, target })
+                Blocks(q, new BlockMap(BlockKind.Channel, noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py));
+        }
+
+        // D on the local bits of the given mask: −1 where every one of them reads 1 through the pending X's.
+        private LocalMap Sign(int mask)
+        {
+            var frame = _frame;
+            return (x, qubits) =>
+            {
+                var stored = 0;
+                for (var k = 0; k < qubits.Length; k++) stored |= (x >> k & 1) << qubits[k];
+                return (x, ((stored ^ frame) & mask) == mask ? -1 : 1);
+            };
+        }
+
+        /// <summary>The local basis state a gate reads into local state x, and the sign it puts on x: a permutation with signs.</summary>
+        private delegate (int Source, int Sign) LocalMap(int x, int[] qubits);
+
+        /// <summary>
+        /// A gate on <paramref name="qubits"/> (the diagonal gates and the X toggles; a permutation with signs of their local basis states, <paramref name="gate"/>) and
+        /// the channel <paramref name="noise"/> on each of them, in one pass over the matrix's blocks of those qubits: each block
+        /// B[x, y] becomes s(x) s(y) B[π(x), π(y)], then each qubit's channel acts on it.
+        /// </summary>
+        private void Local(int[] qubits, LocalMap gate, NoiseModel noise)
+        {
+            Channels += qubits.Length;
+            if (_countOnly || qubits.Length == 0) return;
+            var size = 1 << qubits.Length;
+            var (source, signs, offsets) = (new int[size], new double[size], new int[size]);
+            var mask = 0;
+            foreach (var q in qubits) mask |= 1 << q;
+            for (var x = 0; x < size; x++)
+            {
+                (source[x], var sign) = gate(x, qubits);
+                signs[x] = sign;
+                for (var k = 0; k < qubits.Length; k++) offsets[x] |= (x >> k & 1) << qubits[k];
+            }
+            var bases = Enumerable.Range(0, _dimension).Where(s => (s & mask) == 0).ToArray();
+            var (dimension, rho, count) = (_dimension, _rho, qubits.Length);
+            var (flip, keep, swap) = (noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py);
+            var noisy = noise.PerGate > 0;
+            void Row(int rowBase)
+            {
+                var block = new double[size * size];
+                var read = new double[size * size];
+                foreach (var columnBase in bases)
+                {
+                    for (var x = 0; x < size; x++)
+                        for (var y = 0; y < size; y++)
+                            read[x * size + y] = rho[(rowBase + offsets[x]) * dimension + columnBase + offsets[y]];
+                    for (var x = 0; x < size; x++)
+                        for (var y = 0; y < size; y++)
+                            block[x * size + y] = signs[x] * signs[y] * read[source[x] * size + source[y]];
+                    if (noisy)
+                    {
+                        for (var k = 0; k < count; k++)
+                        {
+                            var bit = 1 << k;
+                            for (var x = 0; x < size; x++)
+                            {
+                                if ((x & bit) != 0) continue;
+                                for (var y = 0; y < size; y++)
+                                {
+                                    if ((y & bit) != 0) continue;
+                                    ref var a = ref block[x * size + y];
+                                    ref var b = ref block[x * size + (y | bit)];
+                                    ref var c = ref block[(x | bit) * size + y];
+                                    ref var d = ref block[(x | bit) * size + (y | bit)];
+                                    (a, d, b, c) = ((1 - flip) * a + flip * d, (1 - flip) * d + flip * a, keep * b + swap * c, keep * c + swap * b);
+                                }
+                            }
+                        }
+                    }
+                    for (var x = 0; x < size; x++)
+                        for (var y = 0; y < size; y++)
+                            rho[(rowBase + offsets[x]) * dimension + columnBase + offsets[y]] = block[x * size + y];
+                }
+            }
+            if (dimension >= 256) Parallel.ForEach(bases, Row);
+            else foreach (var rowBase in bases) Row(rowBase);
+        }
+
+        /// <summary>H on index qubit <paramref name="q"/> (a pending X applied first), then its channel at <paramref name="rates"/>' one-qubit rate.</summary>
+        public void H(int q, CircuitRates rates)
+        {
+            if (!_countOnly)
+            {
+                if ((_frame >> q & 1) == 1)
+                {
+                    Blocks(q, new BlockMap(BlockKind.X));
+                    _frame ^= 1 << q;
+                }
+                // H ρ H on each block: a' = (a + b + c + d) / 2, b' = (a − b + c − d) / 2, c' = (a + b − c − d) / 2, d' = (a − b − c + d) / 2; then the channel.
+                var noise = rates.OneQubit;
+                Blocks(q, new BlockMap(BlockKind.H, noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py));
+            }
+            Channels++;
+        }
+
+        private enum BlockKind { X, H, Channel }
+
+        /// <summary>
+        /// One map of 2×2 blocks: X applied to the matrix, or the Pauli channel (after H, for H) ρ → (1 − p) ρ + px XρX + py YρY + pz ZρZ:
+        /// on a block [[a, b], [c, d]] X swaps a, d and b, c, Y swaps them and negates b, c, Z negates b, c; so the diagonal pair
+        /// mixes at <paramref name="Flip"/> = px + py and the off-diagonal pair is kept at <paramref name="Keep"/> = 1 − p − pz and
+        /// exchanged at <paramref name="Swap"/> = px − py. A pending X leaves the channel as it is (it commutes up to a sign that cancels).
+        /// </summary>
+        private readonly record struct BlockMap(BlockKind Kind, double Flip = 0, double Keep = 0, double Swap = 0);
+
+        // Applies map to every 2×2 block of the matrix over qubit q (rows r0, r0 | bit; columns c0, c0 | bit), rows in parallel.
+        private void Blocks(int q, BlockMap map)
+        {
+            var bit = 1 << q;
+            var (dimension, rho) = (_dimension, _rho);
+            void Rows(int r0)
+            {
+                if ((r0 & bit) != 0) return;
+                var row0 = r0 * dimension;
+                var row1 = (r0 | bit) * dimension;
+                for (var start = 0; start < dimension; start += 2 * bit)
+                {
+                    for (var c0 = start; c0 < start + bit; c0++)
+                    {
+                        ref var a = ref rho[row0 + c0];
+                        ref var b = ref rho[row0 + c0 + bit];
+                        ref var c = ref rho[row1 + c0];
+                        ref var d = ref rho[row1 + c0 + bit];
+                        if (map.Kind == BlockKind.X)
+                        {
+                            (a, b, c, d) = (d, c, b, a);
+                            continue;
+                        }
+                        if (map.Kind == BlockKind.H) (a, b, c, d) = ((a + b + c + d) / 2, (a - b + c - d) / 2, (a + b - c - d) / 2, (a - b - c + d) / 2);
+                        (a, d, b, c) = ((1 - map.Flip) * a + map.Flip * d, (1 - map.Flip) * d + map.Flip * a, map.Keep * b + map.Swap * c, map.Keep * c + map.Swap * b);
+                    }
+                }
+            }
+            if (dimension >= 256) Parallel.For(0, dimension, Rows);
+            else for (var r0 = 0; r0 < dimension; r0++) Rows(r0);
+        }
+
+        /// <summary>
+        /// P(reading a marked index): the index register's distribution (the auxiliaries summed out), each bit flipped by the
+        /// measurement's X or Y at <paramref name="rates"/>' measurement rate and then by the readout error.
+        /// </summary>
+        public double ReadMarked(CircuitRates rates)
+        {
+            Channels += N;
+            var values = 1 << N;
+            var distribution = new double[values];
+            for (var s = 0; s < _dimension; s++) distribution[(s ^ _frame) & (values - 1)] += _rho[s * _dimension + s];
+            var flip = rates.Measurement.Px + rates.Measurement.Py;
+            for (var q = 0; q < N; q++)
+            {
+                // The measurement's flip, then the readout's: a 0 is read as 1 if exactly one of them turns it.
+                var zeroAsOne = (1 - flip) * rates.ReadZeroAsOne + flip * (1 - rates.ReadOneAsZero);
+                var oneAsZero = (1 - flip) * rates.ReadOneAsZero + flip * (1 - rates.ReadZeroAsOne);
+                var read = new double[values];
+                for (var v = 0; v < values; v++)
+                {
+                    var one = (v >> q & 1) == 1;
+                    var turn = one ? oneAsZero : zeroAsOne;
+                    read[v] += (1 - turn) * distribution[v];
+                    read[v ^ (1 << q)] += turn * distribution[v];
+                }
+                distribution = read;
+            }
+            var total = 0.0;
+            foreach (var m in _marked.Indices) total += distribution[m];
+            return total;
+        }
+    }
+}
