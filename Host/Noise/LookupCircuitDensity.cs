@@ -32,21 +32,48 @@ public static class LookupCircuitDensity
     /// </summary>
     public static double[] MarkedProbabilities(MarkedSet marked, int maxIterations, CircuitRates rates, bool noisyOutside = true)
     {
-        ArgumentNullException.ThrowIfNull(marked);
         ArgumentOutOfRangeException.ThrowIfNegative(maxIterations);
-        if (!Evolves(marked.Count)) throw new ArgumentOutOfRangeException(nameof(marked), marked.Count, $"the lookup circuit is evolved for N a power of two up to {MaxQubits} qubits");
-        var run = new Run(marked, rates);
-        var outside = noisyOutside ? rates : CircuitRates.Noiseless;
-        var probabilities = new double[maxIterations + 1];
-        for (var q = 0; q < run.N; q++) run.H(q, outside);
-        probabilities[0] = run.ReadMarked(outside);
-        for (var r = 1; r <= maxIterations; r++)
+        var evolution = new Evolution(marked, rates, noisyOutside);
+        return Enumerable.Range(0, maxIterations + 1).Select(evolution.MarkedProbability).ToArray();
+    }
+
+    /// <summary>
+    /// A run being evolved: P(marked) after each iteration so far, the matrix kept so that a later question about more
+    /// iterations continues it rather than starting again. Safe to ask from several threads.
+    /// </summary>
+    public sealed class Evolution
+    {
+        private readonly Run _run;
+        private readonly CircuitRates _outside;
+        private readonly List<double> _probabilities = [];
+
+        /// <summary>Prepares the run over <paramref name="marked"/>; with <paramref name="noisyOutside"/> false the preparation and measurement are noiseless.</summary>
+        public Evolution(MarkedSet marked, CircuitRates rates, bool noisyOutside = true)
         {
-            run.Oracle();
-            run.Diffusion();
-            probabilities[r] = run.ReadMarked(outside);
+            ArgumentNullException.ThrowIfNull(marked);
+            ArgumentNullException.ThrowIfNull(rates);
+            if (!Evolves(marked.Count)) throw new ArgumentOutOfRangeException(nameof(marked), marked.Count, $"the lookup circuit is evolved for N a power of two up to {MaxQubits} qubits");
+            _run = new Run(marked, rates);
+            _outside = noisyOutside ? rates : CircuitRates.Noiseless;
+            for (var q = 0; q < _run.N; q++) _run.H(q, _outside);
+            _probabilities.Add(_run.ReadMarked(_outside));
         }
-        return probabilities;
+
+        /// <summary>P(marked) after <paramref name="iterations"/> iterations, evolving further when asked past the run so far.</summary>
+        public double MarkedProbability(int iterations)
+        {
+            ArgumentOutOfRangeException.ThrowIfNegative(iterations);
+            lock (_probabilities)
+            {
+                while (_probabilities.Count <= iterations)
+                {
+                    _run.Oracle();
+                    _run.Diffusion();
+                    _probabilities.Add(_run.ReadMarked(_outside));
+                }
+                return _probabilities[iterations];
+            }
+        }
     }
 
     /// <summary>Noise locations the evolution applied a channel at, per run of <paramref name="iterations"/>: the closed form's count (<see cref="NoiseLocations"/>), for tests.</summary>
@@ -122,12 +149,12 @@ public static class LookupCircuitDensity
             for (var q = 0; q < N; q++) H(q, _rates);
         }
 
-        // X on every index qubit whose bit is set, each followed by its channel (the channels in one pass).
+        // X on every index qubit whose bit is set, each followed by its channel.
         private void Toggle(int bits)
         {
-            var qubits = Enumerable.Range(0, N).Where(q => (bits >> q & 1) == 1).ToArray();
             _frame ^= bits;
-            Local(qubits, static (x, _) => (x, 1), _rates.OneQubit);
+            for (var q = 0; q < N; q++)
+                if ((bits >> q & 1) == 1) Channel(q, _rates.OneQubit);
         }
 
         private void PhaseToAllOnes()
@@ -150,14 +177,50 @@ public static class LookupCircuitDensity
             }
         }
 
-        private void Z(int a) => Local([a], Sign(1 << a), _rates.OneQubit);
+        private void Z(int a)
+        {
+            Negate(1 << a);
+            Channel(a, _rates.OneQubit);
+        }
 
-        private void CZ(int a, int b) => Local([a, b], Sign((1 << a) | (1 << b)), _rates.TwoQubit);
+        private void CZ(int a, int b)
+        {
+            Negate((1 << a) | (1 << b));
+            Channel(a, _rates.TwoQubit);
+            Channel(b, _rates.TwoQubit);
+        }
+
+        // ρ → DρD, D = −1 on the basis states where every qubit of mask reads 1 through the pending X's.
+        private void Negate(int mask)
+        {
+            if (_countOnly) return;
+            var (dimension, rho, frame) = (_dimension, _rho, _frame);
+            var signs = new double[dimension];
+            for (var s = 0; s < dimension; s++) signs[s] = ((s ^ frame) & mask) == mask ? -1 : 1;
+            Parallel.For(0, dimension, r =>
+            {
+                var row = r * dimension;
+                var c = 0;
+                for (; c + Vector<double>.Count <= dimension; c += Vector<double>.Count)
+                    (signs[r] * new Vector<double>(rho, row + c) * new Vector<double>(signs, c)).CopyTo(rho, row + c);
+                for (; c < dimension; c++) rho[row + c] *= signs[r] * signs[c];
+            });
+        }
+
+        private void Channel(int q, NoiseModel noise)
+        {
+            Channels++;
+            if (_countOnly || noise.PerGate <= 0) return;
+            Blocks(q, new BlockMap(BlockKind.Channel, noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py));
+        }
 
         private void Toffoli(int control1, int control2, int target)
         {
-            Channels += 3;
-            if (_countOnly) return;
+            if (_countOnly)
+            {
+                Channels += 3;
+                return;
+            }
             // The target flips where both controls read 1 through the pending X's: swap those rows with their partners, then the columns.
             var (c1, c2, t) = (1 << control1, 1 << control2, 1 << target);
             var pairs = Enumerable.Range(0, _dimension).Where(s => (s & t) == 0 && ((s ^ _frame) & (c1 | c2)) == (c1 | c2)).ToArray();
@@ -170,94 +233,29 @@ public static class LookupCircuitDensity
                 b.CopyTo(a);
                 temp.CopyTo(b);
             }
+            // The same columns in every row, taken as runs of consecutive columns (most controls are high bits, so the runs are long).
+            var runs = new List<(int Start, int Length)>();
+            foreach (var s in pairs)
+            {
+                if (runs.Count > 0 && runs[^1].Start + runs[^1].Length == s) runs[^1] = (runs[^1].Start, runs[^1].Length + 1);
+                else runs.Add((s, 1));
+            }
             var (dimension, rho) = (_dimension, _rho);
             Parallel.For(0, dimension, r =>
             {
                 var row = rho.AsSpan(r * dimension, dimension);
-                foreach (var s in pairs) (row[s], row[s | t]) = (row[s | t], row[s]);
-            });
-            var noise = _rates.TwoQubit;
-            foreach (var q in new[] { control1, control2, target })
-                Blocks(q, new BlockMap(BlockKind.Channel, noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py));
-        }
-
-        // D on the local bits of the given mask: −1 where every one of them reads 1 through the pending X's.
-        private LocalMap Sign(int mask)
-        {
-            var frame = _frame;
-            return (x, qubits) =>
-            {
-                var stored = 0;
-                for (var k = 0; k < qubits.Length; k++) stored |= (x >> k & 1) << qubits[k];
-                return (x, ((stored ^ frame) & mask) == mask ? -1 : 1);
-            };
-        }
-
-        /// <summary>The local basis state a gate reads into local state x, and the sign it puts on x: a permutation with signs.</summary>
-        private delegate (int Source, int Sign) LocalMap(int x, int[] qubits);
-
-        /// <summary>
-        /// A gate on <paramref name="qubits"/> (the diagonal gates and the X toggles; a permutation with signs of their local basis states, <paramref name="gate"/>) and
-        /// the channel <paramref name="noise"/> on each of them, in one pass over the matrix's blocks of those qubits: each block
-        /// B[x, y] becomes s(x) s(y) B[π(x), π(y)], then each qubit's channel acts on it.
-        /// </summary>
-        private void Local(int[] qubits, LocalMap gate, NoiseModel noise)
-        {
-            Channels += qubits.Length;
-            if (_countOnly || qubits.Length == 0) return;
-            var size = 1 << qubits.Length;
-            var (source, signs, offsets) = (new int[size], new double[size], new int[size]);
-            var mask = 0;
-            foreach (var q in qubits) mask |= 1 << q;
-            for (var x = 0; x < size; x++)
-            {
-                (source[x], var sign) = gate(x, qubits);
-                signs[x] = sign;
-                for (var k = 0; k < qubits.Length; k++) offsets[x] |= (x >> k & 1) << qubits[k];
-            }
-            var bases = Enumerable.Range(0, _dimension).Where(s => (s & mask) == 0).ToArray();
-            var (dimension, rho, count) = (_dimension, _rho, qubits.Length);
-            var (flip, keep, swap) = (noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py);
-            var noisy = noise.PerGate > 0;
-            void Row(int rowBase)
-            {
-                var block = new double[size * size];
-                var read = new double[size * size];
-                foreach (var columnBase in bases)
+                Span<double> held = stackalloc double[dimension];
+                foreach (var (start, length) in runs)
                 {
-                    for (var x = 0; x < size; x++)
-                        for (var y = 0; y < size; y++)
-                            read[x * size + y] = rho[(rowBase + offsets[x]) * dimension + columnBase + offsets[y]];
-                    for (var x = 0; x < size; x++)
-                        for (var y = 0; y < size; y++)
-                            block[x * size + y] = signs[x] * signs[y] * read[source[x] * size + source[y]];
-                    if (noisy)
-                    {
-                        for (var k = 0; k < count; k++)
-                        {
-                            var bit = 1 << k;
-                            for (var x = 0; x < size; x++)
-                            {
-                                if ((x & bit) != 0) continue;
-                                for (var y = 0; y < size; y++)
-                                {
-                                    if ((y & bit) != 0) continue;
-                                    ref var a = ref block[x * size + y];
-                                    ref var b = ref block[x * size + (y | bit)];
-                                    ref var c = ref block[(x | bit) * size + y];
-                                    ref var d = ref block[(x | bit) * size + (y | bit)];
-                                    (a, d, b, c) = ((1 - flip) * a + flip * d, (1 - flip) * d + flip * a, keep * b + swap * c, keep * c + swap * b);
-                                }
-                            }
-                        }
-                    }
-                    for (var x = 0; x < size; x++)
-                        for (var y = 0; y < size; y++)
-                            rho[(rowBase + offsets[x]) * dimension + columnBase + offsets[y]] = block[x * size + y];
+                    var a = row.Slice(start, length);
+                    var b = row.Slice(start | t, length);
+                    a.CopyTo(held);
+                    b.CopyTo(a);
+                    held[..length].CopyTo(b);
                 }
-            }
-            if (dimension >= 256) Parallel.ForEach(bases, Row);
-            else foreach (var rowBase in bases) Row(rowBase);
+            });
+            foreach (var q in new[] { control1, control2, target })
+                Channel(q, _rates.TwoQubit);
         }
 
         /// <summary>H on index qubit <paramref name="q"/> (a pending X applied first), then its channel at <paramref name="rates"/>' one-qubit rate.</summary>
@@ -267,7 +265,7 @@ public static class LookupCircuitDensity
             {
                 if ((_frame >> q & 1) == 1)
                 {
-                    Blocks(q, new BlockMap(BlockKind.X));
+                            Blocks(q, new BlockMap(BlockKind.X));
                     _frame ^= 1 << q;
                 }
                 // H ρ H on each block: a' = (a + b + c + d) / 2, b' = (a − b + c − d) / 2, c' = (a + b − c − d) / 2, d' = (a − b − c + d) / 2; then the channel.
@@ -297,6 +295,11 @@ public static class LookupCircuitDensity
                 if ((r0 & bit) != 0) return;
                 var row0 = r0 * dimension;
                 var row1 = (r0 | bit) * dimension;
+                if (bit >= Vector<double>.Count && map.Kind != BlockKind.X)
+                {
+                    VectorRows(row0, row1);
+                    return;
+                }
                 for (var start = 0; start < dimension; start += 2 * bit)
                 {
                     for (var c0 = start; c0 < start + bit; c0++)
@@ -312,6 +315,24 @@ public static class LookupCircuitDensity
                         }
                         if (map.Kind == BlockKind.H) (a, b, c, d) = ((a + b + c + d) / 2, (a - b + c - d) / 2, (a + b - c - d) / 2, (a - b - c + d) / 2);
                         (a, d, b, c) = ((1 - map.Flip) * a + map.Flip * d, (1 - map.Flip) * d + map.Flip * a, map.Keep * b + map.Swap * c, map.Keep * c + map.Swap * b);
+                    }
+                }
+            }
+            // The same on whole vectors where a block's columns c0 and c0 | bit lie in runs of at least a vector's width.
+            void VectorRows(int row0, int row1)
+            {
+                var (flip, keep, swap) = (new Vector<double>(map.Flip), new Vector<double>(map.Keep), new Vector<double>(map.Swap));
+                var stay = Vector<double>.One - flip;
+                for (var start = 0; start < dimension; start += 2 * bit)
+                {
+                    for (var c0 = start; c0 < start + bit; c0 += Vector<double>.Count)
+                    {
+                        var (a, b, c, d) = (new Vector<double>(rho, row0 + c0), new Vector<double>(rho, row0 + c0 + bit), new Vector<double>(rho, row1 + c0), new Vector<double>(rho, row1 + c0 + bit));
+                        if (map.Kind == BlockKind.H) (a, b, c, d) = ((a + b + c + d) * 0.5, (a - b + c - d) * 0.5, (a + b - c - d) * 0.5, (a - b - c + d) * 0.5);
+                        (stay * a + flip * d).CopyTo(rho, row0 + c0);
+                        (stay * d + flip * a).CopyTo(rho, row1 + c0 + bit);
+                        (keep * b + swap * c).CopyTo(rho, row0 + c0 + bit);
+                        (keep * c + swap * b).CopyTo(rho, row1 + c0);
                     }
                 }
             }

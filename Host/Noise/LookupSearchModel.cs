@@ -7,7 +7,8 @@ namespace QuantumRayTracing.Noise;
 
 /// <summary>
 /// The lookup oracle's noisy Grover run as <see cref="LookupCircuitDensity"/> evolves it, kept per (noise, N, t): one evolution
-/// gives P(marked) after every iteration count up to a depth, so a render evolves each marked count once. Which indices are
+/// gives P(marked) after every iteration count it has reached and continues when asked for more, so a render evolves each
+/// marked count once, as deep as its searches go. Which indices are
 /// marked changes the circuit only by its X toggles, so a run is evolved on a typical set of t indices, drawn once per (N, t)
 /// with a fixed seed, not on each ray's own set (<see cref="TypicalSet"/>).
 /// </summary>
@@ -16,7 +17,7 @@ public sealed class LookupSearchModel
     /// <summary>The model the analytic engine and the model check share.</summary>
     public static readonly LookupSearchModel Shared = new();
 
-    private readonly ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, bool NoisyOutside), Lazy<double[]>> _series = new();
+    private readonly ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, bool NoisyOutside), Lazy<LookupCircuitDensity.Evolution>> _evolutions = new();
 
     /// <summary>Whether runs over <paramref name="count"/> indices are evolved (<see cref="LookupCircuitDensity.Evolves"/>).</summary>
     public static bool Evolves(int count) => LookupCircuitDensity.Evolves(count);
@@ -43,15 +44,8 @@ public sealed class LookupSearchModel
     {
         ArgumentNullException.ThrowIfNull(noise);
         if (marked == 0) return 0;
-        var key = (noise, count, marked, noisyOutside);
-        var series = _series.GetOrAdd(key, k => Evolve(k, iterations)).Value;
-        if (iterations >= series.Length)
-        {
-            // Deeper than the cached run (QSearch's r stays below ⌈√N⌉; a fixed plan may ask more): evolved again that deep.
-            series = Evolve(key, iterations).Value;
-            _series[key] = new Lazy<double[]>(series);
-        }
-        return series[iterations];
+        return _evolutions.GetOrAdd((noise, count, marked, noisyOutside),
+            static key => new(() => new LookupCircuitDensity.Evolution(TypicalSet(key.Count, key.Marked), CircuitRates.Of(key.Noise), key.NoisyOutside))).Value.MarkedProbability(iterations);
     }
 
     /// <summary>
@@ -76,11 +70,5 @@ public sealed class LookupSearchModel
         const double p = 1e-6;
         var noise = NoiseModel.Depolarizing(p);
         return -Math.Log(Shared.RunFidelity(noise, count, marked, iterations)) / p;
-    }
-
-    private static Lazy<double[]> Evolve((NoiseModel Noise, int Count, int Marked, bool NoisyOutside) key, int iterations)
-    {
-        var depth = Math.Max(iterations, (int)Math.Ceiling(Math.Sqrt(key.Count)));
-        return new Lazy<double[]>(() => LookupCircuitDensity.MarkedProbabilities(TypicalSet(key.Count, key.Marked), depth, CircuitRates.Of(key.Noise), key.NoisyOutside));
     }
 }
