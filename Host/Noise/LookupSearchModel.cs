@@ -19,6 +19,9 @@ public sealed class LookupSearchModel
 
     private readonly ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, bool NoisyOutside), Lazy<LookupCircuitDensity.Evolution>> _evolutions = new();
 
+    /// <summary>Evolutions kept at once.</summary>
+    public const int MaxKept = 16;
+
     /// <summary>Whether runs over <paramref name="count"/> indices are evolved (<see cref="LookupCircuitDensity.Evolves"/>).</summary>
     public static bool Evolves(int count) => LookupCircuitDensity.Evolves(count);
 
@@ -44,7 +47,10 @@ public sealed class LookupSearchModel
     {
         ArgumentNullException.ThrowIfNull(noise);
         if (marked == 0) return 0;
-        return _evolutions.GetOrAdd((noise, count, marked, noisyOutside),
+        var key = (noise, count, marked, noisyOutside);
+        // Each evolution holds its matrix (8 MB at N = 64): past a bound they are let go, and a later question evolves again.
+        if (!_evolutions.ContainsKey(key) && _evolutions.Count >= MaxKept) _evolutions.Clear();
+        return _evolutions.GetOrAdd(key,
             static key => new(() => new LookupCircuitDensity.Evolution(TypicalSet(key.Count, key.Marked), CircuitRates.Of(key.Noise), key.NoisyOutside))).Value.MarkedProbability(iterations);
     }
 
