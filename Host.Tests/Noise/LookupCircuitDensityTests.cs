@@ -56,6 +56,27 @@ public class LookupCircuitDensityTests
         Assert.InRange(twoOnly, both + 0.01, GroverProbability.OfMarked(16, 2, 2) - 0.01);
     }
 
+    [Theory]
+    [InlineData(8, 5, 2)]
+    [InlineData(16, 3, 3)]
+    public void HarmByKindAddsUpToTheWholeRunsFirstOrderHarmAndReadsTheMeasurementsBitFlips(int count, int marked, int iterations)
+    {
+        var set = new MarkedSet(count, [marked]);
+        var kinds = LookupCircuitDensity.HarmByKind(set, iterations);
+        Assert.Equal(LookupCircuitDensity.Locations(set, iterations), kinds.Sum(k => k.Locations));
+        // First order: the kinds' harms add up to the whole run's, noise everywhere at p = 1e-6.
+        var (p, uniform, ideal) = (1e-6, 1.0 / count, GroverProbability.OfMarked(count, 1, iterations));
+        var whole = LookupCircuitDensity.MarkedProbabilities(set, iterations, CircuitRates.Of(NoiseModel.Depolarizing(p)))[iterations];
+        Assert.Equal(-Math.Log((whole - uniform) / (ideal - uniform)) / p, kinds.Sum(k => k.Harm), 0.01);
+        // Before the measurement an X or Y (2p/3) flips one of the n read bits: the marked index is read as one of its n neighbours,
+        // and n of the N − 1 unmarked ones, each read with (1 − P₀)/(N − 1), are read as the marked one. So
+        // H = (2/3) · n · (P₀ − (1 − P₀)/(N − 1)) / (P₀ − 1/N).
+        var n = SearchRegisters.For(count).IndexQubits;
+        var measurement = Assert.Single(kinds, k => k.Kind == LookupCircuitDensity.GateKind.Measurement);
+        Assert.Equal(n, measurement.Locations);
+        Assert.Equal(2.0 / 3 * n * (ideal - (1 - ideal) / (count - 1)) / (ideal - uniform), measurement.Harm, 1e-3);
+    }
+
     /// <summary>A complex density matrix over the index register and the ladder's auxiliaries, every gate a full matrix.</summary>
     private static class Reference
     {

@@ -76,8 +76,11 @@ public static class LookupCircuitDensity
         }
     }
 
-    /// <summary>Noise locations the evolution applied a channel at, per run of <paramref name="iterations"/>: the closed form's count (<see cref="NoiseLocations"/>), for tests.</summary>
-    public static long Locations(MarkedSet marked, int iterations)
+    /// <summary>Noise locations of a run of <paramref name="iterations"/>, as the evolution applies its channels: the closed form's count (<see cref="NoiseLocations"/>).</summary>
+    public static long Locations(MarkedSet marked, int iterations) => LocationsByKind(marked, iterations).Sum();
+
+    /// <summary>The same by <see cref="GateKind"/>.</summary>
+    public static long[] LocationsByKind(MarkedSet marked, int iterations)
     {
         var run = new Run(marked, CircuitRates.Noiseless, countOnly: true);
         for (var q = 0; q < run.N; q++) run.H(q, CircuitRates.Noiseless);
@@ -86,7 +89,37 @@ public static class LookupCircuitDensity
             run.Oracle();
             run.Diffusion();
         }
-        return run.Channels + run.N;
+        run.Locations[(int)GateKind.Measurement] += run.N;
+        return run.Locations;
+    }
+
+    /// <summary>
+    /// Which errors harm the run, to first order: per <see cref="GateKind"/>, its locations and their harm-weighted count
+    /// −ln Φ / p with depolarizing noise p = 1e-6 on that kind alone (Φ = (P − t/2^n) / (P₀ − t/2^n)); H / L is the kind's harmful
+    /// share, the number the old model took as s = 2/3 everywhere. NaN harm where the ideal run reads no better than uniform.
+    /// </summary>
+    public static IReadOnlyList<(GateKind Kind, long Locations, double Harm)> HarmByKind(MarkedSet marked, int iterations)
+    {
+        const double p = 1e-6;
+        var noise = NoiseModel.Depolarizing(p);
+        var locations = LocationsByKind(marked, iterations);
+        var uniform = (double)marked.MarkedCount / (1 << SearchRegisters.For(marked.Count).IndexQubits);
+        var ideal = Engines.GroverProbability.OfMarked(marked.Count, marked.MarkedCount, iterations);
+        return Enum.GetValues<GateKind>().Select(kind =>
+        {
+            var rates = new CircuitRates(kind == GateKind.OneQubit ? noise : NoiseModel.None, kind == GateKind.MultiQubit ? noise : NoiseModel.None, kind == GateKind.Measurement ? noise : NoiseModel.None);
+            var noisy = MarkedProbabilities(marked, iterations, rates)[iterations];
+            var harm = Math.Abs(ideal - uniform) < 1e-9 ? double.NaN : -Math.Log((noisy - uniform) / (ideal - uniform)) / p;
+            return (kind, locations[(int)kind], harm);
+        }).ToArray();
+    }
+
+    /// <summary>Where a noise location sits: after a one-qubit gate (H, X, Z), on a qubit of a gate on two or more (CZ, CCX), or before a measurement.</summary>
+    public enum GateKind
+    {
+        OneQubit,
+        MultiQubit,
+        Measurement,
     }
 
     private static int Auxiliaries(int n) => n > 2 ? n - 2 : 0;
@@ -120,8 +153,8 @@ public static class LookupCircuitDensity
         /// <summary>Index qubits n.</summary>
         public int N { get; }
 
-        /// <summary>Channels applied so far (one per qubit per gate).</summary>
-        public long Channels { get; private set; }
+        /// <summary>Noise locations so far (one per qubit per gate, one per measured qubit), by <see cref="GateKind"/>.</summary>
+        public long[] Locations { get; } = new long[3];
 
         private int Auxiliary(int k) => N + k;
 
@@ -154,7 +187,7 @@ public static class LookupCircuitDensity
         {
             _frame ^= bits;
             for (var q = 0; q < N; q++)
-                if ((bits >> q & 1) == 1) Channel(q, _rates.OneQubit);
+                if ((bits >> q & 1) == 1) Channel(q, GateKind.OneQubit);
         }
 
         private void PhaseToAllOnes()
@@ -180,14 +213,14 @@ public static class LookupCircuitDensity
         private void Z(int a)
         {
             Negate(1 << a);
-            Channel(a, _rates.OneQubit);
+            Channel(a, GateKind.OneQubit);
         }
 
         private void CZ(int a, int b)
         {
             Negate((1 << a) | (1 << b));
-            Channel(a, _rates.TwoQubit);
-            Channel(b, _rates.TwoQubit);
+            Channel(a, GateKind.MultiQubit);
+            Channel(b, GateKind.MultiQubit);
         }
 
         // ρ → DρD, D = −1 on the basis states where every qubit of mask reads 1 through the pending X's.
@@ -207,9 +240,10 @@ public static class LookupCircuitDensity
             });
         }
 
-        private void Channel(int q, NoiseModel noise)
+        private void Channel(int q, GateKind kind)
         {
-            Channels++;
+            Locations[(int)kind]++;
+            var noise = kind == GateKind.OneQubit ? _rates.OneQubit : _rates.TwoQubit;
             if (_countOnly || noise.PerGate <= 0) return;
             Blocks(q, new BlockMap(BlockKind.Channel, noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py));
         }
@@ -218,7 +252,7 @@ public static class LookupCircuitDensity
         {
             if (_countOnly)
             {
-                Channels += 3;
+                Locations[(int)GateKind.MultiQubit] += 3;
                 return;
             }
             // The target flips where both controls read 1 through the pending X's: swap those rows with their partners, then the columns.
@@ -255,7 +289,7 @@ public static class LookupCircuitDensity
                 }
             });
             foreach (var q in new[] { control1, control2, target })
-                Channel(q, _rates.TwoQubit);
+                Channel(q, GateKind.MultiQubit);
         }
 
         /// <summary>H on index qubit <paramref name="q"/> (a pending X applied first), then its channel at <paramref name="rates"/>' one-qubit rate.</summary>
@@ -272,7 +306,7 @@ public static class LookupCircuitDensity
                 var noise = rates.OneQubit;
                 Blocks(q, new BlockMap(BlockKind.H, noise.Px + noise.Py, 1 - noise.PerGate - noise.Pz, noise.Px - noise.Py));
             }
-            Channels++;
+            Locations[(int)GateKind.OneQubit]++;
         }
 
         private enum BlockKind { X, H, Channel }
@@ -346,7 +380,7 @@ public static class LookupCircuitDensity
         /// </summary>
         public double ReadMarked(CircuitRates rates)
         {
-            Channels += N;
+            Locations[(int)GateKind.Measurement] += N;
             var values = 1 << N;
             var distribution = new double[values];
             for (var s = 0; s < _dimension; s++) distribution[(s ^ _frame) & (values - 1)] += _rho[s * _dimension + s];
