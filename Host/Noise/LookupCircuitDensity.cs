@@ -6,10 +6,10 @@ namespace QuantumRayTracing.Noise;
 /// <summary>
 /// The lookup oracle's Grover run (<c>MeasureGroverSearch</c>) evolved exactly as a density matrix under a Pauli channel after
 /// every gate on each qubit it touches and before every measurement: the n index qubits and the n − 2 auxiliaries of the
-/// Toffoli ladder (<c>ApplyPhaseToAllOnes</c>), gate for gate as the Q# operations apply them. Every gate of the circuit and
-/// every Pauli is real, so the matrix is. X gates are kept as a relabelling of the basis (a Pauli channel is unchanged by it),
-/// so they cost no pass over the matrix. Defined for N a power of two (the preparation is H on every index qubit) whose
-/// circuit fits <see cref="MaxQubits"/> qubits: N ≤ 64.
+/// Toffoli ladder (<c>ApplyPhaseToAllOnes</c>), gate for gate as the Q# operations apply them. Every gate of the circuit is
+/// real and so is PρP† for every Pauli (Y = iXZ gives YρY† = XZρZX), so the matrix stays real. X gates are kept as a
+/// relabelling of the basis (a Pauli channel is unchanged by it), so they cost no pass over the matrix. Defined for N a power
+/// of two (the preparation is H on every index qubit) whose circuit fits <see cref="MaxQubits"/> qubits: N ≤ 64.
 /// </summary>
 public static class LookupCircuitDensity
 {

@@ -198,7 +198,7 @@ public static class NoiseReport
             sets.Length == 0 ? "- the marked set: no row was evolved on its own set." :
             $"- the marked set: the engine evolves one typical set per N and t, and a ray's own set differs in its X toggles; on these rows that moved P(marked) by up to {F(Math.Abs(set.Shift), "0.000")} ({Name(set.Row)}: own set {F(set.Row.OwnSetProbability!.Value, "0.000")} against {F(set.Row.Predicted(model), "0.000")}), part of each row's gap;",
             $"- N above 64 (more than {LookupCircuitDensity.MaxQubits} qubits) or not a power of two: not evolved; those runs fall back to s = 2/3 over the counted locations, which this check does not cover;",
-            "- cost: evolving a 10-qubit density matrix takes tenths of a second per marked count at N = 64 (\"first of three\" in the render tables below)."));
+            "- cost: the first render at each rate evolves a 10-qubit density matrix for every marked count it asks at N = 64, so a one-shot render under this model is many times slower than a noiseless one (\"first of three\" against \"wall time\" in the render tables below; later renders in the same process find the evolutions kept)."));
     }
 
     /// <summary>
