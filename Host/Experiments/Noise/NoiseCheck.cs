@@ -78,7 +78,7 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
     });
 
     /// <summary>A lookup row's P(marked) with its circuit evolved on the row's own marked set, not the typical one the model takes; null elsewhere.</summary>
-    public double? OwnSetProbability => Exposure is null && LookupSearchModel.Evolves(Count) && Marked > 0
+    public double? OwnSetProbability() => Exposure is null && LookupSearchModel.Evolves(Count) && Marked > 0
         ? LookupCircuitDensity.MarkedProbabilities(Request.Marked, Iterations, CircuitRates.Of(Noise))[Iterations]
         : null;
 

@@ -152,7 +152,7 @@ public static class NoiseReport
                 : LookupSearchModel.Evolves(r.Count) ? LookupSearchModel.HarmWeight(r.Count, r.Marked, r.Iterations) : 2.0 / 3 * r.Locations;
             check.Row([r.Oracle, I(r.Count), I(r.Marked), I(r.Iterations), Rate(r.Noise.PerGate), F(r.Locations, "0"), F(harm, "0"), F(r.Observed, "0.000"), F(predicted, "0.000"),
                 F(gap, "+0.000;-0.000;0.000"), F(gap / r.StandardError(model), "+0.0;-0.0;0.0"), r.Accepts(model, tolerance, z) ? "yes" : "**no**",
-                r.Exposure is null ? (r.OwnSetProbability is { } own ? $"own set: {F(own, "0.000")}" : "") : F(r.Predicted(SearchModel.IndependentHarms), "0.000"),
+                r.Exposure is null ? (r.OwnSetProbability() is { } own ? $"own set: {F(own, "0.000")}" : "") : F(r.Predicted(SearchModel.IndependentHarms), "0.000"),
                 .. NegativeControls.Select(c => r.Separates(c.Model, tolerance, z) && !r.Accepts(c.Model, tolerance, z) ? $"**{F(r.Predicted(c.Model), "0.000")}**" : F(r.Predicted(c.Model), "0.000"))]);
         }
         report.Table(check);
@@ -189,14 +189,14 @@ public static class NoiseReport
         var worst = lookup.MaxBy(r => Math.Abs(r.Observed - r.Predicted(model)) - z * r.StandardError(model))!;
         var beyond = Math.Max(0, Math.Abs(worst.Observed - worst.Predicted(model)) - z * worst.StandardError(model));
         var largest = lookup.MaxBy(r => Math.Abs(r.Observed - r.Predicted(model)))!;
-        var sets = lookup.Where(r => r.OwnSetProbability is not null).Select(r => (Row: r, Shift: r.OwnSetProbability!.Value - r.Predicted(model))).ToArray();
+        var sets = lookup.Where(r => r.Marked > 0 && LookupCircuitDensity.Evolves(r.Count)).Select(r => (Row: r, Own: r.OwnSetProbability()!.Value)).Select(x => (x.Row, x.Own, Shift: x.Own - x.Row.Predicted(model))).ToArray();
         var set = sets.Length == 0 ? default : sets.MaxBy(x => Math.Abs(x.Shift));
         string Name(NoiseCheckRow r) => $"N = {r.Count}, t = {r.Marked}, r = {r.Iterations}, p = {Rate(r.Noise.PerGate)}";
         report.Text(Lines(
             $"**The lookup model on these rows.** Largest |gap| {F(Math.Abs(largest.Observed - largest.Predicted(model)), "0.000")} ({Name(largest)},",
             $"{F((largest.Observed - largest.Predicted(model)) / largest.StandardError(model), "+0.0;-0.0")}σ); largest gap beyond z·σ {F(beyond, "0.000")}. Where it still misses:",
             sets.Length == 0 ? "- the marked set: no row was evolved on its own set." :
-            $"- the marked set: the engine evolves one typical set per N and t, and a ray's own set differs in its X toggles; on these rows that moved P(marked) by up to {F(Math.Abs(set.Shift), "0.000")} ({Name(set.Row)}: own set {F(set.Row.OwnSetProbability!.Value, "0.000")} against {F(set.Row.Predicted(model), "0.000")}), part of each row's gap;",
+            $"- the marked set: the engine evolves one typical set per N and t, and a ray's own set differs in its X toggles; on these rows that moved P(marked) by up to {F(Math.Abs(set.Shift), "0.000")} ({Name(set.Row)}: own set {F(set.Own, "0.000")} against {F(set.Row.Predicted(model), "0.000")}), part of each row's gap;",
             $"- N above 64 (more than {LookupCircuitDensity.MaxQubits} qubits) or not a power of two: not evolved; those runs fall back to s = 2/3 over the counted locations, which this check does not cover;",
             "- cost: the first render at each rate evolves a 10-qubit density matrix for every marked count it asks at N = 64, so a one-shot render under this model is many times slower than a noiseless one (\"first of three\" against \"wall time\" in the render tables below; later renders in the same process find the evolutions kept)."));
     }
