@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Scenes.Generation;
@@ -114,7 +115,8 @@ public sealed class SupersampleCommand : Command
         EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
         var run = SupersampleRunView.RunAndPrint(settings, bridges);
-        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Device is { } device ? RunNoise.Of(settings.Engine, device) : null);
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Device is { } device ? RunNoise.Of(settings.Engine, device)
+            : RunNoise.Of(settings.Engine, settings.NoiseModel, SupersamplingNoise.Description(settings.Engine, settings.NoiseModel)));
         return ExitCodes.Success;
     }
 

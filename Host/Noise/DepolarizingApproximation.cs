@@ -7,12 +7,14 @@ namespace QuantumRayTracing.Noise;
 /// The global depolarizing approximation of a noisy Grover run: with probability Φ the run is the ideal
 /// one, otherwise the index register is left maximally mixed and reads uniformly over its 2^n values.
 /// So P(marked) = Φ · sin²((2r+1)θ) + (1 − Φ) · t / 2^n (t / N when N is a power of two). On the lookup oracle
-/// Φ = F₀ · F^r, F = (1 − p)^(s · L) per iteration of L noise locations, F₀ the same for the preparation
-/// and measurement, and s the share of Pauli errors that harm the run; on the gate-level oracle Φ is what its
+/// Φ is read from its circuit evolved exactly as a density matrix (<see cref="LookupSearchModel"/>) where N is a power of two up
+/// to 64; elsewhere Φ = F₀ · F^r, F = (1 − p)^(s · L) per iteration of L noise locations, F₀ the same for the preparation
+/// and measurement, and s the share of Pauli errors that harm the run. On the gate-level oracle Φ is what its
 /// iterations' channels on the index register keep (<see cref="GateLevelExposure.RunFidelity(NoiseModel, int, int, int)"/>).
 /// </summary>
 /// <param name="HarmfulShare">
-/// s of the lookup oracle's closed-form locations: by default 2/3, as a Z error on a qubit in a basis state does nothing.
+/// s of the closed-form locations where no circuit is evolved (the lookup oracle past N = 64 or at N not a power of two, the
+/// supersampling circuits): by default 2/3, as a Z error on a qubit in a basis state does nothing.
 /// </param>
 /// <param name="GateLevel">
 /// The gate-level oracle's exposure, counted location by location from its circuit (<see cref="NoiseExposure"/>);
@@ -31,9 +33,13 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     /// <summary>The oracle whose circuit Φ counts.</summary>
     public NoiseOracle Oracle => GateLevel is null ? NoiseOracle.Lookup : NoiseOracle.GateLevel;
 
-    /// <summary>Φ of a Grover run: the gate-level circuit's counted exposure, or the lookup oracle's locations (<see cref="NoiseLocations"/>) at share s.</summary>
+    /// <summary>
+    /// Φ of a Grover run: the gate-level circuit's counted exposure; the lookup circuit's evolution; or past what is evolved, the
+    /// lookup oracle's locations (<see cref="NoiseLocations"/>) at share s.
+    /// </summary>
     public double RunFidelity(NoiseModel noise, GroverRequest request) =>
         GateLevel is { } gate ? gate.RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations)
+        : LookupSearchModel.Evolves(request.Marked.Count) ? LookupSearchModel.Shared.RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations)
         : Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
 
     /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
@@ -51,11 +57,12 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
 
     /// <summary>
     /// P(marked) of a run under <paramref name="noise"/> for the passes' miss rates: the gate-level circuit's Φ depends on r
-    /// alone; the lookup oracle's on the marked set too, taken as the first t indices.
+    /// alone; the lookup oracle's on the marked set too, taken as its typical set (evolved) or the first t indices (counted).
     /// </summary>
     public FalseNegativeRate.RunSuccess NoisySuccess(NoiseModel noise) => (count, marked, iterations) =>
     {
         var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, count, marked, iterations)
+            : LookupSearchModel.Evolves(count) ? LookupSearchModel.Shared.RunFidelity(noise, count, marked, iterations)
             : Fidelity(noise, NoiseLocations.PrepareAndMeasure(count) + (double)iterations *
                 _lookupIterations.GetOrAdd((count, marked), k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray()))));
         return MarkedProbability(count, marked, iterations, fidelity);
@@ -67,5 +74,6 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
         : GateLevel is { } gate
             ? $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.GateLevel.Description()}, {gate.Shape}: harm counted per noise location"
                 + (gate.Channels is null ? "" : $", the iterations simulated as channels on the index register (whole-harm share {SearchChannels.FittedWholeHarm:0.00}, fitted)")
-            : $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.Lookup.Description()}, harmful share {HarmfulShare:0.###} of errors";
+            : $"{noise.Description()}, over the {NoiseOracle.Lookup.Description()}: its circuit (index register and ladder auxiliaries) evolved exactly as a density matrix"
+                + $" under the Pauli channel of every gate, on a typical marked set per N and t, read as Φ of the depolarizing form; N above 64 or not a power of two: harmful share {HarmfulShare:0.###} of counted locations";
 }

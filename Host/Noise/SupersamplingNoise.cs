@@ -1,3 +1,4 @@
+using QuantumRayTracing.Engines;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Noise;
@@ -20,6 +21,14 @@ namespace QuantumRayTracing.Noise;
 /// </remarks>
 public static class SupersamplingNoise
 {
+    /// <summary>The noise model as supersampling results name it: on the analytic engine this approximation, elsewhere the simulator's noise.</summary>
+    public static string Description(EngineKind kind, NoiseModel noise)
+    {
+        ArgumentNullException.ThrowIfNull(noise);
+        return noise.IsNoiseless || !kind.ApproximatesNoise ? noise.Description()
+            : $"{noise.Description()}, global depolarizing approximation over the supersampling circuits' counted locations, harmful share {DepolarizingApproximation.DefaultHarmfulShare:0.###} (the one-qubit coin exact)";
+    }
+
     /// <summary>F per Grover operator of a coin: the probability that one operator is left unharmed.</summary>
     public static double GroverOperatorFidelity(CoinKind kind, IReadOnlyList<double> amplitudes, NoiseModel noise, DepolarizingApproximation? approximation = null) =>
         Fidelity(kind, CoinNoiseLocations.GroverOperator(kind, amplitudes), noise, approximation);

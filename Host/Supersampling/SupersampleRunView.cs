@@ -1,5 +1,6 @@
 using System.Globalization;
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Noise;
 
 namespace QuantumRayTracing.Supersampling;
 
@@ -49,7 +50,7 @@ public static class SupersampleRunView
     private static string NoiseDescription(SupersampleRunSettings settings) =>
         settings.Device is { } device
             ? $"{device.Description()}{(settings.Engine == EngineKind.Analytic ? " (global depolarizing weight; exact on one qubit)" : "")}, on single-qubit coins rotated to the mean the host computes"
-            : EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
+            : SupersamplingNoise.Description(settings.Engine, settings.NoiseModel);
 
     // What one estimate holds on a quantum computer: ceil(log2 N) subpixel qubits, a coin, and QSS's counter or qss-bayes's ancilla.
     private static string Registers(SupersampleSettings settings, bool singleQubitCoin)

@@ -22,9 +22,11 @@ public interface IModelCheckRow
 /// <summary>
 /// The analytic model of a search and the wrong variants it is checked against (negative controls): the ideal formula
 /// (no noise), every location harmful (s = 1), a third of them (s = 1/3), the model without the factor of the
-/// preparation and measurement (Φ = F^r), and the gate-level count without its grading (every Pauli the counting rule
-/// calls harmful a whole harm, the model before the harm was graded); and, beside them, the graded harms taken as independent
-/// (Φ = F₀ · F^r, the gate-level model before its iterations were simulated as channels on the index register).
+/// preparation and measurement (Φ = F^r; on the lookup oracle its circuit evolved with a noiseless preparation and measurement),
+/// the gate-level count without its grading (every Pauli the counting rule calls harmful a whole harm, the model before the harm
+/// was graded), and a share s = 2/3 of the closed-form locations harmful (the lookup model before its circuit was evolved); and,
+/// beside them, the graded harms taken as independent (Φ = F₀ · F^r, the gate-level model before its iterations were simulated
+/// as channels on the index register).
 /// </summary>
 public enum SearchModel
 {
@@ -32,6 +34,7 @@ public enum SearchModel
     Ideal,
     ShareOne,
     ShareThird,
+    ShareTwoThirds,
     WithoutPreparation,
     Ungraded,
     IndependentHarms,
@@ -59,18 +62,25 @@ public sealed record NoiseCheckRow(string Oracle, GroverRequest Request, NoiseMo
     public double Predicted(DepolarizingApproximation approximation) =>
         DepolarizingApproximation.MarkedProbability(Count, Marked, Iterations, approximation.Fidelity(Noise, Locations));
 
-    /// <summary>P(marked) by <paramref name="model"/>: the engines' model (the gate-level circuit's counted harm, the lookup oracle's s = 2/3) or a wrong variant.</summary>
+    /// <summary>P(marked) by <paramref name="model"/>: the engines' model (the gate-level circuit's counted harm, the lookup circuit's evolution) or a wrong variant.</summary>
     public double Predicted(SearchModel model) => DepolarizingApproximation.MarkedProbability(Count, Marked, Iterations, model switch
     {
         SearchModel.Ideal => 1.0,
         SearchModel.ShareOne => new DepolarizingApproximation(1).Fidelity(Noise, Locations),
         SearchModel.ShareThird => new DepolarizingApproximation(1.0 / 3).Fidelity(Noise, Locations),
+        SearchModel.ShareTwoThirds => DepolarizingApproximation.Default.Fidelity(Noise, Locations),
         SearchModel.Ungraded => Exposure is { } u ? (u.Outside.Ungraded + (double)Iterations * u.Iteration.Ungraded).Fidelity(Noise) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
         SearchModel.WithoutPreparation => Exposure is { } e ? Math.Min(1.0, Math.Pow(e.Iteration.Fidelity(Noise), Iterations))
+            : LookupSearchModel.Evolves(Count) ? LookupSearchModel.Shared.RunFidelity(Noise, Count, Marked, Iterations, noisyOutside: false)
             : DepolarizingApproximation.Default.Fidelity(Noise, Locations - NoiseLocations.PrepareAndMeasure(Count)),
         SearchModel.IndependentHarms => Exposure is { } h ? h.IndependentHarmsFidelity(Noise, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
-        _ => Exposure is { } g ? g.RunFidelity(Noise, Count, Marked, Iterations) : DepolarizingApproximation.Default.Fidelity(Noise, Locations),
+        _ => Exposure is { } g ? g.RunFidelity(Noise, Count, Marked, Iterations) : DepolarizingApproximation.Default.RunFidelity(Noise, Request),
     });
+
+    /// <summary>A lookup row's P(marked) with its circuit evolved on the row's own marked set, not the typical one the model takes; null elsewhere.</summary>
+    public double? OwnSetProbability() => Exposure is null && LookupSearchModel.Evolves(Count) && Marked > 0
+        ? LookupCircuitDensity.MarkedProbabilities(Request.Marked, Iterations, CircuitRates.Of(Noise))[Iterations]
+        : null;
 
     /// <summary>P(marked) of the gate-level model with <paramref name="wholeHarm"/> for an error the grading cannot follow; the engines' model on a lookup row.</summary>
     public double PredictedWithWholeHarm(double wholeHarm) => Exposure is { } g
