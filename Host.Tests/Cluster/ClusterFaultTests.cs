@@ -83,7 +83,14 @@ public sealed class ClusterFaultTests
         var answers = new string?[Requests];
         var run = Task.Run(() => pool.ForEach(Enumerable.Range(0, Requests).ToArray(), (k, bridge) => answers[k] = Assert.Single(bridge.Run($"Request({k})"))));
 
-        await run.WaitAsync(TimeSpan.FromMinutes(2));
+        try
+        {
+            await run.WaitAsync(TimeSpan.FromMinutes(2));
+        }
+        finally
+        {
+            frozen.Thaw();
+        }
 
         Assert.Equal(Enumerable.Range(0, Requests).Select(k => $"Request({k})"), answers);
         Assert.True(frozen.Calls >= 1, "the frozen worker was never given a chunk, so the test proved nothing");

@@ -158,10 +158,12 @@ public sealed class DyingExecutor : IChunkExecutor
 
 /// <summary>
 /// On its first request freezes, as a process stopped with SIGSTOP would: the request is never answered and the worker's load,
-/// which a heartbeat asks for, no longer comes either (for a minute, long past any test). Its connection stays open.
+/// which a heartbeat asks for, no longer comes either until <see cref="Thaw"/> (or a minute, long past any test). Its connection
+/// stays open.
 /// </summary>
 public sealed class FrozenExecutor : IChunkExecutor
 {
+    private readonly ManualResetEventSlim _thawed = new();
     private int _calls;
 
     public int Calls => Volatile.Read(ref _calls);
@@ -170,10 +172,13 @@ public sealed class FrozenExecutor : IChunkExecutor
     {
         get
         {
-            if (Calls > 0) Thread.Sleep(TimeSpan.FromMinutes(1));
+            if (Calls > 0) _thawed.Wait(TimeSpan.FromMinutes(1));
             return 2;
         }
     }
+
+    /// <summary>Lets the load answers it holds go, so the silo can stop.</summary>
+    public void Thaw() => _thawed.Set();
 
     public async Task<JsonNode> Execute(JsonObject request)
     {
