@@ -159,7 +159,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 // Died, hung or unreachable: its answer, if one ever comes, is dropped with the task. A call can also fail on
-                // the way (through another worker's gateway that died) while its worker still answers: that worker stays.
+                // the way while its worker lives (through another worker's gateway that died, say): a worker that answers stays.
                 last = e;
                 if (e is TimeoutException or WorkerLostException || !Answers(worker)) worker.Failed = true;
                 Interlocked.Increment(ref _retries);
