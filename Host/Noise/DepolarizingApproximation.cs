@@ -72,7 +72,7 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     public string Description(NoiseModel noise) =>
         noise.IsNoiseless ? noise.Description()
         : GateLevel is { } gate
-            ? $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.GateLevel.Description()}, {gate.Shape}: harm counted per noise location"
+            ? $"{noise.Description()}, global depolarizing approximation over the {NoiseOracle.GateLevel.Description()}, its harm traced once per oracle shape (here on {gate.Shape}): harm counted per noise location"
                 + (gate.Channels is null ? "" : $", the iterations simulated as channels on the index register (whole-harm share {SearchChannels.FittedWholeHarm:0.00}, fitted)")
             : $"{noise.Description()}, over the {NoiseOracle.Lookup.Description()}: its circuit (index register and ladder auxiliaries) evolved exactly as a density matrix"
                 + $" under the Pauli channel of every gate, on a typical marked set per N and t, read as Φ of the depolarizing form; N above 64 or not a power of two: harmful share {HarmfulShare:0.###} of counted locations";
