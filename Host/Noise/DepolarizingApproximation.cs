@@ -38,15 +38,35 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     /// lookup oracle's locations (<see cref="NoiseLocations"/>) at share s.
     /// </summary>
     public double RunFidelity(NoiseModel noise, GroverRequest request) =>
-        GateLevel is { } gate ? gate.RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations)
-        : LookupSearchModel.Evolves(request.Marked.Count) ? LookupSearchModel.Shared.RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations)
-        : Fidelity(noise, NoiseLocations.PrepareAndMeasure(request.Marked.Count) + (double)request.Iterations * NoiseLocations.LookupIteration(request.Marked));
+        RunFidelity(noise, request.Marked.Count, request.Marked.MarkedCount, request.Iterations, request.Marked);
+
+    // Φ by oracle: the gate-level circuit's, the evolved lookup circuit's, or the lookup oracle's counted locations over
+    // `set` (null: the first t indices, counted once per N and t).
+    private double RunFidelity(NoiseModel noise, int count, int marked, int iterations, MarkedSet? set) =>
+        GateLevel is { } gate ? gate.RunFidelity(noise, count, marked, iterations)
+        : LookupSearchModel.Evolves(count) ? LookupSearchModel.Shared.RunFidelity(noise, count, marked, iterations)
+        : Fidelity(noise, NoiseLocations.PrepareAndMeasure(count) + (double)iterations * (set is null
+            ? _lookupIterations.GetOrAdd((count, marked), static k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray())))
+            : NoiseLocations.LookupIteration(set)));
 
     /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
     public static double MarkedProbability(int count, int marked, int iterations, double fidelity)
     {
         var readable = 1 << SearchRegisters.For(count).IndexQubits;
         return fidelity * GroverProbability.OfMarked(count, marked, iterations) + (1 - fidelity) * marked / readable;
+    }
+
+    /// <summary>
+    /// Φ that <see cref="MarkedProbability(int, int, int, double)"/> turns into the noisy run's P(marked) (<paramref name="noisy"/>,
+    /// asked only when needed): the share of the ideal run's excess over the uniform readout t/2^n the noisy run keeps, unclamped;
+    /// null where the ideal run reads no better than uniform, so that no Φ is defined.
+    /// </summary>
+    public static double? FidelityOf(int count, int marked, int iterations, Func<double> noisy)
+    {
+        ArgumentNullException.ThrowIfNull(noisy);
+        var uniform = (double)marked / (1 << SearchRegisters.For(count).IndexQubits);
+        var ideal = GroverProbability.OfMarked(count, marked, iterations);
+        return Math.Abs(ideal - uniform) < 1e-9 ? null : (noisy() - uniform) / (ideal - uniform);
     }
 
     /// <summary>P(marked) of a Grover run under <paramref name="noise"/>.</summary>
@@ -60,13 +80,7 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     /// alone; the lookup oracle's on the marked set too, taken as its typical set (evolved) or the first t indices (counted).
     /// </summary>
     public FalseNegativeRate.RunSuccess NoisySuccess(NoiseModel noise) => (count, marked, iterations) =>
-    {
-        var fidelity = GateLevel is { } gate ? gate.RunFidelity(noise, count, marked, iterations)
-            : LookupSearchModel.Evolves(count) ? LookupSearchModel.Shared.RunFidelity(noise, count, marked, iterations)
-            : Fidelity(noise, NoiseLocations.PrepareAndMeasure(count) + (double)iterations *
-                _lookupIterations.GetOrAdd((count, marked), k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray()))));
-        return MarkedProbability(count, marked, iterations, fidelity);
-    };
+        MarkedProbability(count, marked, iterations, RunFidelity(noise, count, marked, iterations, set: null));
 
     /// <summary>How the model is named beside every result it produces.</summary>
     public string Description(NoiseModel noise) =>

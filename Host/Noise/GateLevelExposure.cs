@@ -70,11 +70,10 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     {
         if (Channels is not { } channels || noise.PerGate <= 0) return IndependentHarmsFidelity(noise, iterations);
         var register = 1 << Search.SearchRegisters.For(count).IndexQubits;
-        var uniform = (double)marked / register;
-        var ideal = Engines.GroverProbability.OfMarked(register, marked, iterations);
-        if (Math.Abs(ideal - uniform) < 1e-9) return IndependentHarmsFidelity(noise, iterations);
-        var noisy = channels.MarkedProbability(noise, register, marked, iterations, Outside.Fidelity(noise), wholeHarm);
-        return Math.Clamp((noisy - uniform) / (ideal - uniform), 0, 1);
+        return DepolarizingApproximation.FidelityOf(register, marked, iterations,
+                () => channels.MarkedProbability(noise, register, marked, iterations, Outside.Fidelity(noise), wholeHarm)) is { } fidelity
+            ? Math.Clamp(fidelity, 0, 1)
+            : IndependentHarmsFidelity(noise, iterations);
     }
 
     /// <summary>

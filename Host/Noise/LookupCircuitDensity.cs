@@ -103,14 +103,11 @@ public static class LookupCircuitDensity
         const double p = 1e-6;
         var noise = NoiseModel.Depolarizing(p);
         var locations = LocationsByKind(marked, iterations);
-        var uniform = (double)marked.MarkedCount / (1 << SearchRegisters.For(marked.Count).IndexQubits);
-        var ideal = Engines.GroverProbability.OfMarked(marked.Count, marked.MarkedCount, iterations);
         return Enum.GetValues<GateKind>().Select(kind =>
         {
             var rates = new CircuitRates(kind == GateKind.OneQubit ? noise : NoiseModel.None, kind == GateKind.MultiQubit ? noise : NoiseModel.None, kind == GateKind.Measurement ? noise : NoiseModel.None);
-            var noisy = MarkedProbabilities(marked, iterations, rates)[iterations];
-            var harm = Math.Abs(ideal - uniform) < 1e-9 ? double.NaN : -Math.Log((noisy - uniform) / (ideal - uniform)) / p;
-            return (kind, locations[(int)kind], harm);
+            var fidelity = DepolarizingApproximation.FidelityOf(marked.Count, marked.MarkedCount, iterations, () => MarkedProbabilities(marked, iterations, rates)[iterations]);
+            return (kind, locations[(int)kind], fidelity is { } f ? -Math.Log(f) / p : double.NaN);
         }).ToArray();
     }
 
@@ -299,7 +296,7 @@ public static class LookupCircuitDensity
             {
                 if ((_frame >> q & 1) == 1)
                 {
-                            Blocks(q, new BlockMap(BlockKind.X));
+                    Blocks(q, new BlockMap(BlockKind.X));
                     _frame ^= 1 << q;
                 }
                 // H ρ H on each block: a' = (a + b + c + d) / 2, b' = (a − b + c − d) / 2, c' = (a + b − c − d) / 2, d' = (a − b − c + d) / 2; then the channel.

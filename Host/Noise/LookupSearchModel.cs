@@ -1,5 +1,4 @@
 using System.Collections.Concurrent;
-using QuantumRayTracing.Engines;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Search;
 
@@ -61,10 +60,9 @@ public sealed class LookupSearchModel
     public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, bool noisyOutside = true)
     {
         if (noise.PerGate <= 0 || marked == 0) return 1;
-        var uniform = (double)marked / (1 << SearchRegisters.For(count).IndexQubits);
-        var ideal = GroverProbability.OfMarked(count, marked, iterations);
-        if (Math.Abs(ideal - uniform) < 1e-9) return 1;
-        return Math.Clamp((MarkedProbability(noise, count, marked, iterations, noisyOutside) - uniform) / (ideal - uniform), 0, 1);
+        return DepolarizingApproximation.FidelityOf(count, marked, iterations, () => MarkedProbability(noise, count, marked, iterations, noisyOutside)) is { } fidelity
+            ? Math.Clamp(fidelity, 0, 1)
+            : 1;
     }
 
     /// <summary>

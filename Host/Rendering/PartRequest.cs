@@ -21,7 +21,7 @@ public static class PartRequest
 {
     public const string Method = "renderPart";
 
-    private static readonly JsonSerializerOptions Json = new() { IncludeFields = false };
+    private static readonly JsonSerializerOptions Json = JsonSerializerOptions.Default;
 
     // What a part needs of an engine: its kind and QSearch's options, and its noise. Workers and the qubit limit belong to
     // the Q# engines, whose chunks go to the cluster one Grover run at a time, not as parts.
@@ -54,18 +54,18 @@ public static class PartRequest
         ImageWindow? window;
         try
         {
-            var sceneText = request["scene"]!.GetValue<string>();
-            var engineNode = request["engine"]!;
+            var sceneText = Field(request, "scene").GetValue<string>();
+            var engineNode = Field(request, "engine");
             parts = cache.For(sceneText + "\n" + engineNode.ToJsonString(), () =>
             {
-                var engine = engineNode.Deserialize<PartEngine>(Json)!;
-                var scene = JsonSerializer.Deserialize<Scene>(sceneText, Json)!;
+                var engine = engineNode.Deserialize<PartEngine>(Json) ?? throw new JsonException("'engine' is null");
+                var scene = JsonSerializer.Deserialize<Scene>(sceneText, Json) ?? throw new JsonException("'scene' is null");
                 return new LocalParts(scene, new EngineSetup(engine.Kind, engine.Search, Noise: engine.Noise, NoiseOracle: engine.NoiseOracle, NoiseAware: engine.NoiseAware));
             });
-            options = request["options"]!.Deserialize<RenderOptions>(Json)!;
+            options = Field(request, "options").Deserialize<RenderOptions>(Json) ?? throw new JsonException("'options' is null");
             window = request["window"]?.Deserialize<ImageWindow>(Json);
         }
-        catch (Exception e) when (e is JsonException or NullReferenceException or InvalidOperationException or ArgumentException or NotSupportedException)
+        catch (Exception e) when (e is JsonException or InvalidOperationException or ArgumentException or NotSupportedException)
         {
             throw new BridgeRequestException($"{Method}: the request cannot be read ({e.Message})");
         }
@@ -79,6 +79,8 @@ public static class PartRequest
             ["budget"] = JsonSerializer.SerializeToNode(part.Budget, Json),
         };
     }
+
+    private static JsonNode Field(JsonObject request, string name) => request[name] ?? throw new JsonException($"no '{name}'");
 
     /// <summary>The part a worker returned, as the render that sent it reads it.</summary>
     public static RenderResult ReadResult(JsonNode reply)

@@ -40,6 +40,7 @@ public static class TiledRender
         var image = new RgbImage(options.Width, options.Height);
         var passes = new PassMetrics[tiles.Count][];
         var expected = new double[tiles.Count];
+        var stage = TileProgress.StageOf(tiles.Count);
         void Run(ImageTile tile, IRenderProgress? tileProgress)
         {
             var traced = tile.Traced;
@@ -72,13 +73,13 @@ public static class TiledRender
         {
             // Parts rendered elsewhere report only when they are done.
             var done = 0;
-            progress?.Report($"{tiles.Count} tiles", 0);
+            progress?.Report(stage, 0);
             try
             {
                 Parallel.ForEach(tiles, new ParallelOptions { MaxDegreeOfParallelism = parts.Concurrency }, tile =>
                 {
                     Run(tile, null);
-                    progress?.Report($"{tiles.Count} tiles", (double)Interlocked.Increment(ref done) / tiles.Count);
+                    progress?.Report(stage, (double)Interlocked.Increment(ref done) / tiles.Count);
                 });
             }
             catch (AggregateException e)
@@ -89,7 +90,7 @@ public static class TiledRender
             }
         }
         // Every tile runs the same passes in the same order; each pass's metrics are summed over the tiles, in tile order.
-        progress?.Report($"{tiles.Count} tiles", 1);
+        progress?.Report(stage, 1);
         var merged = Enumerable.Range(0, passes[0].Length).Select(k => PassMetrics.Total(passes[0][k].Name, [.. passes.Select(p => p[k])])).ToArray();
         var expectedWrong = 0.0;
         foreach (var e in expected) expectedWrong += e;
@@ -103,7 +104,9 @@ public static class TiledRender
         private readonly List<string> _passes = [];
         private (int Tile, int Pass, string? Stage) _at;
 
-        public string Stage => $"{tiles} tiles";
+        public static string StageOf(int tiles) => $"{tiles} tiles";
+
+        public string Stage => StageOf(tiles);
 
         public void Start(int tile)
         {
