@@ -139,11 +139,12 @@ public static class CommonOptions
 
     /// <summary>The gate rates of a device noise model (<see cref="DeviceNoiseModel"/>): <c>1q=P,2q=P</c>.</summary>
     public static Option<string?> DeviceNoise() => DeviceModelPart("--device-noise", "1q=P,2q=P", text => DeviceNoiseModel.Parse(text, null, out var error) is null ? error : null,
-        "Device noise model: depolarizing rate 1q after each one-qubit gate and 2q on each qubit after each two-qubit gate, no noise at the measurement itself (see --readout-error), e.g. 1q=1e-3,2q=5e-2; a key left out is 0. Runs the QCoin paper's device circuits: single-qubit coins rotated to the mean the host computes, and QSS on them. Default: none.");
+        "Device noise model instead of --noise: depolarizing rate 1q after each one-qubit gate and 2q on each qubit after each gate on two or more qubits, no noise at the measurement itself (see --readout-error), e.g. 1q=1e-3,2q=5e-2; a key left out is 0."
+        + " render and search: the analytic engine's searches, on the oracle --noise-oracle names; supersample: the QCoin paper's device circuits (single-qubit coins rotated to the mean the host computes, and QSS on them). Default: none.");
 
     /// <summary>The readout error of a device noise model: <c>P</c> or <c>P0,P1</c>.</summary>
     public static Option<string?> ReadoutError() => DeviceModelPart("--readout-error", "P|P0,P1", text => DeviceNoiseModel.Parse(null, text, out var error) is null ? error : null,
-        "Readout error of the device noise model, applied to each measured bit with the seeded generator: P for both flips, or P0,P1 with P0 = P(read 1 | 0) and P1 = P(read 0 | 1). Default: none.");
+        "Readout error of the device noise model, applied to each measured bit (a search's index, a coin's heads, a QSS readout) with the seeded generator: P for both flips, or P0,P1 with P0 = P(read 1 | 0) and P1 = P(read 0 | 1). Default: none.");
 
     // One part of the device model's text, validated where it is parsed: the problem (a full line naming the option) or null.
     private static Option<string?> DeviceModelPart(string name, string helpName, Func<string, string?> problem, string description) =>

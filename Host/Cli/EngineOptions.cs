@@ -56,6 +56,10 @@ public sealed class EngineOptions
         HelpName = "L",
     }.Must(loss => NoiseModel.LossProblem(loss) is { } problem ? $"--qubit-loss: {problem}" : null);
 
+    public readonly Option<string?> DeviceNoise = CommonOptions.DeviceNoise();
+
+    public readonly Option<string?> ReadoutError = CommonOptions.ReadoutError();
+
     public readonly Option<FileInfo?> Cluster = CommonOptions.LocalBridgesOrCluster();
 
     private bool _imagePartsOnCluster;
@@ -98,6 +102,9 @@ public sealed class EngineOptions
     /// <summary>The noise model a parse result asks for (validated at parse time).</summary>
     public NoiseModel GetNoise(ParseResult parse) => NoiseModel.Of(parse.GetValue(Noise), parse.GetValue(QubitLoss));
 
+    /// <summary>The device model --device-noise and --readout-error ask for, or null when neither is given.</summary>
+    public DeviceNoiseModel? GetDevice(ParseResult parse) => CommonOptions.GetDeviceNoise(parse, DeviceNoise, ReadoutError);
+
     /// <summary>
     /// The cluster's bridges when <c>--cluster</c> names a file and the engine runs Q# (or, after <see cref="WithImagePartsOnCluster"/>,
     /// is seeded); null otherwise (the engine then starts local bridges of its own, or needs none). Connecting fails with one line
@@ -112,6 +119,6 @@ public sealed class EngineOptions
     {
         command.AddOptions(Engine, Seed, Workers);
         if (_accepted.Any(k => k.RunsQSharp)) command.AddOptions(MaxQubits, Cluster);
-        if (_accepted.Any(k => k.SearchesWithGrover)) command.AddOptions(Noise, QubitLoss);
+        if (_accepted.Any(k => k.SearchesWithGrover)) command.AddOptions(Noise, QubitLoss, DeviceNoise, ReadoutError);
     }
 }

@@ -63,9 +63,9 @@ public sealed class RenderCommand : Command
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         using var bridges = _engine.StartBridges(parse);
-        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
+        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel, settings.Device);
         var run = RenderRunView.RunAndPrint(settings, bridges);
-        _json.Write(parse, run.Figures, _engine, run.RanOn, Output.RunNoise.Of(settings.Engine, settings.NoiseModel, settings.NoiseDescription));
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.RunNoise);
         return ExitCodes.Success;
     }
 
@@ -79,6 +79,6 @@ public sealed class RenderCommand : Command
         return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
             parse.GetValue(_output) ?? $"{DefaultScene.StemOf(sceneFile?.Name)}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), MaxMemory: OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes,
-            NoiseOracle: _engine.GetNoiseOracle(parse), NoiseAware: parse.GetValue(_noiseAware));
+            NoiseOracle: _engine.GetNoiseOracle(parse), NoiseAware: parse.GetValue(_noiseAware), Device: _engine.GetDevice(parse));
     }
 }

@@ -75,17 +75,12 @@ public sealed class SupersampleCommand : Command
 
     private readonly EngineOptions _engine = new(EngineKind.Analytic, EngineKind.Analytic, EngineKind.FullState);
 
-    private readonly Option<string?> _deviceNoise = CommonOptions.DeviceNoise();
-
-    private readonly Option<string?> _readoutError = CommonOptions.ReadoutError();
-
     private readonly JsonOption _json = new();
 
     public SupersampleCommand() : base("supersample", "Estimate each pixel's mean over s x s subpixels (from an image file or a scene) with Monte Carlo, QSS, QCoin, MLAE, IQAE, FAE, BAE or power-law AE; print the error against the exact average.")
     {
         this.AddOptions(_image, _scene, _size, _subpixels, _method, _queries, _steps, _levels, _counterBits, _planes, _qssValues, _output);
         _engine.AddTo(this);
-        this.AddOptions(_deviceNoise, _readoutError);
         _json.AddTo(this);
         _method.Choices();
         _qssValues.Choices();
@@ -98,7 +93,7 @@ public sealed class SupersampleCommand : Command
     {
         var settings = MethodSettings(r);
         if ((SupersampleRunSettings.InputProblem(r.GetValue(_image) is not null, r.GetValue(_scene) is not null, r.GetValue(_size) is not null,
-            r.GetValue(_engine.Noise) is not null, r.GetValue(_deviceNoise) is not null || r.GetValue(_readoutError) is not null) ?? settings.Problem()) is { } problem) r.AddError(problem);
+            r.GetValue(_engine.Noise) is not null, r.GetValue(_engine.DeviceNoise) is not null || r.GetValue(_engine.ReadoutError) is not null) ?? settings.Problem()) is { } problem) r.AddError(problem);
     }
 
     // The options with a default are read through ValueOr (the action reads the same values from the parse).
@@ -128,6 +123,6 @@ public sealed class SupersampleCommand : Command
         return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size, parse.GetValue(_engine.Engine),
             parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{DefaultScene.StemOf(imageFile?.Name ?? sceneFile?.Name)}-{OptionRules.ChoiceName(method.Method)}.png",
             Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse),
-            Device: CommonOptions.GetDeviceNoise(parse, _deviceNoise, _readoutError));
+            Device: _engine.GetDevice(parse));
     }
 }

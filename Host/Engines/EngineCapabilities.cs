@@ -23,6 +23,12 @@ public static class EngineCapabilities
         /// <summary>Runs the QDK's qubit-loss model.</summary>
         public bool ModelsQubitLoss => kind == EngineKind.FullState;
 
+        /// <summary>
+        /// Runs a device noise model (gate rates by arity, readout error): the analytic engine through its approximation. The
+        /// simulators run one Pauli rate on every gate of their searches' circuits.
+        /// </summary>
+        public bool RunsDeviceNoise => kind == EngineKind.Analytic;
+
         /// <summary>Runs Pauli noise through its depolarizing approximation rather than the noisy simulator.</summary>
         public bool ApproximatesNoise => kind == EngineKind.Analytic;
 

@@ -22,34 +22,39 @@ public static class EngineFactory
     /// </summary>
     /// <remarks>With <paramref name="noiseAware"/> and an approximation, the search's miss rates take the noisy runs' success.</remarks>
     public static IHitSearch CreateSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null,
-        DepolarizingApproximation? approximation = null, bool noiseAware = false) =>
-        kind.SearchesWithGrover
-            ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise ?? NoiseModel.None, approximation), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates,
-                success: noiseAware && approximation is not null && noise is { IsNoiseless: false } ? approximation.NoisySuccess(noise) : null,
-                pooled: kind == EngineKind.Analytic && (noise ?? NoiseModel.None).IsNoiseless)
+        DepolarizingApproximation? approximation = null, bool noiseAware = false, DeviceNoiseModel? device = null)
+    {
+        noise ??= NoiseModel.None;
+        var noisy = !noise.IsNoiseless || device is { IsNoiseless: false };
+        return kind.SearchesWithGrover
+            ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise, approximation, device), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates,
+                success: noiseAware && approximation is not null && noisy ? device is null ? approximation.NoisySuccess(noise) : approximation.NoisySuccess(CircuitRates.Of(device)) : null,
+                pooled: kind == EngineKind.Analytic && !noisy)
             : kind switch
             {
                 EngineKind.Classical => new ClassicalHitSearch(),
                 EngineKind.Bvh => new BvhHitSearch(),
                 _ => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
             };
+    }
 
     /// <summary>
     /// A Grover engine, its noise model checked; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines
     /// start bridges of their own, or use <paramref name="pool"/> without stopping it when they are disposed.
     /// </summary>
-    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null)
+    public static IGroverEngine Create(EngineKind kind, SeededRandom root, int workers, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null, DeviceNoiseModel? device = null)
     {
         noise ??= NoiseModel.None;
-        CheckNoise(kind, noise);
-        return Grover(kind, root, workers, maxQubits, pool, noise);
+        CheckNoise(kind, noise, device);
+        return Grover(kind, root, workers, maxQubits, pool, noise, device: device);
     }
 
-    private static IGroverEngine Grover(EngineKind kind, SeededRandom root, int workers, int? maxQubits, BridgePool? pool, NoiseModel noise, DepolarizingApproximation? approximation = null) => kind switch
+    private static IGroverEngine Grover(EngineKind kind, SeededRandom root, int workers, int? maxQubits, BridgePool? pool, NoiseModel noise, DepolarizingApproximation? approximation = null,
+        DeviceNoiseModel? device = null) => kind switch
     {
         EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise),
         EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null, noise: noise),
-        EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise, approximation),
+        EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise, approximation, device),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
     };
 
@@ -57,8 +62,10 @@ public static class EngineFactory
     /// The noise model as results on <paramref name="kind"/> name it: the analytic engine adds its approximation and the
     /// oracle it counts (the lookup oracle's when none is given), the simulators the oracle they run.
     /// </summary>
-    public static string NoiseDescription(EngineKind kind, NoiseModel noise, DepolarizingApproximation? approximation = null) =>
-        kind.ApproximatesNoise ? (approximation ?? DepolarizingApproximation.Default).Description(noise)
+    public static string NoiseDescription(EngineKind kind, NoiseModel noise, DepolarizingApproximation? approximation = null, DeviceNoiseModel? device = null) =>
+        device is not null ? kind.ApproximatesNoise ? (approximation ?? DepolarizingApproximation.Default).Description(device)
+            : $"{device.Description()}, on the {(kind.SimulatesOracleGates ? NoiseOracle.GateLevel : NoiseOracle.Lookup).Description()}"
+        : kind.ApproximatesNoise ? (approximation ?? DepolarizingApproximation.Default).Description(noise)
         : noise.IsNoiseless || !kind.SearchesWithGrover ? noise.Description()
         : $"{noise.Description()}, on the {(kind.SimulatesOracleGates ? NoiseOracle.GateLevel : NoiseOracle.Lookup).Description()}";
 
@@ -75,13 +82,23 @@ public static class EngineFactory
     }
 
     /// <summary>Refuses, as a usage error naming the option, a noise model the engine cannot run.</summary>
-    public static void CheckNoise(EngineKind kind, NoiseModel noise)
+    public static void CheckNoise(EngineKind kind, NoiseModel noise, DeviceNoiseModel? device = null)
     {
+        if (device is not null)
+        {
+            if (!noise.IsNoiseless) throw new UserError("--noise and --device-noise/--readout-error: give one noise model, not both");
+            if (!kind.SearchesWithGrover) throw new UserError($"--device-noise/--readout-error: the {Name(kind)} engine runs no quantum circuit");
+            if (!kind.RunsDeviceNoise) throw new UserError($"--device-noise/--readout-error: {DeviceNoiseUnsupported(kind)}");
+        }
         if (noise.QubitLoss > 0 && !kind.ModelsQubitLoss)
             throw new UserError(kind.SimulatesOracleGates ? $"--qubit-loss: {GateEngine.LossUnsupported}" : $"--qubit-loss: the {Name(kind)} engine does not model qubit loss (its depolarizing approximation covers Pauli noise); use --engine fullstate");
         if (!noise.IsNoiseless && !kind.SearchesWithGrover)
             throw new UserError($"--noise: the {Name(kind)} engine runs no quantum circuit");
     }
+
+    /// <summary>Why <paramref name="kind"/> cannot run a device model.</summary>
+    private static string DeviceNoiseUnsupported(EngineKind kind) =>
+        $"the {Name(kind)} engine runs one Pauli rate on every gate (--noise); a device model runs on the analytic engine";
 
     /// <summary>Where a Q# engine's work runs, for reports: the cluster's workers or this machine.</summary>
     public static string Where(EngineKind kind, BridgePool? bridges, int workers) => Place(kind, bridges, workers).Description;

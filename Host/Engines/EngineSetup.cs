@@ -18,6 +18,7 @@ namespace QuantumRayTracing.Engines;
 /// <param name="NoiseAware">The passes plan with the noisy runs' success (analytic engine under noise), not the ideal one.</param>
 /// <param name="ImagePartsOnCluster">A seeded engine renders its image parts on the workers of <paramref name="Pool"/>'s cluster
 /// (<see cref="Rendering.RemoteParts"/>; `render --cluster`); otherwise here, whatever pool its Q# counterparts are given.</param>
+/// <param name="Device">A device noise model (gate rates by arity, readout error) instead of <paramref name="Noise"/>; null for none.</param>
 public sealed record EngineSetup(
     EngineKind Kind,
     QSearchOptions Search,
@@ -27,9 +28,13 @@ public sealed record EngineSetup(
     BridgePool? Pool = null,
     NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
     bool NoiseAware = false,
-    bool ImagePartsOnCluster = false)
+    bool ImagePartsOnCluster = false,
+    DeviceNoiseModel? Device = null)
 {
     public EngineSetup(EngineKind kind) : this(kind, new QSearchOptions()) { }
 
     public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
+
+    /// <summary>The engine runs under some noise: a Pauli model or a device model.</summary>
+    public bool IsNoisy => !NoiseModel.IsNoiseless || Device is { IsNoiseless: false };
 }

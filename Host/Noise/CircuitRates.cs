@@ -20,4 +20,22 @@ public sealed record CircuitRates(NoiseModel OneQubit, NoiseModel TwoQubit, Nois
         ArgumentNullException.ThrowIfNull(device);
         return new(NoiseModel.Depolarizing(device.OneQubit), NoiseModel.Depolarizing(device.TwoQubit), NoiseModel.None, device.ReadZeroAsOne, device.ReadOneAsZero);
     }
+
+    public bool HasReadoutError => ReadZeroAsOne > 0 || ReadOneAsZero > 0;
+
+    /// <summary>No gate noise and no readout error: the engines take their noiseless path.</summary>
+    public bool IsNoiseless => OneQubit.IsNoiseless && TwoQubit.IsNoiseless && Measurement.IsNoiseless && !HasReadoutError;
+
+    /// <summary>The one model acting everywhere when these rates are a <see cref="NoiseModel"/>'s; null when they differ by place or read with error.</summary>
+    public NoiseModel? Uniform => OneQubit == TwoQubit && TwoQubit == Measurement && !HasReadoutError ? OneQubit : null;
+
+    /// <summary>The same gate noise with a clean readout: what acts on the qubits before a measured bit is read.</summary>
+    public CircuitRates GatesOnly => this with { ReadZeroAsOne = 0, ReadOneAsZero = 0 };
+
+    /// <summary>
+    /// The noise after a gate of <paramref name="kind"/> as circuit summaries name them ("H", "CX", "CCX", "SWAP", "M" for a
+    /// measurement): a measurement's, a one-qubit gate's, or that of a gate on two or more qubits.
+    /// </summary>
+    public NoiseModel For(string kind) =>
+        kind == "M" ? Measurement : NoiseLocations.QubitsOf(kind) >= 2 ? TwoQubit : OneQubit;
 }

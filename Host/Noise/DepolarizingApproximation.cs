@@ -49,6 +49,26 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
             ? _lookupIterations.GetOrAdd((count, marked), static k => NoiseLocations.LookupIteration(new MarkedSet(k.Count, Enumerable.Range(0, k.Marked).ToArray())))
             : NoiseLocations.LookupIteration(set)));
 
+    /// <summary>
+    /// Φ of a Grover run under <paramref name="rates"/>' gate noise, each gate at its arity's rate (a device model; their readout
+    /// error is the engine's to apply to the index it reads): the gate-level circuit's exposure by gate kind, the lookup circuit's
+    /// evolution, or its counted locations by arity at share s. Rates that are one <see cref="NoiseModel"/> give that model's Φ.
+    /// </summary>
+    public double RunFidelity(CircuitRates rates, GroverRequest request) =>
+        RunFidelity(rates, request.Marked.Count, request.Marked.MarkedCount, request.Iterations, request.Marked);
+
+    private double RunFidelity(CircuitRates rates, int count, int marked, int iterations, MarkedSet? set)
+    {
+        var gates = rates.GatesOnly;
+        if (gates.Uniform is { } noise) return RunFidelity(noise, count, marked, iterations, set);
+        if (GateLevel is { } gate) return gate.RunFidelity(gates, count, marked, iterations);
+        if (LookupSearchModel.Evolves(count)) return LookupSearchModel.Shared.RunFidelity(gates, count, marked, iterations);
+        set ??= new MarkedSet(count, Enumerable.Range(0, marked));
+        var multiQubit = (double)iterations * NoiseLocations.LookupIterationMultiQubit(set);
+        var oneQubit = SearchRegisters.For(count).IndexQubits + (double)iterations * NoiseLocations.LookupIteration(set) - multiQubit;
+        return Fidelity(gates.OneQubit, oneQubit) * Fidelity(gates.TwoQubit, multiQubit) * Fidelity(gates.Measurement, SearchRegisters.For(count).IndexQubits);
+    }
+
     /// <summary>P(marked) of a run with fidelity Φ: the ideal share weighted by Φ, the uniform share by 1 − Φ.</summary>
     public static double MarkedProbability(int count, int marked, int iterations, double fidelity)
     {
@@ -81,6 +101,39 @@ public sealed record DepolarizingApproximation(double HarmfulShare = Depolarizin
     /// </summary>
     public FalseNegativeRate.RunSuccess NoisySuccess(NoiseModel noise) => (count, marked, iterations) =>
         MarkedProbability(count, marked, iterations, RunFidelity(noise, count, marked, iterations, set: null));
+
+    /// <summary>
+    /// <see cref="NoisySuccess(NoiseModel)"/> under <paramref name="rates"/>: Φ from their gate noise, and each read index's bits
+    /// flipped by their readout error (<see cref="MarkedReadout"/>, on the typical marked set).
+    /// </summary>
+    public FalseNegativeRate.RunSuccess NoisySuccess(CircuitRates rates)
+    {
+        ArgumentNullException.ThrowIfNull(rates);
+        if (rates.Uniform is { } noise) return NoisySuccess(noise);
+        return (count, marked, iterations) =>
+        {
+            var fidelity = RunFidelity(rates, count, marked, iterations, set: null);
+            if (!rates.HasReadoutError) return MarkedProbability(count, marked, iterations, fidelity);
+            var readout = _readouts.GetOrAdd((rates, count, marked), static k => MarkedReadout.Of(k.Rates, LookupSearchModel.TypicalSet(k.Count, k.Marked)));
+            return readout.Read(GroverProbability.OfMarked(count, marked, iterations), fidelity);
+        };
+    }
+
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(CircuitRates Rates, int Count, int Marked), MarkedReadout> _readouts = new();
+
+    /// <summary>How the model is named beside every result it produces under a device model.</summary>
+    public string Description(DeviceNoiseModel device)
+    {
+        ArgumentNullException.ThrowIfNull(device);
+        var readout = device.HasReadoutError ? "; the readout error flips each bit of every index the engine samples, with its seeded generator" : "";
+        return GateLevel is { } gate
+            ? $"{device.Description()}, global depolarizing approximation over the {NoiseOracle.GateLevel.Description()}, its harm traced once per oracle shape (here on {gate.Shape}):"
+                + " each gate kind at its arity's rate, its harm counted per noise location"
+                + (gate.Channels is null ? "" : $", the iterations simulated as channels on the index register with each gate kind weighed by its harm (an approximation; whole-harm share {SearchChannels.FittedWholeHarm:0.00}, fitted)")
+                + readout
+            : $"{device.Description()}, over the {NoiseOracle.Lookup.Description()}: its circuit evolved exactly as a density matrix with each gate at its arity's rate, on a typical marked set per N and t, read as Φ of the depolarizing form;"
+                + $" N above 64 or not a power of two: harmful share {HarmfulShare:0.###} of counted locations at their arity's rate" + readout;
+    }
 
     /// <summary>How the model is named beside every result it produces.</summary>
     public string Description(NoiseModel noise) =>

@@ -31,6 +31,9 @@ public sealed record DeviceNoiseModel
 
     public bool HasReadoutError => ReadZeroAsOne > 0 || ReadOneAsZero > 0;
 
+    /// <summary>No gate noise and no readout error: the engines take their noiseless path.</summary>
+    public bool IsNoiseless => OneQubit == 0 && TwoQubit == 0 && !HasReadoutError;
+
     /// <summary>The model with its readout error left out: the negative control of a readout-sensitive check.</summary>
     public DeviceNoiseModel WithoutReadout() => new(OneQubit, TwoQubit);
 
@@ -39,7 +42,7 @@ public sealed record DeviceNoiseModel
 
     /// <summary>The model as every printed result names it.</summary>
     public string Description() =>
-        $"device model: depolarizing p1 = {G(OneQubit)} after one-qubit gates, p2 = {G(TwoQubit)} on each qubit after two-qubit gates, "
+        $"device model: depolarizing p1 = {G(OneQubit)} after one-qubit gates, p2 = {G(TwoQubit)} on each qubit after gates on two or more qubits, "
         + (HasReadoutError ? $"readout error P(1|0) = {G(ReadZeroAsOne)}, P(0|1) = {G(ReadOneAsZero)}" : "no readout error");
 
     public override string ToString() => Description();

@@ -43,37 +43,59 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     /// <summary>The exposure of a run with <paramref name="iterations"/> Grover iterations.</summary>
     public NoiseExposure Run(int iterations) => Outside + (double)iterations * Iteration;
 
-    private readonly System.Collections.Concurrent.ConcurrentDictionary<NoiseModel, (double Outside, double Iteration)> _logFidelities = new();
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(NoiseModel Outside, NoiseModel Iteration), (double Outside, double Iteration)> _logFidelities = new();
 
-    private readonly System.Collections.Concurrent.ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, int Iterations), double> _channelFidelities = new();
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(NoiseModel Outside, NoiseModel Iteration, int Count, int Marked, int Iterations), double> _channelFidelities = new();
 
     /// <summary>Φ = F₀ · F^r of a run with <paramref name="iterations"/> iterations, the graded harms taken as independent.</summary>
-    public double IndependentHarmsFidelity(NoiseModel noise, int iterations)
+    public double IndependentHarmsFidelity(NoiseModel noise, int iterations) => IndependentHarmsFidelity(noise, noise, iterations);
+
+    // The preparation and measurement under one model, the iterations under another: a device model's rates, each part's own mix of gates.
+    private double IndependentHarmsFidelity(NoiseModel outside, NoiseModel iteration, int iterations)
     {
-        var (outside, iteration) = _logFidelities.GetOrAdd(noise, n => (Math.Log(Outside.Fidelity(n)), Math.Log(Iteration.Fidelity(n))));
-        return Math.Exp(outside + iterations * iteration);
+        var logs = _logFidelities.GetOrAdd((outside, iteration), n => (Math.Log(Outside.Fidelity(n.Outside)), Math.Log(Iteration.Fidelity(n.Iteration))));
+        return Math.Exp(logs.Outside + iterations * logs.Iteration);
     }
 
     /// <summary>
     /// Φ of a run with <paramref name="iterations"/> iterations over <paramref name="count"/> values, <paramref name="marked"/>
     /// of them marked: with <see cref="Channels"/>, the share of the ideal run's excess over the uniform readout that the
     /// simulated channels keep, (P − u) / (P₀ − u), clamped to [0, 1] (a run past its optimum, P₀ below u, can be dephased
-    /// beyond u); otherwise <see cref="IndependentHarmsFidelity"/>. F₀ (<see cref="Outside"/>) stays a whole-harm factor.
+    /// beyond u); otherwise <see cref="IndependentHarmsFidelity(NoiseModel, int)"/>. F₀ (<see cref="Outside"/>) stays a whole-harm factor.
     /// </summary>
-    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations) =>
-        Channels is null || noise.PerGate <= 0 ? IndependentHarmsFidelity(noise, iterations)
-        : _channelFidelities.GetOrAdd((noise, count, marked, iterations),
-            static (key, self) => self.RunFidelity(key.Noise, key.Count, key.Marked, key.Iterations, SearchChannels.FittedWholeHarm), this);
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations) => RunFidelity(noise, noise, count, marked, iterations);
+
+    /// <summary>
+    /// The same under <paramref name="rates"/>' gate noise (their readout is not the circuit's): the preparation and measurement
+    /// and the iterations each under the model that leaves their graded harm as the rates leave it (<see cref="NoiseExposure.Effective"/>):
+    /// exact for the harms taken as independent; for the channels, an approximation that weighs each channel's gate kinds by
+    /// their harm.
+    /// </summary>
+    public double RunFidelity(CircuitRates rates, int count, int marked, int iterations)
+    {
+        ArgumentNullException.ThrowIfNull(rates);
+        var gates = rates.GatesOnly;
+        return gates.Uniform is { } noise ? RunFidelity(noise, count, marked, iterations)
+            : RunFidelity(Outside.Effective(gates), Iteration.Effective(gates), count, marked, iterations);
+    }
+
+    private double RunFidelity(NoiseModel outside, NoiseModel iteration, int count, int marked, int iterations) =>
+        Channels is null || iteration.PerGate <= 0 ? IndependentHarmsFidelity(outside, iteration, iterations)
+        : _channelFidelities.GetOrAdd((outside, iteration, count, marked, iterations),
+            static (key, self) => self.ChannelFidelity(key.Outside, key.Iteration, key.Count, key.Marked, key.Iterations, SearchChannels.FittedWholeHarm), this);
 
     /// <summary>The same with <paramref name="wholeHarm"/> for the harm of an error the grading cannot follow (the fit tries several), not kept.</summary>
-    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, double wholeHarm)
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, double wholeHarm) =>
+        ChannelFidelity(noise, noise, count, marked, iterations, wholeHarm);
+
+    private double ChannelFidelity(NoiseModel outside, NoiseModel iteration, int count, int marked, int iterations, double wholeHarm)
     {
-        if (Channels is not { } channels || noise.PerGate <= 0) return IndependentHarmsFidelity(noise, iterations);
+        if (Channels is not { } channels || iteration.PerGate <= 0) return IndependentHarmsFidelity(outside, iteration, iterations);
         var register = 1 << Search.SearchRegisters.For(count).IndexQubits;
         return DepolarizingApproximation.FidelityOf(register, marked, iterations,
-                () => channels.MarkedProbability(noise, register, marked, iterations, Outside.Fidelity(noise), wholeHarm)) is { } fidelity
+                () => channels.MarkedProbability(iteration, register, marked, iterations, Outside.Fidelity(outside), wholeHarm)) is { } fidelity
             ? Math.Clamp(fidelity, 0, 1)
-            : IndependentHarmsFidelity(noise, iterations);
+            : IndependentHarmsFidelity(outside, iteration, iterations);
     }
 
     /// <summary>

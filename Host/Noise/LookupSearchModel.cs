@@ -16,7 +16,7 @@ public sealed class LookupSearchModel
     /// <summary>The model the analytic engine and the model check share.</summary>
     public static readonly LookupSearchModel Shared = new();
 
-    private readonly ConcurrentDictionary<(NoiseModel Noise, int Count, int Marked, bool NoisyOutside), Lazy<LookupCircuitDensity.Evolution>> _evolutions = new();
+    private readonly ConcurrentDictionary<(CircuitRates Rates, int Count, int Marked, bool NoisyOutside), Lazy<LookupCircuitDensity.Evolution>> _evolutions = new();
 
     /// <summary>Evolutions kept at once.</summary>
     public const int MaxKept = 16;
@@ -42,25 +42,35 @@ public sealed class LookupSearchModel
     /// P(marked) of a run with <paramref name="iterations"/> iterations over <paramref name="count"/> indices, <paramref name="marked"/>
     /// of them marked, under <paramref name="noise"/>; with <paramref name="noisyOutside"/> false the preparation and measurement are noiseless.
     /// </summary>
-    public double MarkedProbability(NoiseModel noise, int count, int marked, int iterations, bool noisyOutside = true)
+    public double MarkedProbability(NoiseModel noise, int count, int marked, int iterations, bool noisyOutside = true) =>
+        MarkedProbability(CircuitRates.Of(noise), count, marked, iterations, noisyOutside);
+
+    /// <summary>The same under <paramref name="rates"/>: each gate's rate by its arity, and the readout error if they have one.</summary>
+    public double MarkedProbability(CircuitRates rates, int count, int marked, int iterations, bool noisyOutside = true)
     {
-        ArgumentNullException.ThrowIfNull(noise);
+        ArgumentNullException.ThrowIfNull(rates);
         if (marked == 0) return 0;
-        var key = (noise, count, marked, noisyOutside);
+        var key = (rates, count, marked, noisyOutside);
         // Each evolution holds its matrix (8 MB at N = 64): past a bound they are let go, and a later question evolves again.
         if (!_evolutions.ContainsKey(key) && _evolutions.Count >= MaxKept) _evolutions.Clear();
         return _evolutions.GetOrAdd(key,
-            static key => new(() => new LookupCircuitDensity.Evolution(TypicalSet(key.Count, key.Marked), CircuitRates.Of(key.Noise), key.NoisyOutside))).Value.MarkedProbability(iterations);
+            static key => new(() => new LookupCircuitDensity.Evolution(TypicalSet(key.Count, key.Marked), key.Rates, key.NoisyOutside))).Value.MarkedProbability(iterations);
     }
 
     /// <summary>
     /// Φ of the run as the analytic engine samples it (ideal with Φ, else a uniform index): the share of the ideal run's excess
     /// over the uniform readout t/2^n the noisy run keeps, clamped to [0, 1]; 1 where the ideal run reads no better than uniform.
     /// </summary>
-    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, bool noisyOutside = true)
+    public double RunFidelity(NoiseModel noise, int count, int marked, int iterations, bool noisyOutside = true) =>
+        RunFidelity(CircuitRates.Of(noise), count, marked, iterations, noisyOutside);
+
+    /// <summary>The same under <paramref name="rates"/>' gate noise; their readout error is left out, as the engine flips the bits it reads.</summary>
+    public double RunFidelity(CircuitRates rates, int count, int marked, int iterations, bool noisyOutside = true)
     {
-        if (noise.PerGate <= 0 || marked == 0) return 1;
-        return DepolarizingApproximation.FidelityOf(count, marked, iterations, () => MarkedProbability(noise, count, marked, iterations, noisyOutside)) is { } fidelity
+        ArgumentNullException.ThrowIfNull(rates);
+        var gates = rates.GatesOnly;
+        if (gates.IsNoiseless || marked == 0) return 1;
+        return DepolarizingApproximation.FidelityOf(count, marked, iterations, () => MarkedProbability(gates, count, marked, iterations, noisyOutside)) is { } fidelity
             ? Math.Clamp(fidelity, 0, 1)
             : 1;
     }

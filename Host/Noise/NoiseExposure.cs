@@ -59,6 +59,31 @@ public sealed record NoiseExposure(IReadOnlyDictionary<string, IReadOnlyDictiona
         return Math.Exp(log);
     }
 
+    /// <summary>
+    /// The one depolarizing-like model that leaves this circuit's harm as <paramref name="rates"/> leave it, Pauli by Pauli: p_P
+    /// with ln(1 − p_P) the mean of ln(1 − p_P(kind)) over gate kinds, each weighted by the harm its locations carry from P (the
+    /// graded harm; without it, the locations where P harms). Exact for <see cref="Fidelity"/>; for anything else that weighs
+    /// these locations differently from their harm (the index register's channels), an approximation.
+    /// </summary>
+    public NoiseModel Effective(CircuitRates rates)
+    {
+        ArgumentNullException.ThrowIfNull(rates);
+        if (rates.Uniform is { } uniform) return uniform;
+        double Rate(string pauli, Func<NoiseModel, double> rate)
+        {
+            var (weight, log) = (0.0, 0.0);
+            foreach (var kind in ByKind.Keys.Union(Harm?.Keys ?? []))
+            {
+                var w = Harm is { } graded ? graded.GetValueOrDefault(kind)?.GetValueOrDefault(pauli) ?? 0
+                    : ByKind[kind].Where(p => p.Key.Contains(pauli, StringComparison.Ordinal)).Sum(p => p.Value);
+                weight += w;
+                log += w * Math.Log(1 - Math.Min(rate(rates.For(kind)), 1 - 1e-12));
+            }
+            return weight > 0 ? 1 - Math.Exp(log / weight) : 0;
+        }
+        return new NoiseModel(Rate("X", n => n.Px), Rate("Y", n => n.Py), Rate("Z", n => n.Pz));
+    }
+
     public static NoiseExposure operator +(NoiseExposure a, NoiseExposure b) => Combine(a, b, 1);
 
     public static NoiseExposure operator -(NoiseExposure a, NoiseExposure b) => Combine(a, b, -1);

@@ -86,13 +86,29 @@ public static class NoiseLocations
     public static long FromCounts(IReadOnlyDictionary<string, long> gates, long measurements)
     {
         var total = 0L;
-        foreach (var (kind, count) in gates)
-        {
-            // "CCX" is X with two controls; no intrinsic gate's own name starts with C.
-            var controls = kind.TakeWhile(c => c == 'C').Count();
-            var targets = kind[controls..].TrimEnd('†') == "SWAP" ? 2 : 1;
-            total += count * (controls + targets);
-        }
+        foreach (var (kind, count) in gates) total += count * QubitsOf(kind);
         return total + measurements;
+    }
+
+    /// <summary>Qubits a gate of <paramref name="kind"/> touches: its controls, named by leading C's, and its target (SWAP two).</summary>
+    public static int QubitsOf(string kind)
+    {
+        ArgumentNullException.ThrowIfNull(kind);
+        // "CCX" is X with two controls; no intrinsic gate's own name starts with C.
+        var controls = kind.TakeWhile(c => c == 'C').Count();
+        return controls + (kind[controls..].TrimEnd('†') == "SWAP" ? 2 : 1);
+    }
+
+    /// <summary>
+    /// The locations of <see cref="LookupIteration"/> on gates of two or more qubits: the phases on the all-ones state (one
+    /// per oracle index and one in the diffusion), whose gates are CZ and CCX from n = 2 on; the rest follow one-qubit gates.
+    /// </summary>
+    public static long LookupIterationMultiQubit(MarkedSet marked)
+    {
+        ArgumentNullException.ThrowIfNull(marked);
+        var n = SearchRegisters.For(marked.Count).IndexQubits;
+        if (n < 2) return 0;
+        var oracleSize = 2 * marked.MarkedCount > marked.Count ? marked.Count - marked.MarkedCount : marked.MarkedCount;
+        return (oracleSize + 1L) * PhaseToAllOnes(n);
     }
 }

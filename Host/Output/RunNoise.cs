@@ -23,9 +23,9 @@ public sealed record RunNoise(string Model, IReadOnlyDictionary<string, double>?
         return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, description ?? EngineFactory.NoiseDescription(kind, noise));
     }
 
-    /// <summary>The record of a device model: its one- and two-qubit rates and readout flips.</summary>
-    public static RunNoise Of(EngineKind kind, DeviceNoiseModel device) =>
+    /// <summary>The record of a device model: its one- and two-qubit rates and readout flips; the description as the run printed it, or the model's own.</summary>
+    public static RunNoise Of(EngineKind kind, DeviceNoiseModel device, string? description = null) =>
         new(kind.ApproximatesNoise ? "device, depolarizing approximation" : "device",
             new Dictionary<string, double> { ["oneQubit"] = device.OneQubit, ["twoQubit"] = device.TwoQubit, ["readZeroAsOne"] = device.ReadZeroAsOne, ["readOneAsZero"] = device.ReadOneAsZero },
-            device.Description());
+            description ?? device.Description());
 }

@@ -21,7 +21,7 @@ public sealed class LocalParts : IPartRenderer
     {
         (_scene, _engine) = (scene, engine);
         // The noise approximation counts the scene's circuit once, for every part.
-        _approximation = engine.Kind.ApproximatesNoise && !engine.NoiseModel.IsNoiseless ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
+        _approximation = engine.Kind.ApproximatesNoise && engine.IsNoisy ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
     }
 
     public int Concurrency => 1;
@@ -29,7 +29,7 @@ public sealed class LocalParts : IPartRenderer
     public RenderResult Render(RenderOptions options, ImageWindow? window, IRenderProgress? progress)
     {
         using var search = EngineFactory.CreateSearch(_engine.Kind, new SeededRandom(options.Seed), _engine.Workers, _engine.Search,
-            _engine.MaxQubits, _engine.Pool, _engine.Noise, _approximation, _engine.NoiseAware);
+            _engine.MaxQubits, _engine.Pool, _engine.Noise, _approximation, _engine.NoiseAware, _engine.Device);
         return SceneRenderer.Render(_scene, search, options, progress, window);
     }
 }

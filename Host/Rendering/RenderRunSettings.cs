@@ -24,6 +24,7 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="MaxMemory">The peak memory a large render may be forecast to need (<see cref="RenderForecast"/>); null: what the machine has available.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts.</param>
 /// <param name="NoiseAware">The passes plan with the noisy runs' success probabilities (analytic engine).</param>
+/// <param name="Device">A device noise model (gate rates by arity, readout error) instead of <paramref name="Noise"/>; null for none.</param>
 public sealed record RenderRunSettings(
     Scene Scene,
     RenderOptions Options,
@@ -38,7 +39,8 @@ public sealed record RenderRunSettings(
     BridgePool? Pool = null,
     long? MaxMemory = null,
     NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
-    bool NoiseAware = false)
+    bool NoiseAware = false,
+    DeviceNoiseModel? Device = null)
 {
     /// <summary>Area lights or VPLs: the render samples light, and a converged reference shows its Monte Carlo noise.</summary>
     public bool SamplesLight => RenderDefaults.SamplesLight(Scene, Options);
@@ -51,21 +53,27 @@ public sealed record RenderRunSettings(
 
     public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
 
+    /// <summary>The engine runs under some noise: a Pauli model or a device model.</summary>
+    public bool IsNoisy => EngineSetup.IsNoisy;
+
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>The engine as <see cref="Renderer"/> builds it.</summary>
-    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, NoiseAware, ImagePartsOnCluster: Engine.IsSeedable && Pool?.Remote is not null);
+    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, NoiseAware, ImagePartsOnCluster: Engine.IsSeedable && Pool?.Remote is not null, Device);
 
     /// <summary>The noise model as this run's results name it.</summary>
     public string NoiseDescription => EngineFactory.NoiseDescription(Engine, NoiseModel,
-        Engine.ApproximatesNoise && !NoiseModel.IsNoiseless ? EngineFactory.Approximation(NoiseOracle, Scene) : null)
-        + (NoiseAware && !NoiseModel.IsNoiseless ? "; noise-aware passes (miss rates from the noisy runs' success)" : "");
+        Engine.ApproximatesNoise && IsNoisy ? EngineFactory.Approximation(NoiseOracle, Scene) : null, Device)
+        + (NoiseAware && IsNoisy ? "; noise-aware passes (miss rates from the noisy runs' success)" : "");
+
+    /// <summary>The noise as `--json` records it.</summary>
+    public RunNoise RunNoise => Device is { } device ? RunNoise.Of(Engine, device, NoiseDescription) : RunNoise.Of(Engine, NoiseModel, NoiseDescription);
 
     /// <summary>Refuses, before anything is printed or written, planning with a noise model the engine does not sample and an untraced circuit shape.</summary>
     public void EnsureRunnable()
     {
         if (NoiseAware && !Engine.ApproximatesNoise) throw new UserError("--noise-aware: only the analytic engine plans with its noise model; use --engine analytic");
-        if (Engine.ApproximatesNoise && !NoiseModel.IsNoiseless) EngineFactory.Approximation(NoiseOracle, Scene);
+        if (Engine.ApproximatesNoise && IsNoisy) EngineFactory.Approximation(NoiseOracle, Scene);
     }
 
     /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>

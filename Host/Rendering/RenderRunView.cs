@@ -45,10 +45,10 @@ public static class RenderRunView
     /// <summary>Where the run went, the cost per pass, the error against the references and the files written.</summary>
     public static void Print(RenderRunSettings settings, RenderRunResult run)
     {
-        var (kind, noise, figures) = (settings.Engine, settings.NoiseModel, run.Figures);
+        var (kind, noisy, figures) = (settings.Engine, settings.IsNoisy, run.Figures);
         var engineName = EngineFactory.Name(kind);
         AnsiConsole.WriteLine($"{engineName} ran on {run.RanOn.Description}");
-        if (!noise.IsNoiseless) engineName = $"{engineName} under {settings.NoiseDescription}";
+        if (noisy) engineName = $"{engineName} under {settings.NoiseDescription}";
         AnsiConsole.Write(MetricsTable(engineName, figures));
         var error = figures.Error;
         var sameSamples = settings.SamplesLight ? " with the same samples (search error alone)" : "";
@@ -59,7 +59,7 @@ public static class RenderRunView
             + (budget.Share is { } share ? $"budget {share:P1}" : "no budget (its searches run as configured)"));
         if (budget.Exceeded)
             AnsiConsole.WriteLine($"over budget: the expected wrong pixels stay above {budget.Allowed:0.0} after {BudgetRounds.MaxRounds} budget rounds per pass");
-        AnsiConsole.WriteLine(!noise.IsNoiseless
+        AnsiConsole.WriteLine(noisy
             ? "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)"
             : "(expected: an expectation from each search path's miss rate and finds)");
         if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } monteCarlo })

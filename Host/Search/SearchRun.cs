@@ -21,7 +21,7 @@ public static class SearchRun
             .ToArray();
         var clock = Stopwatch.StartNew();
         int rounds;
-        using (var engine = EngineFactory.Create(settings.Engine, new SeededRandom(settings.Seed), settings.LocalWorkers, settings.MaxQubits, settings.Pool, settings.NoiseModel))
+        using (var engine = EngineFactory.Create(settings.Engine, new SeededRandom(settings.Seed), settings.LocalWorkers, settings.MaxQubits, settings.Pool, settings.NoiseModel, settings.Device))
             rounds = QSearchDriver.Run(searches, engine, onRound);
         clock.Stop();
 

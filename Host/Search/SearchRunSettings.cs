@@ -18,6 +18,7 @@ namespace QuantumRayTracing.Search;
 /// <param name="MaxQubits">The widest circuit the engine may simulate; null keeps the engine's own limit.</param>
 /// <param name="Noise">The noise model the engine runs under; null for the ideal machine.</param>
 /// <param name="Pool">Bridges the engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
+/// <param name="Device">A device noise model (gate rates by arity, readout error) instead of <paramref name="Noise"/>; null for none.</param>
 public sealed record SearchRunSettings(
     int Count,
     IReadOnlyList<int>? Marked,
@@ -28,7 +29,8 @@ public sealed record SearchRunSettings(
     int? Workers = null,
     int? MaxQubits = null,
     NoiseModel? Noise = null,
-    BridgePool? Pool = null)
+    BridgePool? Pool = null,
+    DeviceNoiseModel? Device = null)
 {
     /// <summary>The marked set searched: the one given, or one index drawn from the seed's scenario stream.</summary>
     public MarkedSet MarkedSet => Marked is { } marked

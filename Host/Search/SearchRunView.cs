@@ -42,7 +42,7 @@ public static class SearchRunView
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
     }
 
-    private static string Noise(SearchRunSettings settings) => EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel);
+    private static string Noise(SearchRunSettings settings) => EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel, device: settings.Device);
 
     private static string Per(double value) => value.ToString("0.00", CultureInfo.InvariantCulture);
 
