@@ -44,9 +44,16 @@ public sealed class ClusterTileTests
     /// <summary>Every part through the wire format and a worker's executor, in this process: the tiled and the untiled image.</summary>
     [Theory]
     [MemberData(nameof(Engines))]
-    public void PartsThroughTheWireGiveTheLocalImage(EngineKind kind, double noise)
+    public void PartsThroughTheWireGiveTheLocalImage(EngineKind kind, double noise) =>
+        AssertPartsThroughTheWire(new EngineSetup(kind) { Noise = noise == 0 ? null : NoiseModel.Depolarizing(noise), NoiseAware = noise > 0 });
+
+    /// <summary>A device model (gate rates and readout error) travels with the part as the Pauli model does.</summary>
+    [Fact]
+    public void ADeviceModelTravelsWithThePart() =>
+        AssertPartsThroughTheWire(new EngineSetup(EngineKind.Analytic) { Device = new DeviceNoiseModel(1e-4, 1e-3, 0.02, 0.04), NoiseAware = true });
+
+    private static void AssertPartsThroughTheWire(EngineSetup engine)
     {
-        var engine = new EngineSetup(kind) { Noise = noise == 0 ? null : NoiseModel.Depolarizing(noise), NoiseAware = noise > 0 };
         var wire = new WireTransport(new WorkerExecutor(new EchoExecutor()));
         var (local, remote) = (new LocalParts(Qornell, engine), new RemoteParts(wire, 3, Qornell, engine));
 

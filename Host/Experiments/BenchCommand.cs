@@ -20,6 +20,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchAccuracyCommand());
         Subcommands.Add(new BenchNoiseCommand());
         Subcommands.Add(new BenchNoiseEstimationCommand());
+        Subcommands.Add(new BenchDeviceNoiseCommand());
         Subcommands.Add(new BenchEstimationCommand());
         Subcommands.Add(new BenchFullStatePerformanceCommand());
         Subcommands.Add(new BenchClusterPerformanceCommand());

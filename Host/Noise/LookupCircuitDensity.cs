@@ -387,15 +387,7 @@ public static class LookupCircuitDensity
                 // The measurement's flip, then the readout's: a 0 is read as 1 if exactly one of them turns it.
                 var zeroAsOne = (1 - flip) * rates.ReadZeroAsOne + flip * (1 - rates.ReadOneAsZero);
                 var oneAsZero = (1 - flip) * rates.ReadOneAsZero + flip * (1 - rates.ReadZeroAsOne);
-                var read = new double[values];
-                for (var v = 0; v < values; v++)
-                {
-                    var one = (v >> q & 1) == 1;
-                    var turn = one ? oneAsZero : zeroAsOne;
-                    read[v] += (1 - turn) * distribution[v];
-                    read[v ^ (1 << q)] += turn * distribution[v];
-                }
-                distribution = read;
+                distribution = MarkedReadout.FlipBit(distribution, q, zeroAsOne, oneAsZero);
             }
             var total = 0.0;
             foreach (var m in _marked.Indices) total += distribution[m];
