@@ -89,7 +89,7 @@ public static class DeviceNoiseExperiment
         renders.Row(["none (ideal)", "", "", F2(noiseless.Result.Total.PerRayConservative), P(noiseless.Error.Nrmse), N(noiseless.Error.DifferentPixels), Seconds(noiseless.WallTime), "1.0"]);
         // Under any noise the searches run one by one, not pooled: this row costs that alone.
         var unpooled = RenderMeasurement.Run(settings.Scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(Negligible)), options, classical);
-        renders.Row([$"Pauli p = {Negligible:0e0} (searches unpooled)", "lookup", "ideal miss rates", F2(unpooled.Result.Total.PerRayConservative), P(unpooled.Error.Nrmse),
+        renders.Row([$"Pauli p = {Negligible:0e0} (searches unpooled)", "gate-level", "ideal miss rates", F2(unpooled.Result.Total.PerRayConservative), P(unpooled.Error.Nrmse),
             N(unpooled.Error.DifferentPixels), Seconds(unpooled.WallTime), (unpooled.WallTime / noiseless.WallTime).ToString("0.0", CultureInfo.InvariantCulture)]);
         foreach (var (name, device) in Devices)
             foreach (var oracle in new[] { NoiseOracle.GateLevel, NoiseOracle.Lookup })
