@@ -30,7 +30,7 @@ public sealed record CircuitRates(NoiseModel OneQubit, NoiseModel TwoQubit, Nois
     public NoiseModel? Uniform => OneQubit == TwoQubit && TwoQubit == Measurement && !HasReadoutError ? OneQubit : null;
 
     /// <summary>The same gate noise with a clean readout: what acts on the qubits before a measured bit is read.</summary>
-    public CircuitRates GatesOnly => this with { ReadZeroAsOne = 0, ReadOneAsZero = 0 };
+    public CircuitRates GatesOnly => HasReadoutError ? this with { ReadZeroAsOne = 0, ReadOneAsZero = 0 } : this;
 
     /// <summary>
     /// The noise after a gate of <paramref name="kind"/> as circuit summaries name them ("H", "CX", "CCX", "SWAP", "M" for a

@@ -75,9 +75,12 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     {
         ArgumentNullException.ThrowIfNull(rates);
         var gates = rates.GatesOnly;
-        return gates.Uniform is { } noise ? RunFidelity(noise, count, marked, iterations)
-            : RunFidelity(Outside.Effective(gates), Iteration.Effective(gates), count, marked, iterations);
+        if (gates.Uniform is { } noise) return RunFidelity(noise, count, marked, iterations);
+        var (outside, iteration) = _effective.GetOrAdd(gates, static (g, self) => (self.Outside.Effective(g), self.Iteration.Effective(g)), this);
+        return RunFidelity(outside, iteration, count, marked, iterations);
     }
+
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<CircuitRates, (NoiseModel Outside, NoiseModel Iteration)> _effective = new();
 
     private double RunFidelity(NoiseModel outside, NoiseModel iteration, int count, int marked, int iterations) =>
         Channels is null || iteration.PerGate <= 0 ? IndependentHarmsFidelity(outside, iteration, iterations)
