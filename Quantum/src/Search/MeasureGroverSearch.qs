@@ -22,6 +22,20 @@ namespace QuantumRayTracing.Search {
     /// When more than half the indices are marked the oracle marks the complement instead:
     /// that oracle is the original times −1, a global phase this uncontrolled search cannot see.
     internal operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
+        CheckGroverSearch(count, marked, iterations);
+        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
+        use index = Qubit[BitSizeI(count - 1)];
+        use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
+        PrepareUniformSuperposition(count, index);
+        for _ in 1..iterations {
+            ApplyGroverIteration(count, oracleSet, index, auxiliaries);
+        }
+        MeasureIntegerReadingLossAsZero(index)
+    }
+
+    /// # Summary
+    /// Fails unless `count` ≥ 1, `iterations` ≥ 0 and every marked index lies in 0..count-1.
+    internal function CheckGroverSearch(count : Int, marked : Int[], iterations : Int) : Unit {
         if count < 1 {
             fail $"count must be at least 1, got {count}";
         }
@@ -33,14 +47,6 @@ namespace QuantumRayTracing.Search {
                 fail $"marked index {m} is outside 0..{count - 1}";
             }
         }
-        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
-        use index = Qubit[BitSizeI(count - 1)];
-        use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
-        PrepareUniformSuperposition(count, index);
-        for _ in 1..iterations {
-            ApplyGroverIteration(count, oracleSet, index, auxiliaries);
-        }
-        MeasureIntegerReadingLossAsZero(index)
     }
 
     /// # Summary
