@@ -55,6 +55,8 @@ namespace QuantumRayTracing.Search {
             ApplyToEach(ApplyOneQubitGateOnDevice(oneQubit, H, _), index);
         }
         SetDepolarizingRate(0.0);
+        // Noise can leave an auxiliary in |1⟩; it is reset, as a device would, before it is released.
+        ResetAll(auxiliaries);
         MeasureIntegerReadingLossAsZero(index)
     }
 }
