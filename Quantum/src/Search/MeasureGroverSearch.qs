@@ -23,14 +23,21 @@ namespace QuantumRayTracing.Search {
     /// that oracle is the original times −1, a global phase this uncontrolled search cannot see.
     internal operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
         CheckGroverSearch(count, marked, iterations);
-        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
         use index = Qubit[BitSizeI(count - 1)];
         use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
-        PrepareUniformSuperposition(count, index);
-        for _ in 1..iterations {
-            ApplyGroverIteration(count, oracleSet, index, auxiliaries);
-        }
+        ApplyGroverSearch(IdealLookupGates(), count, marked, iterations, index, auxiliaries);
         MeasureIntegerReadingLossAsZero(index)
+    }
+
+    /// # Summary
+    /// The search's gates before the measurement, in `gates`: the uniform preparation over `count` indices on `index`,
+    /// then `iterations` Grover iterations marking `marked` (its complement when more than half is marked).
+    internal operation ApplyGroverSearch(gates : LookupGates, count : Int, marked : Int[], iterations : Int, index : Qubit[], auxiliaries : Qubit[]) : Unit {
+        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
+        gates.PrepareUniform(count, index);
+        for _ in 1..iterations {
+            ApplyGroverIteration(gates, count, oracleSet, index, auxiliaries);
+        }
     }
 
     /// # Summary

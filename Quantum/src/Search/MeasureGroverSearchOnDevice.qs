@@ -3,10 +3,9 @@ namespace QuantumRayTracing.Search {
     import QuantumRayTracing.Supersampling.SetDepolarizingRate;
 
     /// # Summary
-    /// `MeasureGroverSearch` under a device noise model: the same gates in the same order (H on every index qubit,
-    /// then per iteration the lookup oracle's X toggles and all-ones phases and the reflection's H, X, phase, X, H),
-    /// each followed by depolarizing noise at its own rate, and the index measured with the noise off: the host
-    /// applies the readout error to the measured bits.
+    /// `MeasureGroverSearch` under a device noise model: the same circuit (`ApplyGroverSearch`) in `DeviceLookupGates`,
+    /// so every gate is followed by depolarizing noise at its own rate, and the index measured with the noise off: the
+    /// host applies the readout error to the measured bits.
     ///
     /// # Input
     /// ## oneQubit
@@ -26,34 +25,12 @@ namespace QuantumRayTracing.Search {
     /// # Remarks
     /// Only N a power of two: there the uniform preparation is one H per qubit. Otherwise it holds controlled
     /// rotations and controlled H gates that the standard library decomposes into gates of mixed arity, whose
-    /// rates could not be set one by one. The gates are called through device helpers rather than the ideal
-    /// operations because Q#'s generated adjoints run the rate-setting function calls ahead of the gates.
+    /// rates could not be set one by one.
     internal operation MeasureGroverSearchOnDevice(oneQubit : Double, twoQubit : Double, count : Int, marked : Int[], iterations : Int) : Int {
         CheckGroverSearch(count, marked, iterations);
-        if count &&& (count - 1) != 0 {
-            fail $"the device search runs N a power of two (its preparation is one H per qubit), got N = {count}";
-        }
-        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
         use index = Qubit[BitSizeI(count - 1)];
         use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
-        let allOnes = (1 <<< Length(index)) - 1;
-        ApplyToEach(ApplyOneQubitGateOnDevice(oneQubit, H, _), index);
-        for _ in 1..iterations {
-            // The lookup oracle (ApplyMarkingOracle): toggle to each marked value's flip pattern, phase the all-ones state.
-            mutable previous = 0;
-            for m in oracleSet {
-                ApplyXorInPlaceOnDevice(oneQubit, previous ^^^ (allOnes ^^^ m), index);
-                ApplyPhaseToAllOnesOnDevice(oneQubit, twoQubit, index, auxiliaries);
-                set previous = allOnes ^^^ m;
-            }
-            ApplyXorInPlaceOnDevice(oneQubit, previous, index);
-            // The reflection about the uniform superposition (ReflectAboutUniformSuperposition).
-            ApplyToEach(ApplyOneQubitGateOnDevice(oneQubit, H, _), index);
-            ApplyXorInPlaceOnDevice(oneQubit, allOnes, index);
-            ApplyPhaseToAllOnesOnDevice(oneQubit, twoQubit, index, auxiliaries);
-            ApplyXorInPlaceOnDevice(oneQubit, allOnes, index);
-            ApplyToEach(ApplyOneQubitGateOnDevice(oneQubit, H, _), index);
-        }
+        ApplyGroverSearch(DeviceLookupGates(oneQubit, twoQubit), count, marked, iterations, index, auxiliaries);
         SetDepolarizingRate(0.0);
         // Noise can leave an auxiliary in |1⟩; it is reset, as a device would, before it is released.
         ResetAll(auxiliaries);
