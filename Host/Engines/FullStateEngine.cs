@@ -21,7 +21,7 @@ namespace QuantumRayTracing.Engines;
 /// Under a <see cref="DeviceNoiseModel"/> (N a power of two only) a batch is one call of <c>MeasureGroverBatchOnDevice</c>,
 /// which sets each gate's rate inside Q#, and the host flips the bits of each measured index by the readout error with
 /// <c>readoutRandom</c>, in request order: given the simulator's outcomes, the read indices are reproducible. A schedule
-/// stops at its first marked READ index, so under a device model schedules run run by run: each round is one batch of
+/// stops at its first marked read index, so under a device model schedules run run by run: each round is one batch of
 /// the next run of every schedule still searching, read before the next round is sent.
 /// </summary>
 public sealed class FullStateEngine(BridgePool pool, int maxRequestsPerCall = FullStateEngine.DefaultMaxRequestsPerCall, int? maxQubits = null, bool ownsPool = true, NoiseModel? noise = null,
