@@ -98,6 +98,22 @@ public class FullStateDeviceNoiseTests(FullStateFixture fixture, ITestOutputHelp
     }
 
     [Fact]
+    public void SameSeedAndMeasuredIndicesGiveTheSameReadIndices()
+    {
+        // The engine reads each measured index with ReadoutFlips.ReadBits in request order: replayed on the same measured
+        // indices, the same seed gives the same read indices and another seed other ones.
+        var measured = Enumerable.Range(0, 2000).Select(k => k * 5 % 8).ToArray();
+        int[] Read(ulong seed)
+        {
+            var flips = new ReadoutFlips(Device, new SeededRandom(seed));
+            return measured.Select(i => flips.ReadBits(i, 3)).ToArray();
+        }
+        Assert.Equal(Read(11), Read(11));
+        Assert.NotEqual(Read(11), Read(12));
+        Assert.NotEqual(measured, Read(11));
+    }
+
+    [Fact]
     public void DeviceModelBesidePauliNoiseIsRefused() =>
         Assert.Throws<ArgumentException>(() => new FullStateEngine(fixture.Engine.Pool, ownsPool: false, noise: NoiseModel.Depolarizing(1e-3), device: Device, readoutRandom: new SeededRandom(1)));
 
