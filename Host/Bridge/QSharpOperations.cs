@@ -24,6 +24,8 @@ public static class QSharpOperations
 
     public const string MeasureGroverBatch = "QuantumRayTracing.Search.MeasureGroverBatch";
 
+    public const string MeasureGroverBatchOnDevice = "QuantumRayTracing.Search.MeasureGroverBatchOnDevice";
+
     public const string MeasureGroverBatchWithControlledZ = "QuantumRayTracing.Search.MeasureGroverBatchWithControlledZ";
 
     public const string MeasureGroverSchedules = "QuantumRayTracing.Search.MeasureGroverSchedules";

@@ -18,27 +18,29 @@ internal static class BridgeBatches
     /// </summary>
     /// <remarks><paramref name="operation"/> names the Q# operation in error messages; <paramref name="expression"/>
     /// builds the Q# call of one chunk, which must return one index per request. <paramref name="noise"/> runs
-    /// the calls on the noisy simulator unless it is the ideal model.</remarks>
+    /// the calls on the noisy simulator unless it is the ideal model; <paramref name="noisyReadout"/> accepts any register
+    /// value when the noise is set inside the circuit instead (a device model).</remarks>
     public static int[] Measure(
         BridgePool pool,
         IReadOnlyList<GroverRequest> requests,
         ChunkLimits limits,
         string operation,
         Func<IReadOnlyList<GroverRequest>, string> expression,
-        NoiseModel? noise = null) =>
+        NoiseModel? noise = null,
+        bool noisyReadout = false) =>
         Run(pool, requests, limits.MaxRequests, limits.Cost, limits.MaxCost, expression, (slice, value) =>
         {
             var indices = JsonSerializer.Deserialize<int[]>(value) ?? throw new BridgeException($"{operation} returned no value");
             if (indices.Length != slice.Count)
                 throw new BridgeException($"{operation} returned {indices.Length} indices for {slice.Count} requests");
-            for (var k = 0; k < slice.Count; k++) CheckIndex(operation, indices[k], slice[k], noise);
+            for (var k = 0; k < slice.Count; k++) CheckIndex(operation, indices[k], slice[k], noisyReadout || noise is { IsNoiseless: false });
             return indices;
         }, noise);
 
     /// <summary>Throws unless <paramref name="index"/> lies in 0..N-1 of <paramref name="request"/> (under noise, in 0..2^n-1).</summary>
-    public static void CheckIndex(string operation, int index, GroverRequest request, NoiseModel? noise = null)
+    public static void CheckIndex(string operation, int index, GroverRequest request, bool noisy)
     {
-        var readable = noise is { IsNoiseless: false } ? 1 << SearchRegisters.For(request.Marked.Count).IndexQubits : request.Marked.Count;
+        var readable = noisy ? 1 << SearchRegisters.For(request.Marked.Count).IndexQubits : request.Marked.Count;
         if (index < 0 || index >= readable)
             throw new BridgeException($"{operation} measured index {index} outside 0..{readable - 1}");
     }

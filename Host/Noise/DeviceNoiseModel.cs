@@ -29,6 +29,11 @@ public sealed record DeviceNoiseModel
     /// <summary>P1 = P(read 0 | 1).</summary>
     public double ReadOneAsZero { get; }
 
+    /// <summary>An engine's device model, refused beside a Pauli <paramref name="noise"/> model other than the ideal one: the two are alternatives.</summary>
+    public static DeviceNoiseModel? Alone(DeviceNoiseModel? device, NoiseModel? noise) => device is not null && noise is { IsNoiseless: false }
+        ? throw new ArgumentException("give a Pauli noise model or a device model, not both", nameof(device))
+        : device;
+
     public bool HasReadoutError => ReadZeroAsOne > 0 || ReadOneAsZero > 0;
 
     /// <summary>No gate noise and no readout error: the engines take their noiseless path.</summary>

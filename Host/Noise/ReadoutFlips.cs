@@ -8,6 +8,11 @@ namespace QuantumRayTracing.Noise;
 /// </summary>
 public sealed class ReadoutFlips(DeviceNoiseModel device, SeededRandom random)
 {
+    /// <summary>The flips of <paramref name="device"/>'s readout error, or null when it has none; a readout error needs <paramref name="random"/>.</summary>
+    public static ReadoutFlips? For(DeviceNoiseModel? device, SeededRandom? random) => device is { HasReadoutError: true }
+        ? new ReadoutFlips(device, random ?? throw new ArgumentException("a readout error needs the host's seeded generator", nameof(random)))
+        : null;
+
     /// <summary>Heads read from <paramref name="heads"/> true heads in <paramref name="flips"/>: each head kept with 1 − P1, each tail turned with P0.</summary>
     public int ReadHeads(int heads, int flips)
     {

@@ -24,9 +24,7 @@ public sealed class AnalyticSupersamplingEngine(SeededRandom random, NoiseModel?
     public DepolarizingApproximation Approximation { get; } = approximation ?? DepolarizingApproximation.Default;
 
     /// <summary>The device model outcomes are sampled under, or null; it replaces <see cref="Noise"/>, which must then be ideal.</summary>
-    public DeviceNoiseModel? Device { get; } = device is not null && noise is { IsNoiseless: false }
-        ? throw new ArgumentException("give a Pauli noise model or a device model, not both", nameof(device))
-        : device;
+    public DeviceNoiseModel? Device { get; } = DeviceNoiseModel.Alone(device, noise);
 
     public IReadOnlyList<int> FlipCoins(IReadOnlyList<CoinRequest> requests)
     {

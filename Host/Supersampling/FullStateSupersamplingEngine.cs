@@ -25,13 +25,9 @@ public sealed class FullStateSupersamplingEngine(BridgePool pool, bool ownsPool 
     public NoiseModel Noise { get; } = noise ?? NoiseModel.None;
 
     /// <summary>The device model the single-qubit coins run under, or null; it replaces <see cref="Noise"/>, which must then be ideal.</summary>
-    public DeviceNoiseModel? Device { get; } = device is not null && noise is { IsNoiseless: false }
-        ? throw new ArgumentException("give a Pauli noise model or a device model, not both", nameof(device))
-        : device;
+    public DeviceNoiseModel? Device { get; } = DeviceNoiseModel.Alone(device, noise);
 
-    private readonly ReadoutFlips? _readout = device is { HasReadoutError: true }
-        ? new ReadoutFlips(device, readoutRandom ?? throw new ArgumentException("a readout error needs the host's seeded generator", nameof(readoutRandom)))
-        : null;
+    private readonly ReadoutFlips? _readout = ReadoutFlips.For(device, readoutRandom);
 
     /// <summary>Oracle applications (each N controlled rotations) per call: a few seconds of simulation, far below the bridge's time limit.</summary>
     public const double MaxOracleCallsPerChunk = 20_000;

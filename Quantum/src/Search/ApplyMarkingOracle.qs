@@ -7,6 +7,8 @@ namespace QuantumRayTracing.Search {
     /// set the host computes from the ray's classical table.
     ///
     /// # Input
+    /// ## gates
+    /// The gates to write it in: `IdealLookupGates()`, or `DeviceLookupGates` under a device noise model.
     /// ## marked
     /// Distinct indices to mark, each below 2^Length(index).
     /// ## index
@@ -20,16 +22,16 @@ namespace QuantumRayTracing.Search {
     /// index bits where m is 0 and applying a phase to the all-ones state; between consecutive
     /// marked values only the bits whose flip pattern changes are toggled, which removes most X
     /// gates when the set is sorted.
-    internal operation ApplyMarkingOracle(marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyMarkingOracle(gates : LookupGates, marked : Int[], index : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
         if not IsEmpty(marked) {
             let allOnes = (1 <<< Length(index)) - 1;
             let flips = Mapped(m -> allOnes ^^^ m, marked);
             for k in 0..Length(flips) - 1 {
                 let previous = k == 0 ? 0 | flips[k - 1];
-                ApplyXorInPlace(previous ^^^ flips[k], index);
-                ApplyPhaseToAllOnes(index, auxiliaries);
+                ApplyXorWith(gates.X, previous ^^^ flips[k], index);
+                ApplyPhaseToAllOnes(gates, index, auxiliaries);
             }
-            ApplyXorInPlace(flips[Length(flips) - 1], index);
+            ApplyXorWith(gates.X, flips[Length(flips) - 1], index);
         }
     }
 }

@@ -4,6 +4,8 @@ namespace QuantumRayTracing.Search {
     /// state alone: a multi-controlled Z over the register, with its auxiliaries passed in.
     ///
     /// # Input
+    /// ## gates
+    /// The gates to write it in: `IdealLookupGates()`, or `DeviceLookupGates` under a device noise model.
     /// ## register
     /// The qubits whose all-ones state gets the phase.
     /// ## auxiliaries
@@ -15,23 +17,23 @@ namespace QuantumRayTracing.Search {
     /// n ≥ 3. The caller allocates the auxiliaries once for many gates; the standard library's
     /// `Controlled Z` allocates and releases its own in every gate, which costs the simulator
     /// more than the gates themselves. On an empty register the phase is global and left out.
-    internal operation ApplyPhaseToAllOnes(register : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ApplyPhaseToAllOnes(gates : LookupGates, register : Qubit[], auxiliaries : Qubit[]) : Unit is Adj + Ctl {
         let width = Length(register);
         if Length(auxiliaries) < PhaseAuxiliaryCount(width) {
             fail $"a phase on {width} qubits needs {PhaseAuxiliaryCount(width)} auxiliaries, got {Length(auxiliaries)}";
         }
         if width == 1 {
-            Z(register[0]);
+            gates.Z(register[0]);
         } elif width == 2 {
-            CZ(register[0], register[1]);
+            gates.CZ(register[0], register[1]);
         } elif width > 2 {
             within {
-                CCNOT(register[0], register[1], auxiliaries[0]);
+                gates.CCNOT(register[0], register[1], auxiliaries[0]);
                 for k in 2..width - 2 {
-                    CCNOT(auxiliaries[k - 2], register[k], auxiliaries[k - 1]);
+                    gates.CCNOT(auxiliaries[k - 2], register[k], auxiliaries[k - 1]);
                 }
             } apply {
-                CZ(auxiliaries[width - 3], register[width - 1]);
+                gates.CZ(auxiliaries[width - 3], register[width - 1]);
             }
         }
     }

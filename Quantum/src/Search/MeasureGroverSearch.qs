@@ -22,6 +22,27 @@ namespace QuantumRayTracing.Search {
     /// When more than half the indices are marked the oracle marks the complement instead:
     /// that oracle is the original times −1, a global phase this uncontrolled search cannot see.
     internal operation MeasureGroverSearch(count : Int, marked : Int[], iterations : Int) : Int {
+        CheckGroverSearch(count, marked, iterations);
+        use index = Qubit[BitSizeI(count - 1)];
+        use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
+        ApplyGroverSearch(IdealLookupGates(), count, marked, iterations, index, auxiliaries);
+        MeasureIntegerReadingLossAsZero(index)
+    }
+
+    /// # Summary
+    /// The search's gates before the measurement, in `gates`: the uniform preparation over `count` indices on `index`,
+    /// then `iterations` Grover iterations marking `marked` (its complement when more than half is marked).
+    internal operation ApplyGroverSearch(gates : LookupGates, count : Int, marked : Int[], iterations : Int, index : Qubit[], auxiliaries : Qubit[]) : Unit {
+        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
+        gates.PrepareUniform(count, index);
+        for _ in 1..iterations {
+            ApplyGroverIteration(gates, count, oracleSet, index, auxiliaries);
+        }
+    }
+
+    /// # Summary
+    /// Fails unless `count` ≥ 1, `iterations` ≥ 0 and every marked index lies in 0..count-1.
+    internal function CheckGroverSearch(count : Int, marked : Int[], iterations : Int) : Unit {
         if count < 1 {
             fail $"count must be at least 1, got {count}";
         }
@@ -33,14 +54,6 @@ namespace QuantumRayTracing.Search {
                 fail $"marked index {m} is outside 0..{count - 1}";
             }
         }
-        let oracleSet = 2 * Length(marked) > count ? ComplementIndices(count, marked) | marked;
-        use index = Qubit[BitSizeI(count - 1)];
-        use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
-        PrepareUniformSuperposition(count, index);
-        for _ in 1..iterations {
-            ApplyGroverIteration(count, oracleSet, index, auxiliaries);
-        }
-        MeasureIntegerReadingLossAsZero(index)
     }
 
     /// # Summary

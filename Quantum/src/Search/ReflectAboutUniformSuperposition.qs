@@ -14,9 +14,16 @@ namespace QuantumRayTracing.Search {
     /// ## index
     /// Index register of the search.
     operation ReflectAboutUniformSuperposition(count : Int, phaseOnAllOnes : Qubit[] => Unit is Adj + Ctl, index : Qubit[]) : Unit is Adj + Ctl {
+        ReflectAboutPreparedState(PrepareUniformSuperposition(count, _), X, phaseOnAllOnes, index);
+    }
+
+    /// # Summary
+    /// Reflects `index` about the state `prepare` makes from |0…0⟩, A S₀ A†, with the X gates `x` around the phase:
+    /// `ReflectAboutUniformSuperposition` in the gates of its caller (see `LookupGates`).
+    internal operation ReflectAboutPreparedState(prepare : Qubit[] => Unit is Adj + Ctl, x : Qubit => Unit is Adj + Ctl, phaseOnAllOnes : Qubit[] => Unit is Adj + Ctl, index : Qubit[]) : Unit is Adj + Ctl {
         within {
-            Adjoint PrepareUniformSuperposition(count, index);
-            ApplyToEachCA(X, index);
+            Adjoint prepare(index);
+            ApplyToEachCA(x, index);
         } apply {
             phaseOnAllOnes(index);
         }

@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Search {
     operation ApplyGroverIterationOnNewRegisters(count : Int, marked : Int[]) : Unit {
         use index = Qubit[BitSizeI(count - 1)];
         use auxiliaries = Qubit[PhaseAuxiliaryCount(Length(index))];
-        ApplyGroverIteration(count, marked, index, auxiliaries);
+        ApplyGroverIteration(IdealLookupGates(), count, marked, index, auxiliaries);
         ResetAll(index);
     }
 }

@@ -34,11 +34,11 @@ namespace QuantumRayTracing.Search {
             ApplyXorInPlace(state, index);
             X(flag);
             let oracle = HasSamePhase(control, () => {
-                Controlled ApplyMarkingOracle([control], (marked, index, auxiliaries));
+                Controlled ApplyMarkingOracle([control], (IdealLookupGates(), marked, index, auxiliaries));
                 Controlled Adjoint ApplyMarkingOracleWithControlledZ([control], (marked, index, flag));
             });
             let reflection = HasSamePhase(control, () => {
-                Controlled ApplyPhaseToAllOnes([control], (index, auxiliaries));
+                Controlled ApplyPhaseToAllOnes([control], (IdealLookupGates(), index, auxiliaries));
                 Controlled Z([control] + index, flag);
             });
             X(flag);
