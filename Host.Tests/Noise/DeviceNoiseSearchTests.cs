@@ -111,7 +111,7 @@ public sealed class DeviceNoiseSearchTests : IDisposable
     }
 
     [Theory]
-    [InlineData("fullstate", "--device-noise", "1q=1e-3", ExitCodes.BadInput)]
+    [InlineData("gate", "--device-noise", "1q=1e-3", ExitCodes.BadInput)]
     [InlineData("classical", "--readout-error", "0.01", ExitCodes.BadInput)]
     [InlineData("analytic", "--device-noise", "2q=2", ExitCodes.UsageError)]
     [InlineData("analytic", "--readout-error", "0.6,0.5", ExitCodes.UsageError)]
@@ -123,6 +123,15 @@ public sealed class DeviceNoiseSearchTests : IDisposable
         Assert.Contains(option, error);
         Assert.Single(error.Trim().Split('\n'));
         Assert.Empty(_scratch.FileNames());
+    }
+
+    [Fact]
+    public void TheFullStateEngineRefusesADeviceModelOverNNotAPowerOfTwo()
+    {
+        var (code, error) = ConsoleCapture.Run(["search", "--count", "12", "--marked", "3", "-e", "fullstate", "--device-noise", "1q=1e-3"]);
+        Assert.Equal(ExitCodes.BadInput, code);
+        Assert.Contains("N = 12", error);
+        Assert.Single(error.Trim().Split('\n'));
     }
 
     [Fact]

@@ -63,7 +63,6 @@ public sealed class RenderCommand : Command
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
         using var bridges = _engine.StartBridges(parse);
-        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel, settings.Device);
         var run = RenderRunView.RunAndPrint(settings, bridges);
         _json.Write(parse, run.Figures, _engine, run.RanOn, settings.RunNoise);
         return ExitCodes.Success;

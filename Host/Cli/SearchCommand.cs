@@ -58,7 +58,7 @@ public sealed class SearchCommand : Command
         var settings = new SearchRunSettings(parse.GetValue(_count), parse.GetResult(_marked) is null ? null : parse.GetValue(_marked) ?? [],
             parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
             parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges, _engine.GetDevice(parse));
-        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel, settings.Device);
+        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel, settings.Device, settings.Count);
         SearchRunView.PrintPlan(settings);
         var run = SearchRunView.RunWithProgress(settings);
         SearchRunView.Print(settings, run);

@@ -24,10 +24,11 @@ public static class EngineCapabilities
         public bool ModelsQubitLoss => kind == EngineKind.FullState;
 
         /// <summary>
-        /// Runs a device noise model (gate rates by arity, readout error): the analytic engine through its approximation. The
-        /// simulators run one Pauli rate on every gate of their searches' circuits.
+        /// Runs a device noise model (gate rates by arity, readout error): the analytic engine through its approximation, the
+        /// fullstate engine with each gate's rate set inside Q#. The gate engine's oracle is built from the QDK's arithmetic,
+        /// whose gates take one Pauli rate.
         /// </summary>
-        public bool RunsDeviceNoise => kind == EngineKind.Analytic;
+        public bool RunsDeviceNoise => kind is EngineKind.Analytic or EngineKind.FullState;
 
         /// <summary>Runs Pauli noise through its depolarizing approximation rather than the noisy simulator.</summary>
         public bool ApproximatesNoise => kind == EngineKind.Analytic;

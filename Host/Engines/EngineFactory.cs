@@ -52,7 +52,8 @@ public static class EngineFactory
     private static IGroverEngine Grover(EngineKind kind, SeededRandom root, int workers, int? maxQubits, BridgePool? pool, NoiseModel noise, DepolarizingApproximation? approximation = null,
         DeviceNoiseModel? device = null) => kind switch
     {
-        EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise),
+        EngineKind.FullState => new FullStateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits, ownsPool: pool is null, noise: noise,
+            device: device is { IsNoiseless: false } ? device : null, readoutRandom: root.Fork(RandomStreams.Engine)),
         EngineKind.Gate => new GateEngine(pool ?? new BridgePool(workers), maxQubits: maxQubits ?? GateEngine.DefaultMaxQubits, ownsPool: pool is null, noise: noise),
         EngineKind.Analytic => new AnalyticEngine(root.Fork(RandomStreams.Engine), noise, approximation, device),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a Grover engine"),
@@ -81,14 +82,19 @@ public static class EngineFactory
         return new DepolarizingApproximation(GateLevel: traced);
     }
 
-    /// <summary>Refuses, as a usage error naming the option, a noise model the engine cannot run.</summary>
-    public static void CheckNoise(EngineKind kind, NoiseModel noise, DeviceNoiseModel? device = null)
+    /// <summary>
+    /// Refuses, as a usage error naming the option, a noise model the engine cannot run; with <paramref name="count"/>, the N its
+    /// searches run over.
+    /// </summary>
+    public static void CheckNoise(EngineKind kind, NoiseModel noise, DeviceNoiseModel? device = null, int? count = null)
     {
         if (device is not null)
         {
             if (!noise.IsNoiseless) throw new UserError("--noise and --device-noise/--readout-error: give one noise model, not both");
             if (!kind.SearchesWithGrover) throw new UserError($"--device-noise/--readout-error: the {Name(kind)} engine runs no quantum circuit");
             if (!kind.RunsDeviceNoise) throw new UserError($"--device-noise/--readout-error: {DeviceNoiseUnsupported(kind)}");
+            if (kind == EngineKind.FullState && count is { } n && !System.Numerics.BitOperations.IsPow2(n))
+                throw new UserError($"--device-noise/--readout-error: the fullstate engine runs a device model over N a power of two (its preparation is then one H per index qubit), not N = {n}; use --engine analytic");
         }
         if (noise.QubitLoss > 0 && !kind.ModelsQubitLoss)
             throw new UserError(kind.SimulatesOracleGates ? $"--qubit-loss: {GateEngine.LossUnsupported}" : $"--qubit-loss: the {Name(kind)} engine does not model qubit loss (its depolarizing approximation covers Pauli noise); use --engine fullstate");
@@ -98,7 +104,7 @@ public static class EngineFactory
 
     /// <summary>Why <paramref name="kind"/> cannot run a device model.</summary>
     private static string DeviceNoiseUnsupported(EngineKind kind) =>
-        $"the {Name(kind)} engine runs one Pauli rate on every gate (--noise); a device model runs on the analytic engine";
+        $"the {Name(kind)} engine runs one Pauli rate on every gate (--noise); a device model runs on the analytic and fullstate engines";
 
     /// <summary>Where a Q# engine's work runs, for reports: the cluster's workers or this machine.</summary>
     public static string Where(EngineKind kind, BridgePool? bridges, int workers) => Place(kind, bridges, workers).Description;

@@ -69,9 +69,13 @@ public sealed record RenderRunSettings(
     /// <summary>The noise as `--json` records it.</summary>
     public RunNoise RunNoise => Device is { } device ? RunNoise.Of(Engine, device, NoiseDescription) : RunNoise.Of(Engine, NoiseModel, NoiseDescription);
 
-    /// <summary>Refuses, before anything is printed or written, planning with a noise model the engine does not sample and an untraced circuit shape.</summary>
+    /// <summary>
+    /// Refuses, before anything is printed or written, a noise model the engine cannot run, planning with a noise model the engine
+    /// does not sample and an untraced circuit shape.
+    /// </summary>
     public void EnsureRunnable()
     {
+        EngineFactory.CheckNoise(Engine, NoiseModel, Device, Scene.Rectangles.Count);
         if (NoiseAware && !Engine.ApproximatesNoise) throw new UserError("--noise-aware: only the analytic engine plans with its noise model; use --engine analytic");
         if (Engine.ApproximatesNoise && IsNoisy) EngineFactory.Approximation(NoiseOracle, Scene);
     }

@@ -47,7 +47,9 @@ public static class DeviceNoiseExperiment
             The readout error is not in Φ: the engine flips each bit of every index it samples with its seeded generator, so renders stay
             byte-identical per seed. With `--noise-aware` the passes plan with P(reading a marked index) = Φ (P₀ a + (1 − P₀) b) + (1 − Φ) c,
             a, b, c the readout's chances of reading a marked index from a marked one, an unmarked one and a uniform register value (on a
-            typical marked set per N and t). The simulator engines run one Pauli rate on every gate and refuse a device model.
+            typical marked set per N and t). The fullstate engine runs the lookup circuit under the device model on the simulator, each
+            gate's rate set inside Q# before it and the readout flipped by the host from the seed (N a power of two; its tests check it
+            against the evolved circuit); the gate engine, whose oracle is built from the QDK's arithmetic, refuses it.
             """);
 
         report.Heading("The model against the lookup circuit evolved exactly");
