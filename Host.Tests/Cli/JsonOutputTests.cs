@@ -126,6 +126,20 @@ public sealed partial class JsonOutputTests : IDisposable
         Assert.Contains("registers: 0 subpixel + 1 coin qubits", output);
     }
 
+    [Theory]
+    [InlineData("search", "-n", "16", "-e", "analytic", "--searches", "5")]
+    [InlineData("render", "--size", "8", "-o", "r.png")]
+    public void SearchAndRenderRecordTheDeviceModelTheyRanUnder(params string[] arguments)
+    {
+        var (output, json) = Run([.. arguments, "--device-noise", "1q=1e-4,2q=1e-3", "--readout-error", "0.01,0.03"]);
+        var noise = json["noise"]!;
+        Assert.Equal("device, depolarizing approximation", (string?)noise["model"]);
+        Assert.Equal(1e-4, (double)noise["rates"]!["oneQubit"]!);
+        Assert.Equal(1e-3, (double)noise["rates"]!["twoQubit"]!);
+        Assert.Equal(0.03, (double)noise["rates"]!["readOneAsZero"]!);
+        Assert.Contains($"noise model: {(string?)noise["description"]}", output);
+    }
+
     [Fact]
     public void SupersampleRecordsEveryPrintedFigure()
     {
