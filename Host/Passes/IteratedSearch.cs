@@ -133,9 +133,10 @@ public static class IteratedSearch
 
     // The engine answers every query but the ones settled classically, which test every primitive (the classical
     // engine's search, whatever the engine: the same N tests brute force would make).
-    private static HitOutcome[] Outcomes(IHitSearch search, HitQuery[] queries, int[] classically)
+    private static IReadOnlyList<HitOutcome> Outcomes(IHitSearch search, HitQuery[] queries, int[] classically)
     {
-        if (classically.Length == 0) return [.. search.Run(queries)];
+        // The engine's answers as they come: a block's outcomes are large enough for the large-object heap, not worth a copy.
+        if (classically.Length == 0) return search.Run(queries);
         var isClassical = new bool[queries.Length];
         foreach (var k in classically) isClassical[k] = true;
         var quantum = Enumerable.Range(0, queries.Length).Where(k => !isClassical[k]).ToArray();
