@@ -80,12 +80,15 @@ public sealed class PixelLayout
         var count = 0;
         var (y, x) = Math.DivRem(_pixelOf[ray], _width);
         var step = 1 << LevelAt(x, y, levels);
-        var coarse = 2 * step - 1; // a coordinate on the coarser lattice has no bit of this mask set (powers of two: no division)
-        for (var dy = -step; dy <= step; dy += step)
-            for (var dx = -step; dx <= step; dx += step)
+        // A coordinate, a multiple of step, is on the coarser lattice when its step bit is clear: then it stays (offset 0),
+        // otherwise both neighbours at −step and +step are on it. Offsets ascend, y outer, as the corners of the cell.
+        var (dyFrom, dyStep) = (y & step) != 0 ? (-step, 2 * step) : (0, 1);
+        var (dxFrom, dxStep) = (x & step) != 0 ? (-step, 2 * step) : (0, 1);
+        for (var dy = dyFrom; dy <= -dyFrom; dy += dyStep)
+            for (var dx = dxFrom; dx <= -dxFrom; dx += dxStep)
             {
                 var (nx, ny) = (x + dx, y + dy);
-                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || (nx & coarse) != 0 || (ny & coarse) != 0) continue;
+                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height) continue;
                 if (RayAt(ny * _width + nx, _channelOf[ray]) is var neighbour and >= 0) into[count++] = neighbour;
             }
         return count;
@@ -109,7 +112,7 @@ public sealed class PixelLayout
     {
         var count = 0;
         var (pixel, channel) = (_pixelOf[ray], _channelOf[ray]);
-        var (x, y) = (pixel % _width, pixel / _width);
+        var (y, x) = Math.DivRem(pixel, _width);
         if (x > 0 && RayAt(pixel - 1, channel) is var left and >= 0) into[count++] = left;
         if (x < _width - 1 && RayAt(pixel + 1, channel) is var right and >= 0) into[count++] = right;
         if (y > 0 && RayAt(pixel - _width, channel) is var up and >= 0) into[count++] = up;
