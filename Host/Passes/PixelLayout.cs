@@ -22,14 +22,26 @@ public sealed class PixelLayout
     {
         _width = width;
         _height = height;
-        _pixelOf = [.. pixelOfRay];
-        _channelOf = channelOfRay is null ? new int[_pixelOf.Length] : [.. channelOfRay];
+        _pixelOf = ReadAll(pixelOfRay);
+        _channelOf = channelOfRay is null ? new int[_pixelOf.Length] : ReadAll(channelOfRay);
         _firstOfPixel = new int[width * height + 1];
         foreach (var pixel in _pixelOf) _firstOfPixel[pixel + 1]++;
         for (var pixel = 0; pixel < width * height; pixel++) _firstOfPixel[pixel + 1] += _firstOfPixel[pixel];
         _byPixel = new int[_pixelOf.Length];
         var next = _firstOfPixel[..^1];
         for (var i = 0; i < _pixelOf.Length; i++) _byPixel[next[_pixelOf[i]]++] = i;
+    }
+
+    // Every item by its index, on all cores: a shadow pass's pixels and channels are computed on each read.
+    private static int[] ReadAll(IReadOnlyList<int> items)
+    {
+        var all = new int[items.Count];
+        if (all.Length == 0) return all;
+        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, all.Length, 1 << 14), range =>
+        {
+            for (var i = range.Item1; i < range.Item2; i++) all[i] = items[i];
+        });
+        return all;
     }
 
     // The ray of channel `channel` at `pixel` (the last listed, should two share both), or −1.
