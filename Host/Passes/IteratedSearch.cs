@@ -66,7 +66,7 @@ public static class IteratedSearch
                 return tables;
             });
             int[] Block(int start) => active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
-            // One block's queries at a time, in one buffer for the round: as an array per block they would be large objects.
+            // One block's queries at a time, in one buffer for the round: an array per block is 128 KB for every block of every pass.
             var queryBuffer = new HitQuery[Math.Min(BlockSize, active.Length)];
             var nextBlock = Block(0);
             var nextTables = Tables(0, nextBlock);
@@ -138,7 +138,7 @@ public static class IteratedSearch
     // engine's search, whatever the engine: the same N tests brute force would make).
     private static IReadOnlyList<HitOutcome> Outcomes(IHitSearch search, ArraySegment<HitQuery> queries, int[] classically)
     {
-        // The engine's answers as they come: a block's outcomes are large enough for the large-object heap, not worth a copy.
+        // The engine's answers as they come: a copy of a block's outcomes is 192 KB for every block of every pass.
         if (classically.Length == 0) return search.Run(queries);
         var isClassical = new bool[queries.Count];
         foreach (var k in classically) isClassical[k] = true;

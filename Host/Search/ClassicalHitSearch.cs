@@ -10,8 +10,8 @@ public sealed class ClassicalHitSearch : IHitSearch
 
     public IReadOnlyList<HitOutcome> Run(IReadOnlyList<HitQuery> queries, Action<int, int>? onRound = null)
     {
-        // The answers are kept in 12 bytes each and handed back as outcomes when read: a block's outcomes as an array would
-        // be large enough for the large-object heap, allocated for every block of every pass.
+        // The answers are kept in 12 bytes each and handed back as outcomes when read: a block's outcomes as an array are
+        // 48 bytes each, allocated for every block of every pass.
         var answers = new Answer[queries.Count];
         Parallel.For(0, queries.Count, k =>
         {
