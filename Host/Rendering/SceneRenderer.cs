@@ -34,7 +34,7 @@ public static class SceneRenderer
         var cameraRays = CameraRays.Computed(scene.Camera, window ?? ImageWindow.Whole(options.Width, options.Height));
         var plan = PlanPasses(scene, search, options, cameraRays, passes, progress);
         var pixels = cameraRays.Count;
-        var radiance = new Vec3[pixels];
+        var radiance = WrittenArray.Of<Vec3>(pixels);
         var allowed = (options.Budget ?? 0) * pixels;
         var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
         var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, Left(allowed, passes) / 3);
