@@ -26,7 +26,7 @@ public class IteratedSearchTests
         var metrics = IteratedSearch.Run("test", search, geometry, rays[..Rays], 3, (_, table) => table.FullRange, (i, table, outcome) =>
         {
             // The table handed with ray i is ray i's, and the certain answer is the brute-force one.
-            Assert.Same(rays[i], table.Ray);
+            Assert.Equal(rays[i], table.Ray);
             Assert.Equal(RayTable.Build(geometry, rays[i]).BestAccepted(table.FullRange), outcome.Primitive);
             observed.Add(i);
             return true;

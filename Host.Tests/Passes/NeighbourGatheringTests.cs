@@ -81,4 +81,37 @@ public sealed class NeighbourGatheringTests
         Assert.Equal(4, wide.CoarserNeighbourSlots(9 * 10 + 9, 2));
         Assert.Equal([8 * 10 + 8], wide.CoarserNeighbours(9 * 10 + 9, 2));
     }
+
+    [Fact]
+    public void CoarserNeighboursAreTheNextLatticesPixelsAroundInScanOrder()
+    {
+        // Every ray of an odd-sized image with up to 3 rays per pixel in 2 channels, against the definition: of the 8
+        // pixels at offsets −s, 0, s (s = 2^level) in x and y, scanned row by row, those inside the image whose coordinates
+        // are multiples of 2s, each with its ray of the same channel (the last listed), in that order.
+        const int width = 37, height = 29, levels = 3;
+        var random = new SeededRandom(5);
+        var (pixels, channels) = (new List<int>(), new List<int>());
+        for (var pixel = 0; pixel < width * height; pixel++)
+            for (var k = random.NextInt(4); k > 0; k--)
+            {
+                pixels.Add(pixel);
+                channels.Add(random.NextInt(2));
+            }
+        var layout = new PixelLayout(width, height, pixels, channels);
+        int RayAt(int pixel, int channel) => Enumerable.Range(0, pixels.Count).LastOrDefault(i => pixels[i] == pixel && channels[i] == channel, -1);
+        for (var ray = 0; ray < pixels.Count; ray++)
+        {
+            var (y, x) = Math.DivRem(pixels[ray], width);
+            var step = 1 << layout.LatticeLevel(ray, levels);
+            var expected = new List<int>();
+            for (var dy = -step; dy <= step; dy += step)
+                for (var dx = -step; dx <= step; dx += step)
+                {
+                    var (nx, ny) = (x + dx, y + dy);
+                    if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= width || ny >= height || nx % (2 * step) != 0 || ny % (2 * step) != 0) continue;
+                    if (RayAt(ny * width + nx, channels[ray]) is var neighbour and >= 0) expected.Add(neighbour);
+                }
+            Assert.Equal(expected, layout.CoarserNeighbours(ray, levels));
+        }
+    }
 }

@@ -85,7 +85,7 @@ public class GeneratedSceneTests
             for (var z = 10.25; z < 30; z += 0.5)
             {
                 var point = new SurfacePoint(0, new Hit(0, 0, 0, new Vec3(x, 0, z)), new Vec3(0, 1, 0), 1);
-                var ray = SecondaryRays.TowardsDirectional(point, sun, Temple.Grid)!;
+                var ray = SecondaryRays.TowardsDirectional(point, sun, Temple.Grid)!.Value;
                 var table = RayTable.Build(geometry, ray);
                 if (table.Marked(table.FullRange).MarkedCount > 0) continue;
                 lit++;

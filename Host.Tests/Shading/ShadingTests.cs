@@ -74,8 +74,9 @@ public class ShadingTests
     public void ShadowRayIsTheSegmentToTheLight()
     {
         var scene = With(4, 0, [Floor], LookDown, OneLight, ambient: 0.1);
-        var ray = SecondaryRays.Shadow(FloorPoint(), scene.Lights[0]);
-        Assert.NotNull(ray);
+        var shadow = SecondaryRays.Shadow(FloorPoint(), scene.Lights[0]);
+        Assert.NotNull(shadow);
+        var ray = shadow.Value;
         Assert.Equal(new Vec3(4, 0, 4), ray.Origin);
         Assert.Equal(new Vec3(3, 4, 0), ray.Direction);
         Assert.Equal(1.0, ray.MaxDistance);

@@ -117,7 +117,6 @@ public sealed class RayTable
     public static RayTable Build(SceneGeometry geometry, Ray ray)
     {
         ArgumentNullException.ThrowIfNull(geometry);
-        ArgumentNullException.ThrowIfNull(ray);
         return new RayTable(geometry, ray);
     }
 
@@ -128,7 +127,6 @@ public sealed class RayTable
     public static RayTable BuildCompact(SceneGeometry geometry, Ray ray)
     {
         ArgumentNullException.ThrowIfNull(geometry);
-        ArgumentNullException.ThrowIfNull(ray);
         // It runs for every ray of every pass: the rows go into per-thread scratch, then into one array of their exact size.
         var n = geometry.Count;
         if (_scratch is null || _scratch.Length < n) _scratch = new KeptRow[n];

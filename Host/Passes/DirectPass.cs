@@ -21,7 +21,7 @@ public static class DirectPass
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> shadowRays, PassOptions options,
         IRenderProgress? progress = null)
     {
-        var occluders = new int?[shadowRays.Count];
+        var occluders = WrittenArray.Of<int?>(shadowRays.Count);
         bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[shadowRays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);

@@ -66,6 +66,8 @@ public static class IteratedSearch
                 return tables;
             });
             int[] Block(int start) => active.AsSpan(start, Math.Min(BlockSize, active.Length - start)).ToArray();
+            // One block's queries at a time, in one buffer for the round: an array per block is 128 KB for every block of every pass.
+            var queryBuffer = new HitQuery[Math.Min(BlockSize, active.Length)];
             var nextBlock = Block(0);
             var nextTables = Tables(0, nextBlock);
             for (var start = 0; start < active.Length; start += BlockSize)
@@ -77,7 +79,7 @@ public static class IteratedSearch
                     nextTables = Tables(start + BlockSize, nextBlock);
                 }
                 tableRows += (long)(kept is null ? block.Length : kept.AsSpan(from, block.Length).Count((RayTable?)null)) * geometry.Count;
-                var queries = new HitQuery[block.Length];
+                var queries = new ArraySegment<HitQuery>(queryBuffer, 0, block.Length);
                 for (var k = 0; k < block.Length; k++) queries[k] = new HitQuery(tables[k], window(block[k], tables[k]), schedule?.Invoke(round, block[k]));
                 var classically = settle is null ? [] : Enumerable.Range(0, block.Length).Where(k => settle(round, block[k])).ToArray();
                 settledRays += classically.Length;
@@ -85,9 +87,10 @@ public static class IteratedSearch
                 var outcomes = Outcomes(search, queries, classically);
                 for (var k = 0; k < block.Length; k++)
                 {
-                    cost += outcomes[k].Cost;
-                    ledger?.Record(block[k], queries[k].Schedule, outcomes[k]);
-                    finished[from + k] = observe(block[k], tables[k], outcomes[k]);
+                    var outcome = outcomes[k];
+                    cost += outcome.Cost;
+                    ledger?.Record(block[k], queries[k].Schedule, outcome);
+                    finished[from + k] = observe(block[k], tables[k], outcome);
                     if (!finished[from + k]) (keep ??= new RayTable?[active.Length])[from + k] = tables[k];
                 }
                 progress?.Report(name, (round + (double)(start + block.Length) / active.Length) / iterations);
@@ -133,13 +136,14 @@ public static class IteratedSearch
 
     // The engine answers every query but the ones settled classically, which test every primitive (the classical
     // engine's search, whatever the engine: the same N tests brute force would make).
-    private static HitOutcome[] Outcomes(IHitSearch search, HitQuery[] queries, int[] classically)
+    private static IReadOnlyList<HitOutcome> Outcomes(IHitSearch search, ArraySegment<HitQuery> queries, int[] classically)
     {
-        if (classically.Length == 0) return [.. search.Run(queries)];
-        var isClassical = new bool[queries.Length];
+        // The engine's answers as they come: a copy of a block's outcomes is 192 KB for every block of every pass.
+        if (classically.Length == 0) return search.Run(queries);
+        var isClassical = new bool[queries.Count];
         foreach (var k in classically) isClassical[k] = true;
-        var quantum = Enumerable.Range(0, queries.Length).Where(k => !isClassical[k]).ToArray();
-        var outcomes = new HitOutcome[queries.Length];
+        var quantum = Enumerable.Range(0, queries.Count).Where(k => !isClassical[k]).ToArray();
+        var outcomes = new HitOutcome[queries.Count];
         var fromEngine = quantum.Length == 0 ? [] : search.Run([.. quantum.Select(k => queries[k])]);
         for (var j = 0; j < quantum.Length; j++) outcomes[quantum[j]] = fromEngine[j];
         var settled = Classical.Run([.. classically.Select(k => queries[k])]);

@@ -21,13 +21,13 @@ public static class NeighbourGathering
         {
             var triedCount = 0;
             var changed = false;
-            Ray? ray = null; // read at its first test: a pass's rays may be computed on each read
+            Ray? read = null; // read at its first test: a pass's rays may be computed on each read
             var count = layout.Neighbours(i, neighbours);
             for (var n = 0; n < count; n++)
             {
                 if (hits[neighbours[n]] is not { } held || hits[i]?.Primitive == held.Primitive || tried[..triedCount].Contains(held.Primitive)) continue;
                 tried[triedCount++] = held.Primitive;
-                ray ??= rays[i];
+                var ray = read ??= rays[i];
                 var window = Hit.Beyond(ray, hits[i], geometry.Count, tieBreak);
                 tests++;
                 if (RayTable.Test(geometry, ray, held.Primitive, window) is not { } row) continue;
@@ -50,14 +50,14 @@ public static class NeighbourGathering
         {
             if (occluders[i] is not null) continue;
             var triedCount = 0;
-            Ray? ray = null; // read at its first test, as above
+            Ray? read = null; // read at its first test, as above
             var count = layout.Neighbours(i, neighbours);
             for (var n = 0; n < count; n++)
             {
                 if (occluders[neighbours[n]] is not { } held || tried[..triedCount].Contains(held)) continue;
                 tried[triedCount++] = held;
                 tests++;
-                ray ??= rays[i];
+                var ray = read ??= rays[i];
                 if (RayTable.Test(geometry, ray, held, HitWindow.Range(ray.Near, ray.Far, geometry.Count)) is null) continue;
                 occluders[i] = held;
                 updated++;
@@ -89,10 +89,10 @@ public static class NeighbourGathering
                 allSame &= held == hits[coarser[0]]?.Primitive;
                 if (held is { } p && !distinct[..distinctCount].Contains(p)) distinct[distinctCount++] = p;
             }
-            Ray? ray = null; // read at its first test, as in ForClosest
+            Ray? read = null; // read at its first test, as in ForClosest
             foreach (var p in distinct[..distinctCount])
             {
-                ray ??= rays[i];
+                var ray = read ??= rays[i];
                 var window = Hit.Beyond(ray, hits[i], geometry.Count, tieBreak);
                 tests++;
                 if (RayTable.Test(geometry, ray, p, window) is not { } row) continue;
@@ -116,7 +116,7 @@ public static class NeighbourGathering
             Span<int> coarser = stackalloc int[PixelLayout.MostCoarserNeighbours];
             Span<int> tried = stackalloc int[PixelLayout.MostCoarserNeighbours];
             var (count, triedCount, noneOccluded) = (layout.CoarserNeighbours(i, levels, coarser), 0, true);
-            Ray? ray = null; // read at its first test, as in ForOcclusion
+            Ray? read = null; // read at its first test, as in ForOcclusion
             for (var n = 0; n < count; n++)
             {
                 if (occluders[coarser[n]] is not { } p) continue;
@@ -124,7 +124,7 @@ public static class NeighbourGathering
                 if (updated || tried[..triedCount].Contains(p)) continue;
                 tried[triedCount++] = p;
                 tests++;
-                ray ??= rays[i];
+                var ray = read ??= rays[i];
                 if (RayTable.Test(geometry, ray, p, HitWindow.Range(ray.Near, ray.Far, geometry.Count)) is null) continue;
                 occluders[i] = p;
                 updated = true;

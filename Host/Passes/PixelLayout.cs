@@ -22,14 +22,26 @@ public sealed class PixelLayout
     {
         _width = width;
         _height = height;
-        _pixelOf = [.. pixelOfRay];
-        _channelOf = channelOfRay is null ? new int[_pixelOf.Length] : [.. channelOfRay];
+        _pixelOf = ReadAll(pixelOfRay);
+        _channelOf = channelOfRay is null ? new int[_pixelOf.Length] : ReadAll(channelOfRay);
         _firstOfPixel = new int[width * height + 1];
         foreach (var pixel in _pixelOf) _firstOfPixel[pixel + 1]++;
         for (var pixel = 0; pixel < width * height; pixel++) _firstOfPixel[pixel + 1] += _firstOfPixel[pixel];
         _byPixel = new int[_pixelOf.Length];
         var next = _firstOfPixel[..^1];
         for (var i = 0; i < _pixelOf.Length; i++) _byPixel[next[_pixelOf[i]]++] = i;
+    }
+
+    // Every item by its index, on all cores: a shadow pass's pixels and channels are computed on each read.
+    private static int[] ReadAll(IReadOnlyList<int> items)
+    {
+        var all = new int[items.Count];
+        if (all.Length == 0) return all;
+        Parallel.ForEach(System.Collections.Concurrent.Partitioner.Create(0, all.Length, 1 << 14), range =>
+        {
+            for (var i = range.Item1; i < range.Item2; i++) all[i] = items[i];
+        });
+        return all;
     }
 
     // The ray of channel `channel` at `pixel` (the last listed, should two share both), or −1.
@@ -80,12 +92,15 @@ public sealed class PixelLayout
         var count = 0;
         var (y, x) = Math.DivRem(_pixelOf[ray], _width);
         var step = 1 << LevelAt(x, y, levels);
-        var coarse = 2 * step - 1; // a coordinate on the coarser lattice has no bit of this mask set (powers of two: no division)
-        for (var dy = -step; dy <= step; dy += step)
-            for (var dx = -step; dx <= step; dx += step)
+        // A coordinate, a multiple of step, is on the coarser lattice when its step bit is clear: then it stays (offset 0),
+        // otherwise both neighbours at −step and +step are on it. Offsets ascend, y outer, as the corners of the cell.
+        var (dyFrom, dyStep) = (y & step) != 0 ? (-step, 2 * step) : (0, 1);
+        var (dxFrom, dxStep) = (x & step) != 0 ? (-step, 2 * step) : (0, 1);
+        for (var dy = dyFrom; dy <= -dyFrom; dy += dyStep)
+            for (var dx = dxFrom; dx <= -dxFrom; dx += dxStep)
             {
                 var (nx, ny) = (x + dx, y + dy);
-                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height || (nx & coarse) != 0 || (ny & coarse) != 0) continue;
+                if ((dx, dy) == (0, 0) || nx < 0 || ny < 0 || nx >= _width || ny >= _height) continue;
                 if (RayAt(ny * _width + nx, _channelOf[ray]) is var neighbour and >= 0) into[count++] = neighbour;
             }
         return count;
@@ -109,7 +124,7 @@ public sealed class PixelLayout
     {
         var count = 0;
         var (pixel, channel) = (_pixelOf[ray], _channelOf[ray]);
-        var (x, y) = (pixel % _width, pixel / _width);
+        var (y, x) = Math.DivRem(pixel, _width);
         if (x > 0 && RayAt(pixel - 1, channel) is var left and >= 0) into[count++] = left;
         if (x < _width - 1 && RayAt(pixel + 1, channel) is var right and >= 0) into[count++] = right;
         if (y > 0 && RayAt(pixel - _width, channel) is var up and >= 0) into[count++] = up;

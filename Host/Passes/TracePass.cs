@@ -19,7 +19,7 @@ public static class TracePass
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, PassOptions options,
         IRenderProgress? progress = null)
     {
-        var hits = new Hit?[rays.Count];
+        var hits = WrittenArray.Of<Hit?>(rays.Count);
         bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
         var misses = new int[rays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);

@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Rays;
 /// <param name="Far">Largest accepted depth, inclusive; <see cref="Unbounded"/> for none.</param>
 /// <param name="MaxDistance">Exclusive end of the ray in parameter t (a shadow ray ends at its light, t = 1); infinity for none. Exact, not quantised.</param>
 /// <param name="ExcludedPrimitive">The primitive the ray leaves from (a shadow or specular ray's surface), never hit; −1 for none.</param>
-public sealed record Ray(Vec3 Origin, Vec3 Direction, int Near = 0, int Far = Ray.Unbounded, double MaxDistance = double.PositiveInfinity, int ExcludedPrimitive = -1)
+public readonly record struct Ray(Vec3 Origin, Vec3 Direction, int Near = 0, int Far = Ray.Unbounded, double MaxDistance = double.PositiveInfinity, int ExcludedPrimitive = -1)
 {
     public const int Unbounded = int.MaxValue;
 

@@ -10,7 +10,7 @@ namespace QuantumRayTracing.Rendering;
 /// </summary>
 public interface IPartRenderer
 {
-    /// <summary>How many parts are rendered at once: one here (a part uses every core), the workers' capacity on a cluster.</summary>
+    /// <summary>How many parts are rendered at once: here two on the engines searching in this process (<see cref="LocalParts.TilesAtOnce"/>), the workers' capacity on a cluster.</summary>
     int Concurrency { get; }
 
     /// <summary>The part <paramref name="window"/> (null: the whole image) at <paramref name="options"/>; told its passes' progress where it runs here.</summary>

@@ -24,7 +24,15 @@ public sealed class LocalParts : IPartRenderer
         _approximation = engine.Kind.ApproximatesNoise && engine.IsNoisy ? EngineFactory.Approximation(engine.NoiseOracle, scene) : null;
     }
 
-    public int Concurrency => 1;
+    public int Concurrency => TilesAtOnce(_engine.Kind);
+
+    /// <summary>
+    /// Tiles rendered at once here: two on an engine searching in this process, so the stretches of one tile that run in
+    /// order on one core (a block's outcomes observed, NeighOpt's sweep, points taken in pixel order) run beside the other
+    /// tile's work on all cores; one on the simulator engines, whose searches go through the Q# bridges. Each tile renders
+    /// the same whenever it runs, so the image does not change, only how many tiles' work is held at once.
+    /// </summary>
+    public static int TilesAtOnce(EngineKind kind) => kind.RunsQSharp ? 1 : Math.Min(2, Environment.ProcessorCount);
 
     public RenderResult Render(RenderOptions options, ImageWindow? window, IRenderProgress? progress)
     {

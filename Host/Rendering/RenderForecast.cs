@@ -11,7 +11,8 @@ namespace QuantumRayTracing.Rendering;
 /// a smaller warm-up run; the time is a line through the two, in the pixel count.
 /// </summary>
 /// <remarks>
-/// Large renders are tiled (<see cref="TiledRender"/>): the renderer holds one tile's work at a time, its surface points
+/// Large renders are tiled (<see cref="TiledRender"/>): the renderer holds the work of the tiles it renders at once
+/// (<see cref="LocalParts.TilesAtOnce"/>), each tile's surface points
 /// and, while a pass runs, that pass's state per ray (camera and shadow rays themselves are computed when read), about
 /// <see cref="BytesPerRay"/> per ray over the largest traced tile; and per pixel of the image, <see cref="BytesPerPixel"/>
 /// (the render's and the reference's 8-bit images and the image encoder's buffer). Above <see cref="BaseBytes"/>, rounded up
@@ -58,7 +59,10 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
         var pixels = (long)options.Width * options.Height;
         var time = largeTime + TimeSpan.FromSeconds(perPixel * (pixels - largePixels));
         var raysPerPixel = rays / largePixels;
-        return new RenderForecast(pixels, raysPerPixel, BaseBytes + (long)(BytesPerRay * raysPerPixel * TiledRender.MostTracedPixels(options.LatticeLevels)) + BytesPerPixel * pixels, time)
+        // The tiles rendered at once here each hold their work; a cluster's workers hold theirs.
+        var tiles = settings.EngineSetup.ImagePartsOnCluster ? 1 : LocalParts.TilesAtOnce(settings.Engine);
+        var tileBytes = (long)(BytesPerRay * raysPerPixel * TiledRender.MostTracedPixels(options.LatticeLevels));
+        return new RenderForecast(pixels, raysPerPixel, BaseBytes + tiles * tileBytes + BytesPerPixel * pixels, time)
         {
             ImageOnCluster = settings.EngineSetup.ImagePartsOnCluster,
         };

@@ -34,7 +34,7 @@ public static class SceneRenderer
         var cameraRays = CameraRays.Computed(scene.Camera, window ?? ImageWindow.Whole(options.Width, options.Height));
         var plan = PlanPasses(scene, search, options, cameraRays, passes, progress);
         var pixels = cameraRays.Count;
-        var radiance = new Vec3[pixels];
+        var radiance = WrittenArray.Of<Vec3>(pixels);
         var allowed = (options.Budget ?? 0) * pixels;
         var (primaryPoints, specularQueue) = TracePrimaryRays(plan, cameraRays, radiance, passes, allowed / 2);
         var points = TraceSpecularRays(plan, primaryPoints, specularQueue, radiance, passes, Left(allowed, passes) / 3);
@@ -149,7 +149,7 @@ public static class SceneRenderer
         var slots = new int[present.AsSpan().Count(true)];
         for (int slot = 0, i = 0; slot < present.Length; slot++)
             if (present[slot]) slots[i++] = slot;
-        var rays = new ComputedList<Ray>(slots.Length, i => RayAt(slots[i] / lightCount, slots[i] % lightCount)!);
+        var rays = new ComputedList<Ray>(slots.Length, i => RayAt(slots[i] / lightCount, slots[i] % lightCount)!.Value);
         var pixels = new ComputedList<int>(slots.Length, i => points[slots[i] / lightCount].Pixel);
         var channels = new ComputedList<int>(slots.Length, i => 2 * (slots[i] % lightCount) + (slots[i] / lightCount < points.PrimaryCount ? 0 : 1));
         var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, rays, plan.Shadow(pixels, channels, allowance: allowance), plan.Progress);

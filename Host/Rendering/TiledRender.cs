@@ -9,10 +9,10 @@ namespace QuantumRayTracing.Rendering;
 /// <summary>
 /// A large render in tiles (<see cref="ImageTiles"/>): each tile's pixels, with a border as wide as the coarsest lattice step,
 /// rendered on their own by <see cref="SceneRenderer"/> with a seed of the tile's own, and its interior copied into the image.
-/// A render then holds the image and one tile's work, not every pixel's, and a tile renders the same whenever it runs. Each
+/// A render then holds the image and the work of the tiles running at once, not every pixel's, and a tile renders the same whenever it runs. Each
 /// tile keeps the budget for its own pixels (its allowance is the budget's share of its interior, spent on its traced pixels),
 /// so the image keeps it too; the border's rays are traced and counted in every tile that traces them. Where the tiles render
-/// (<see cref="IPartRenderer"/>: one after another here, several at once on a cluster's workers) does not change the image.
+/// (<see cref="IPartRenderer"/>: two at a time here, several at once on a cluster's workers) does not change the image.
 /// </summary>
 public static class TiledRender
 {
@@ -71,7 +71,7 @@ public static class TiledRender
         }
         else
         {
-            // Parts rendered elsewhere report only when they are done.
+            // Parts rendered at once report only when they are done.
             var done = 0;
             progress?.Report(stage, 0);
             try

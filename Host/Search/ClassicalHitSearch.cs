@@ -10,16 +10,19 @@ public sealed class ClassicalHitSearch : IHitSearch
 
     public IReadOnlyList<HitOutcome> Run(IReadOnlyList<HitQuery> queries, Action<int, int>? onRound = null)
     {
-        var outcomes = new HitOutcome[queries.Count];
+        // The answers are kept in 12 bytes each and handed back as outcomes when read: a block's outcomes as an array are
+        // 48 bytes each, allocated for every block of every pass.
+        var answers = new Answer[queries.Count];
         Parallel.For(0, queries.Count, k =>
         {
             var (table, window, _) = queries[k];
-            outcomes[k] = new HitOutcome(table.BestAccepted(window), true,
-                new SearchCost(0, 0, table.Count, 0));
+            answers[k] = new Answer(table.BestAccepted(window), table.Count);
         });
         onRound?.Invoke(1, 0);
-        return outcomes;
+        return new Rays.ComputedList<HitOutcome>(answers.Length, k => new HitOutcome(answers[k].Primitive, true, new SearchCost(0, 0, answers[k].Tests, 0)));
     }
+
+    private readonly record struct Answer(int? Primitive, int Tests);
 
     /// <summary>None: every primitive is tested.</summary>
     public double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null) => 0;

@@ -85,7 +85,7 @@ public static partial class ScaleExperiment
             render on the engine, then the classical reference it is compared with (same as every `render`). *Render* and *reference* are their wall
             times as the render's JSON gives them; *peak memory* is the process's peak resident memory (Linux VmHWM, read every
             {RenderProcess.PollInterval.TotalMilliseconds:F0} ms), over both renders. From 1024x1024 pixels both renders are tiled (tiles of {TiledRender.TileSize}x{TiledRender.TileSize}
-            and a border, [rendering.md](rendering.md#tiles)), so memory is the images' bytes and one tile's work; the tiles' border rays are in Int/Ray.
+            and a border, [rendering.md](rendering.md#tiles)), so memory is the images' bytes and the work of the tiles rendered at once (two on these engines); the tiles' border rays are in Int/Ray.
             From 1024x1024 pixels `render` also forecasts the run first and refuses one whose
             forecast memory exceeds what the machine has available ([rendering.md](rendering.md#large-renders-forecast-memory-guard-and-progress)): such rows give the forecast and no times. The forecast time covers the render and its reference: compare it with their sum.
             Int/Ray is conservative (docs/conventions.md; the BVH's counts node and primitive tests and its build). *Tests/s* is the render's #C_Int
