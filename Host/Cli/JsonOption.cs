@@ -3,7 +3,6 @@ using System.CommandLine.Help;
 using System.Reflection;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Engines;
-using QuantumRayTracing.Noise;
 
 namespace QuantumRayTracing.Cli;
 
@@ -40,9 +39,7 @@ public sealed class JsonOption
         var record = new RunRecord(parse.CommandResult.Command.Name, Values(parse),
             engine is null ? null : parse.GetValue(engine.Seed),
             engine is null ? null : EngineFactory.Name(parse.GetValue(engine.Engine)),
-            noise ?? (engine is null ? RunNoise.None
-                : engine.GetDevice(parse) is { } device ? RunNoise.Of(parse.GetValue(engine.Engine), device, EngineFactory.NoiseDescription(parse.GetValue(engine.Engine), NoiseModel.None, device: device))
-                : RunNoise.Of(parse.GetValue(engine.Engine), engine.GetNoise(parse))), figures, ranOn);
+            noise ?? (engine is null ? RunNoise.None : RunNoise.Of(parse.GetValue(engine.Engine), engine.GetNoise(parse))), figures, ranOn);
         RunJsonFile.Write(path, record);
     }
 

@@ -62,7 +62,7 @@ public sealed class SearchCommand : Command
         SearchRunView.PrintPlan(settings);
         var run = SearchRunView.RunWithProgress(settings);
         SearchRunView.Print(settings, run);
-        _json.Write(parse, run.Figures, _engine, run.RanOn);
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.RunNoise);
         return ExitCodes.Success;
     }
 }

@@ -23,6 +23,10 @@ public sealed record RunNoise(string Model, IReadOnlyDictionary<string, double>?
         return new RunNoise(kind.ApproximatesNoise ? "pauli, depolarizing approximation" : "pauli", rates, description ?? EngineFactory.NoiseDescription(kind, noise));
     }
 
+    /// <summary>The record of a run under <paramref name="device"/> when given, else under <paramref name="noise"/>, described as the run printed it.</summary>
+    public static RunNoise Of(EngineKind kind, NoiseModel noise, DeviceNoiseModel? device, string description) =>
+        device is null ? Of(kind, noise, description) : Of(kind, device, description);
+
     /// <summary>The record of a device model: its one- and two-qubit rates and readout flips; the description as the run printed it, or the model's own.</summary>
     public static RunNoise Of(EngineKind kind, DeviceNoiseModel device, string? description = null) =>
         new(kind.ApproximatesNoise ? "device, depolarizing approximation" : "device",

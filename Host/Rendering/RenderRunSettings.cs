@@ -67,7 +67,7 @@ public sealed record RenderRunSettings(
         + (NoiseAware && IsNoisy ? "; noise-aware passes (miss rates from the noisy runs' success)" : "");
 
     /// <summary>The noise as `--json` records it.</summary>
-    public RunNoise RunNoise => Device is { } device ? RunNoise.Of(Engine, device, NoiseDescription) : RunNoise.Of(Engine, NoiseModel, NoiseDescription);
+    public RunNoise RunNoise => RunNoise.Of(Engine, NoiseModel, Device, NoiseDescription);
 
     /// <summary>
     /// Refuses, before anything is printed or written, a noise model the engine cannot run, planning with a noise model the engine

@@ -43,6 +43,12 @@ public sealed record SearchRunSettings(
 
     public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
 
+    /// <summary>The noise model as this run's results name it.</summary>
+    public string NoiseDescription => EngineFactory.NoiseDescription(Engine, NoiseModel, device: Device);
+
+    /// <summary>The noise as `--json` records it.</summary>
+    public Output.RunNoise RunNoise => Output.RunNoise.Of(Engine, NoiseModel, Device, NoiseDescription);
+
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>What is wrong with <paramref name="marked"/> as the marked indices of <paramref name="count"/>: one naming the first outside 0..N-1, or one listed twice; null if nothing.</summary>

@@ -21,7 +21,7 @@ public static class SearchRunView
         var (marked, registers) = (settings.MarkedSet, settings.Registers);
         AnsiConsole.WriteLine($"N = {settings.Count}, marked = [{string.Join(", ", marked.Indices.ToArray())}] (t = {marked.MarkedCount}), M_l = {{{string.Join(", ", settings.Schedule.Bounds)}}}");
         AnsiConsole.WriteLine($"registers per search: {registers.IndexQubits} index qubits + {registers.AuxiliaryQubits} auxiliaries for the multi-controlled phase");
-        AnsiConsole.WriteLine($"noise model: {Noise(settings)}");
+        AnsiConsole.WriteLine($"noise model: {settings.NoiseDescription}");
     }
 
     public static void Print(SearchRunSettings settings, SearchRunResult run)
@@ -35,14 +35,13 @@ public static class SearchRunView
         table.AddRow("#C_Int per search", Per(figures.ClassicalTestsPerSearch));
         table.AddRow("Grover runs per search", Per(figures.GroverRunsPerSearch));
         table.AddRow("engine calls (rounds)", N(figures.Rounds));
-        table.AddRow("noise model", Noise(settings));
+        table.AddRow("noise model", settings.NoiseDescription);
         table.AddRow("wall time", $"{figures.WallTime.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s");
         table.AddRow("ran on", Markup.Escape(run.RanOn.Description));
         AnsiConsole.Write(table);
         AnsiConsole.MarkupLine("[grey]#Eval conservative counts r + 1 per Grover run with r ≥ 1 iterations, paper counts r; the initial sample costs none (docs/conventions.md).[/]");
     }
 
-    private static string Noise(SearchRunSettings settings) => EngineFactory.NoiseDescription(settings.Engine, settings.NoiseModel, device: settings.Device);
 
     private static string Per(double value) => value.ToString("0.00", CultureInfo.InvariantCulture);
 
