@@ -1,8 +1,10 @@
 using System.Collections.Concurrent;
 using System.Security.Cryptography;
 using System.Text;
+using System.Text.Json.Nodes;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Export;
+using QuantumRayTracing.Output;
 using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
@@ -11,7 +13,9 @@ namespace QuantumRayTracing.Tests.Export;
 /// The exports the checks read, each made once per test run: `qrt export` through the command line (as a user
 /// runs it) or <see cref="CircuitExporter"/>, on one bridge kept running (<see cref="ExportRun.SharedBridge"/>).
 /// A bridge's start-up and first requests cost more than a small circuit's export, and several tests check
-/// the same file. The files are the cache's: a test that changes one writes its copy elsewhere.
+/// the same file. The bridge sends each distinct request once: a circuit's export in another format asks the QDK
+/// the same (its QIR and distribution), and each format is written from that reply. The files are the cache's: a
+/// test that changes one writes its copy elsewhere.
 /// </summary>
 internal static class ExportCache
 {
@@ -21,11 +25,13 @@ internal static class ExportCache
 
     private static readonly Lock BridgeGate = new();
 
-    private static readonly Lazy<QSharpBridge> Bridge = new(() => new QSharpBridge());
+    private static readonly QSharpBridge Local = new();
+
+    private static readonly QSharpBridge Bridge = new(new OnceEach(Local));
 
     static ExportCache() => AppDomain.CurrentDomain.ProcessExit += (_, _) =>
     {
-        if (Bridge.IsValueCreated) Bridge.Value.Dispose();
+        Local.Dispose();
         Directory.Delete(Folder, recursive: true);
     };
 
@@ -39,11 +45,11 @@ internal static class ExportCache
     });
 
     /// <summary>`qrt <paramref name="arguments"/>` with console capture, its export (if any) on the shared bridge: exit code and standard error.</summary>
-    public static (int Code, string Error) RunOnTheSharedBridge(params string[] arguments)
+    private static (int Code, string Error) RunOnTheSharedBridge(params string[] arguments)
     {
         lock (BridgeGate)
         {
-            ExportRun.SharedBridge.Value = Bridge.Value;
+            ExportRun.SharedBridge.Value = Bridge;
             try
             {
                 return ConsoleCapture.Run(arguments);
@@ -72,8 +78,23 @@ internal static class ExportCache
         var key = string.Join('\n', ["export", format.ToString(), subject.Title, .. subject.Description, subject.Apply, $"{subject.RegisterQubits} {subject.RegisterName} {subject.UnmeasuredQubits}"]);
         return Once(key, () =>
         {
-            lock (BridgeGate) return CircuitExporter.Export(Bridge.Value, subject, format);
+            lock (BridgeGate) return CircuitExporter.Export(Bridge, subject, format);
         });
+    }
+
+    /// <summary>The local bridge's replies, each distinct request sent once (used under <see cref="BridgeGate"/>).</summary>
+    private sealed class OnceEach(QSharpBridge bridge) : IBridgeTransport
+    {
+        private readonly Dictionary<string, JsonNode> _replies = [];
+
+        public JsonNode Send(JsonObject request)
+        {
+            var key = request.ToJsonString();
+            if (!_replies.TryGetValue(key, out var reply)) _replies[key] = reply = bridge.Send(request);
+            return reply.DeepClone();
+        }
+
+        public RunPlace Place => RunPlace.LocalBridges(1);
     }
 
     /// <summary>What <paramref name="make"/> returns for <paramref name="key"/>, made by the first caller.</summary>
