@@ -45,12 +45,12 @@ public sealed class ClusterTileTests
     [Theory]
     [MemberData(nameof(Engines))]
     public void PartsThroughTheWireGiveTheLocalImage(EngineKind kind, double noise) =>
-        AssertPartsThroughTheWire(new EngineSetup(kind) { Noise = noise == 0 ? null : NoiseModel.Depolarizing(noise), NoiseAware = noise > 0 });
+        AssertPartsThroughTheWire(new EngineSetup(kind) { Noise = noise == 0 ? null : NoiseModel.Depolarizing(noise), IdealPlan = noise > 0 });
 
     /// <summary>A device model (gate rates and readout error) travels with the part as the Pauli model does.</summary>
     [Fact]
     public void ADeviceModelTravelsWithThePart() =>
-        AssertPartsThroughTheWire(new EngineSetup(EngineKind.Analytic) { Device = new DeviceNoiseModel(1e-4, 1e-3, 0.02, 0.04), NoiseAware = true });
+        AssertPartsThroughTheWire(new EngineSetup(EngineKind.Analytic) { Device = new DeviceNoiseModel(1e-4, 1e-3, 0.02, 0.04), IdealPlan = true });
 
     private static void AssertPartsThroughTheWire(EngineSetup engine)
     {

@@ -26,7 +26,8 @@ public static class DirectPass
         var misses = new int[shadowRays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, CheapConfirmation.Levels(options, shadowRays.Count));
+        var ledger = new RayLedger(shadowRays.Count, worstMiss, cheap, findEnds: true, CheapConfirmation.Levels(options, shadowRays.Count),
+            RayLedger.WorstMisses(search, geometry.Count, machine: true));
         void Apply(int i, RayTable table, HitOutcome outcome) => occluders[i] ??= outcome.Primitive;
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {
@@ -70,6 +71,6 @@ public static class DirectPass
         if (options.Allowance is { } allowance
             && BudgetRounds.Run(name, search, geometry, shadowRays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
             metrics = PassMetrics.Phases(metrics, rounds with { RoundIntersections = rounds.IntersectionsConservative }, 0, 0);
-        return ([.. occluders.Select(o => o is not null)], metrics with { ExpectedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
+        return ([.. occluders.Select(o => o is not null)], metrics with { ExpectedWrong = ledger.MachineExpectedTotal, PlannedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
     }
 }

@@ -24,7 +24,8 @@ public static class TracePass
         var misses = new int[rays.Count];
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, CheapConfirmation.Levels(options, rays.Count));
+        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, CheapConfirmation.Levels(options, rays.Count),
+            RayLedger.WorstMisses(search, geometry.Count, machine: true));
         // The table's own ray: a pass's rays may be computed on each read.
         HitWindow Window(int i, RayTable table) =>
             Hit.Beyond(table.Ray, hits[i], table.Count, options.TieBreak);
@@ -69,6 +70,6 @@ public static class TracePass
         if (options.Allowance is { } allowance
             && BudgetRounds.Run(name, search, geometry, rays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
             metrics = PassMetrics.Phases(metrics, rounds with { RoundIntersections = rounds.IntersectionsConservative }, 0, 0);
-        return (hits, metrics with { ExpectedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
+        return (hits, metrics with { ExpectedWrong = ledger.MachineExpectedTotal, PlannedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
     }
 }

@@ -23,7 +23,8 @@ namespace QuantumRayTracing.Rendering;
 /// <param name="Pool">Bridges a Q# engine runs on (a cluster's, say), used and not stopped; null starts local ones. A cluster's also renders a seeded engine's image parts (`render --cluster`).</param>
 /// <param name="MaxMemory">The peak memory a large render may be forecast to need (<see cref="RenderForecast"/>); null: what the machine has available.</param>
 /// <param name="NoiseOracle">Whose circuit the analytic engine's noise model counts.</param>
-/// <param name="NoiseAware">The passes plan with the noisy runs' success probabilities (analytic engine).</param>
+/// <param name="IdealPlan">Under noise, the passes plan with the noiseless machine's success probabilities instead of the noisy ones
+/// (analytic engine); the expected wrong pixels are still computed with the noisy ones.</param>
 /// <param name="Device">A device noise model (gate rates by arity, readout error) instead of <paramref name="Noise"/>; null for none.</param>
 public sealed record RenderRunSettings(
     Scene Scene,
@@ -39,7 +40,7 @@ public sealed record RenderRunSettings(
     BridgePool? Pool = null,
     long? MaxMemory = null,
     NoiseOracle NoiseOracle = NoiseOracle.GateLevel,
-    bool NoiseAware = false,
+    bool IdealPlan = false,
     DeviceNoiseModel? Device = null)
 {
     /// <summary>Area lights or VPLs: the render samples light, and a converged reference shows its Monte Carlo noise.</summary>
@@ -59,12 +60,14 @@ public sealed record RenderRunSettings(
     public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>The engine as <see cref="Renderer"/> builds it.</summary>
-    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, NoiseAware, ImagePartsOnCluster: Engine.IsSeedable && Pool?.Remote is not null, Device);
+    public EngineSetup EngineSetup => new(Engine, Search, LocalWorkers, MaxQubits, NoiseModel, Pool, NoiseOracle, IdealPlan, ImagePartsOnCluster: Engine.IsSeedable && Pool?.Remote is not null, Device);
 
     /// <summary>The noise model as this run's results name it.</summary>
     public string NoiseDescription => EngineFactory.NoiseDescription(Engine, NoiseModel,
         Engine.ApproximatesNoise && IsNoisy ? EngineFactory.Approximation(NoiseOracle, Scene) : null, Device)
-        + (NoiseAware && IsNoisy ? "; noise-aware passes (miss rates from the noisy runs' success)" : "");
+        + (!Engine.ApproximatesNoise || !IsNoisy ? ""
+            : IdealPlan ? "; the passes plan with the ideal miss rates (--ideal-plan), the expected wrong pixels take the noisy ones"
+            : "; the passes plan with the noisy runs' success");
 
     /// <summary>The noise as `--json` records it.</summary>
     public RunNoise RunNoise => RunNoise.Of(Engine, NoiseModel, Device, NoiseDescription);
@@ -76,7 +79,8 @@ public sealed record RenderRunSettings(
     public void EnsureRunnable()
     {
         EngineFactory.CheckNoise(Engine, NoiseModel, Device, Scene.Rectangles.Count);
-        if (NoiseAware && !Engine.ApproximatesNoise) throw new UserError("--noise-aware: only the analytic engine plans with its noise model; use --engine analytic");
+        if (IdealPlan && !Engine.ApproximatesNoise) throw new UserError("--ideal-plan: only the analytic engine plans with a noise model; use --engine analytic");
+        if (IdealPlan && !IsNoisy) throw new UserError("--ideal-plan: without a noise model (--noise, --device-noise, --readout-error) the plan is the ideal one already");
         if (Engine.ApproximatesNoise && IsNoisy) EngineFactory.Approximation(NoiseOracle, Scene);
     }
 

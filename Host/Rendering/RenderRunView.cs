@@ -58,10 +58,12 @@ public static class RenderRunView
         AnsiConsole.WriteLine($"wrong pixels: expected {budget.ExpectedWrongPixels:0.0} ({budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); "
             + (budget.Share is { } share ? $"budget {share:P1}" : "no budget (its searches run as configured)"));
         if (budget.Exceeded)
-            AnsiConsole.WriteLine($"over budget: the expected wrong pixels stay above {budget.Allowed:0.0} after {BudgetRounds.MaxRounds} budget rounds per pass");
-        AnsiConsole.WriteLine(noisy
-            ? "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)"
-            : "(expected: an expectation from each search path's miss rate and finds)");
+            AnsiConsole.WriteLine(settings.IdealPlan
+                ? $"over budget: {budget.ExpectedWrongPixels:0.0} wrong pixels expected under the noise model against {budget.Allowed:0.0} allowed, because the passes planned with the ideal miss rates (--ideal-plan)"
+                : $"over budget: the expected wrong pixels stay above {budget.Allowed:0.0} after {BudgetRounds.MaxRounds} budget rounds per pass");
+        AnsiConsole.WriteLine(!noisy ? "(expected: an expectation from each search path's miss rate and finds)"
+            : kind.ApproximatesNoise ? "(expected: an expectation from each search path's miss rate under the noise model above, and its finds)"
+            : "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)");
         if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } monteCarlo })
             AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {monteCarlo.Nrmse:P2} (Monte Carlo noise alone)");
         var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";

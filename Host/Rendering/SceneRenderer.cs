@@ -49,7 +49,7 @@ public static class SceneRenderer
 
     // The expected wrong rays of the passes so far: the budget left is what they did not spend (none, when a pass
     // ended over its allowance).
-    private static double Left(double allowed, List<PassMetrics> passes) => Math.Max(0, allowed - passes.Sum(p => p.ExpectedWrong));
+    private static double Left(double allowed, List<PassMetrics> passes) => Math.Max(0, allowed - passes.Sum(p => p.PlannedWrong));
 
     // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
     private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, IReadOnlyList<Ray> cameraRays, List<PassMetrics> passes, IRenderProgress? progress)

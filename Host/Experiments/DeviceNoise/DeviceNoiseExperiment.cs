@@ -98,7 +98,7 @@ public static class DeviceNoiseExperiment
                 foreach (var aware in new[] { false, true })
                 {
                     progress($"render: {name}, {oracle.Name()}{(aware ? ", noise-aware" : "")}");
-                    var m = RenderMeasurement.Run(settings.Scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), NoiseOracle: oracle, NoiseAware: aware, Device: device), options, classical);
+                    var m = RenderMeasurement.Run(settings.Scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), NoiseOracle: oracle, IdealPlan: !aware, Device: device), options, classical);
                     renders.Row([name, oracle.Name(), aware ? "noise-aware" : "ideal miss rates", F2(m.Result.Total.PerRayConservative), P(m.Error.Nrmse), N(m.Error.DifferentPixels),
                         Seconds(m.WallTime), (m.WallTime / noiseless.WallTime).ToString("0.0", CultureInfo.InvariantCulture)]);
                 }
