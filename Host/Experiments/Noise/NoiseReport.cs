@@ -464,7 +464,7 @@ public static class NoiseReport
             "- **lookup oracle** (`--noise-oracle lookup`): an oracle over intersection answers computed classically beforehand, which leaves out",
             "  the cost and the noise of computing them; its circuit evolved exactly as a density matrix (the model check above), once per",
             "  marked count the render asks, and kept for the process;",
-            "- **gate-level, noise-aware** (`--noise-aware`): the gate-level oracle's model, and the passes (termination rule, lattice",
+            "- **gate-level, noise-aware** (`render`'s default under noise): the gate-level oracle's model, and the passes (termination rule, lattice",
             "  confirmations, accuracy budget, classical settling) plan with each run's noisy success instead of the ideal one, so a ray whose",
             "  noisy search would cost more than N classical tests is settled classically.",
             "Int/Ray in the conservative count (r + 1 per Grover run, every classical test counted); NRMSE against the classical",
@@ -483,7 +483,7 @@ public static class NoiseReport
             var (oracle, slug) = (sweep.Label, sweep.Slug);
             report.Heading($"{sweep.Scene}, {oracle}", 3);
             report.Text($"Classical brute force: Int/Ray {F(classicalPerRay, "0.00")}. Noise model: the {sweep.Oracle.Description()}"
-                + (sweep.NoiseAware ? "; the passes plan with the noisy runs' success (`--noise-aware`)." : "; the passes plan with the ideal miss rates."));
+                + (sweep.NoiseAware ? "; the passes plan with the noisy runs' success (`render`'s default under noise)." : "; the passes plan with the ideal miss rates (`--ideal-plan`)."));
             var quantum = new TextTable($"render-{sweep.Scene}-{slug}", ["p per gate", "Int/Ray", "NRMSE", "#Dpix", "randomized NRMSE at equal Int/Ray", "wall time", "first of three", "vs noiseless"]);
             foreach (var q in sweep.Quantum)
             {

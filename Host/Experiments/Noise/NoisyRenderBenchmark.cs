@@ -66,7 +66,7 @@ public static class NoisyRenderBenchmark
 
     /// <summary>
     /// One scene's sweep over <paramref name="rates"/> on <paramref name="oracle"/>'s noise model, with <paramref name="noiseAware"/> the
-    /// passes planning with the noisy runs' success (<c>render --noise-aware</c>).
+    /// passes planning with the noisy runs' success (`render`'s default under noise; otherwise <c>--ideal-plan</c>).
     /// </summary>
     public static Sweep Run(string name, Scene scene, NoiseOracle oracle, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null, bool noiseAware = false)
     {
