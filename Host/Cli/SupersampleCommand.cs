@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;

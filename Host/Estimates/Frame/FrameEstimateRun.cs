@@ -1,3 +1,4 @@
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Cluster;
 using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Output;

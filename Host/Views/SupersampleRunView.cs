@@ -2,7 +2,9 @@ using System.Globalization;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 
-namespace QuantumRayTracing.Supersampling;
+using QuantumRayTracing.Supersampling;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>`supersample` on the console: what a run models before the estimates start, and its figures after.</summary>
 public static class SupersampleRunView
@@ -25,7 +27,7 @@ public static class SupersampleRunView
     /// <summary>The run on <paramref name="pool"/> (null: local bridges): its plan first, its progress on standard error, its figures after.</summary>
     public static SupersampleRunResult RunAndPrint(SupersampleRunSettings settings, Bridge.BridgePool? pool)
     {
-        var run = SupersampleRun.Run(settings with { Pool = pool }, new Rendering.ConsoleRunProgress(), plan => PrintPlan(settings, plan));
+        var run = SupersampleRun.Run(settings with { Pool = pool }, new ConsoleRunProgress(), plan => PrintPlan(settings, plan));
         Print(settings, run);
         return run;
     }

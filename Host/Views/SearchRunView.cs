@@ -2,7 +2,9 @@ using System.Globalization;
 using QuantumRayTracing.Engines;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Search;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>`search` on the console: the searched set and registers before the run, a progress bar during it, a table of what it found and cost after.</summary>
 public static class SearchRunView

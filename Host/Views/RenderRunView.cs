@@ -5,7 +5,9 @@ using QuantumRayTracing.Passes;
 using QuantumRayTracing.Scenes;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Rendering;
+using QuantumRayTracing.Rendering;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>`render` on the console: what a run models before it starts, and its figures (the paper's table 1 per pass) after.</summary>
 public static class RenderRunView
