@@ -20,7 +20,7 @@ public static class RenderRun
     public static RenderRunResult Run(RenderRunSettings settings, IRunProgress? progress = null, Action<RenderForecast>? onForecast = null)
     {
         var (scene, options) = (settings.Scene, settings.Options);
-        var plan = RenderPlan.Of(settings);
+        var plan = ModelledRegisters.Of(settings);
         if (RenderForecast.Applies(settings))
         {
             var forecast = RenderForecast.Of(settings);
@@ -38,7 +38,7 @@ public static class RenderRun
             throw new UserError($"{scene.Name}: {e.Message}");
         }
         var renderTime = clock.Elapsed;
-        FinishedRender.Release((long)options.Width * options.Height);
+        LargeRenderCollection.Collect((long)options.Width * options.Height);
 
         clock.Restart();
         var classical = new EngineSetup(EngineKind.Classical);

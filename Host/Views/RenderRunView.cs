@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Views;
 public static class RenderRunView
 {
     /// <summary>What the run models, printed before it starts.</summary>
-    public static void PrintPlan(RenderRunSettings settings, RenderPlan plan)
+    public static void PrintModel(RenderRunSettings settings, ModelledRegisters plan)
     {
         var (scene, options) = (settings.Scene, settings.Options);
         AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
@@ -33,7 +33,7 @@ public static class RenderRunView
     /// <summary>The run on <paramref name="pool"/> (null: local bridges): its plan first, its progress on standard error, its figures after.</summary>
     public static RenderRunResult RunAndPrint(RenderRunSettings settings, Bridge.BridgePool? pool)
     {
-        PrintPlan(settings, RenderPlan.Of(settings));
+        PrintModel(settings, ModelledRegisters.Of(settings));
         var run = RenderRun.Run(settings with { Pool = pool }, new ConsoleRunProgress(), PrintForecast);
         Print(settings, run);
         return run;
