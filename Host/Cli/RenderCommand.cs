@@ -76,9 +76,9 @@ public sealed class RenderCommand : Command
         var kind = parse.GetValue(_engine.Engine);
         var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
         var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
-        return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
+        var engine = _engine.GetSetup(parse, _qsearch.Get(parse), _engine.GetNoiseOracle(parse), parse.GetValue(_idealPlan));
+        return new RenderRunSettings(scene, options, engine,
             parse.GetValue(_output) ?? $"{DefaultScene.StemOf(sceneFile?.Name)}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
-            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), MaxMemory: OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes,
-            NoiseOracle: _engine.GetNoiseOracle(parse), IdealPlan: parse.GetValue(_idealPlan), Device: _engine.GetDevice(parse));
+            OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes);
     }
 }

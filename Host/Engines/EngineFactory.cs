@@ -16,6 +16,10 @@ public static class EngineFactory
 {
     public static string Name(EngineKind kind) => kind.Name;
 
+    /// <summary>The ray search of <paramref name="engine"/> (<see cref="CreateSearch(EngineKind, SeededRandom, int, QSearchOptions, int?, BridgePool?, NoiseModel?, DepolarizingApproximation?, bool, DeviceNoiseModel?)"/>).</summary>
+    public static IHitSearch CreateSearch(EngineSetup engine, SeededRandom root, DepolarizingApproximation? approximation = null) =>
+        CreateSearch(engine.Kind, root, engine.Workers, engine.Search, engine.MaxQubits, engine.Pool, engine.Noise, approximation, engine.IdealPlan, engine.Device);
+
     /// <summary>
     /// The ray search of <paramref name="kind"/>: QSearch over its Grover engine, or a classical search. The
     /// noise model is the caller's to check (<see cref="CheckNoise"/>), once per run.
@@ -40,6 +44,10 @@ public static class EngineFactory
                 _ => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
             };
     }
+
+    /// <summary>The Grover engine of <paramref name="engine"/>, its noise model checked (<see cref="Create(EngineKind, SeededRandom, int, int?, BridgePool?, NoiseModel?, DeviceNoiseModel?)"/>).</summary>
+    public static IGroverEngine Create(EngineSetup engine, SeededRandom root) =>
+        Create(engine.Kind, root, engine.Workers, engine.MaxQubits, engine.Pool, engine.NoiseModel, engine.Device);
 
     /// <summary>
     /// A Grover engine, its noise model checked; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines

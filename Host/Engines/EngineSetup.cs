@@ -36,6 +36,13 @@ public sealed record EngineSetup(
 
     public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
 
+    /// <summary>
+    /// This engine on <paramref name="bridges"/> (null: local bridges of its own); a seeded engine given a cluster's bridges renders
+    /// its image parts on the cluster's workers (`render --cluster`).
+    /// </summary>
+    public EngineSetup OnBridges(BridgePool? bridges) =>
+        this with { Pool = bridges, ImagePartsOnCluster = Kind.IsSeedable && bridges?.Remote is not null };
+
     /// <summary>The engine runs under some noise: a Pauli model or a device model.</summary>
     public bool IsNoisy => !NoiseModel.IsNoiseless || Device is { IsNoiseless: false };
 }

@@ -17,7 +17,7 @@ public sealed record ModelledRegisters(int Primitives, int IndexQubits, int Auxi
         var (scene, width, height) = (settings.Scene, settings.Options.Width, settings.Options.Height);
         var geometry = new SceneGeometry(scene);
         OracleRegisters? gate = null;
-        if (settings.Engine.SimulatesOracleGates)
+        if (settings.Engine.Kind.SimulatesOracleGates)
         {
             var centre = RayTable.Build(geometry, CameraRays.For(scene.Camera, width, height)[height / 2 * width + width / 2]);
             gate = OracleRegisters.For(new OracleInput(centre, centre.FullRange));

@@ -31,7 +31,7 @@ public static class RenderRun
         RenderResult result;
         try
         {
-            result = Stage(progress, settings.Engine.Name, p => Renderer.Render(scene, settings.EngineSetup, options, p));
+            result = Stage(progress, settings.Engine.Kind.Name, p => Renderer.Render(scene, settings.Engine, options, p));
         }
         catch (SimulatorLimitException e)
         {
@@ -68,7 +68,7 @@ public static class RenderRun
             converged is null ? null : ImageError.Between(reference.Image, converged.Image),
             renderTime, referenceTime, converged is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
         // After the render: a cluster's place counts the chunks it had to send again.
-        var ranOn = EngineFactory.Place(settings.Engine, settings.Pool, settings.LocalWorkers);
+        var ranOn = EngineFactory.Place(settings.Engine.Kind, settings.Engine.Pool, settings.Engine.Workers);
         return new RenderRunResult(figures, ranOn, result, reference, converged);
     }
 

@@ -13,7 +13,7 @@ public static class SearchRunView
     public static SearchRunResult RunWithProgress(SearchRunSettings settings) => AnsiConsole.Profile.Capabilities.Interactive
         ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
         {
-            var task = progress.AddTask($"{EngineFactory.Name(settings.Engine)}: searching", maxValue: settings.Searches);
+            var task = progress.AddTask($"{EngineFactory.Name(settings.Engine.Kind)}: searching", maxValue: settings.Searches);
             return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
         })
         : SearchRun.Run(settings);
