@@ -21,6 +21,9 @@ public sealed class ClusterTileTests
 {
     private static readonly Scene Qornell = Load("qornell-64.json");
 
+    // The tiled frames: tiling starts at 1024x1024, so their cost is the scene's per pixel; eight primitives tile the same way.
+    private static readonly Scene Qornell8 = Load("qornell-8.json");
+
     // Small tiles on a small image, so that every edge, border and clipped corner occurs (as in TiledRenderTests).
     private const int Tile = 32;
 
@@ -86,8 +89,8 @@ public sealed class ClusterTileTests
         var options = RenderDefaults.CommandLine(1024, 1024, 3);
         var engine = new EngineSetup(EngineKind.Analytic);
 
-        var remote = Renderer.Render(Qornell, engine with { Pool = pool, ImagePartsOnCluster = true }, options);
-        var local = Renderer.Render(Qornell, engine, options);
+        var remote = Renderer.Render(Qornell8, engine.OnBridges(pool), options);
+        var local = Renderer.Render(Qornell8, engine, options);
 
         AssertSameRender(local, remote);
         Assert.True(cluster.Served(0) > 0 && cluster.Served(1) > 0, $"tiles served: {cluster.Served(0)} and {cluster.Served(1)}; both workers should take some");
