@@ -29,13 +29,40 @@ public static class GltfReader
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            // SharpGLTF's schema, link and data checks, and the JSON or GLB container's own errors.
+            // SharpGLTF's checks refuse a non-finite POSITION before we see it: say so as for any other mesh format.
+            if (FirstNonFinitePosition(path) is var (element, vertex)) throw new MeshError(path, element, MeshBuilder.NotFinite(vertex));
+            // Its schema, link and data checks, and the JSON or GLB container's own errors.
             throw new MeshError(path, "file", $"is not a glTF 2.0 file that can be read: {FileChecks.FirstLine(e.Message)}");
         }
         var scene = model.DefaultScene ?? throw new MeshError(path, "scenes", "the file has no scene, so no node places a mesh");
         var mesh = new MeshBuilder(path);
         foreach (var root in scene.VisualChildren) AddNode(root, mesh, path);
         return new MeshFile(path, mesh.Build($"scenes[{scene.LogicalIndex}]"), []);
+    }
+
+    /// <summary>
+    /// The first NaN or infinite POSITION value of any primitive (untransformed), read without SharpGLTF's checks;
+    /// null when there is none or the file cannot be read even so.
+    /// </summary>
+    private static (string Element, Vec3 Vertex)? FirstNonFinitePosition(string path)
+    {
+        try
+        {
+            var model = ModelRoot.Load(path, new ReadSettings { Validation = SharpGLTF.Validation.ValidationMode.Skip });
+            foreach (var mesh in model.LogicalMeshes)
+                foreach (var primitive in mesh.Primitives)
+                {
+                    if (primitive.GetVertexAccessor("POSITION") is not { } positions) continue;
+                    var values = positions.AsVector3Array();
+                    for (var i = 0; i < values.Count; i++)
+                        if (!float.IsFinite(values[i].X) || !float.IsFinite(values[i].Y) || !float.IsFinite(values[i].Z))
+                            return ($"meshes[{mesh.LogicalIndex}].primitives[{primitive.LogicalIndex}].POSITION[{i}]", new Vec3(values[i].X, values[i].Y, values[i].Z));
+                }
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+        }
+        return null;
     }
 
     private static void AddNode(Node node, MeshBuilder mesh, string path)

@@ -15,7 +15,7 @@ internal sealed class MeshBuilder(string file)
     /// <returns>The vertex's index.</returns>
     public int AddVertex(Vec3 vertex, string element)
     {
-        if (!vertex.IsFinite) throw new MeshError(file, element, $"vertex {vertex} is not finite; every coordinate must be a finite number (no NaN or infinity)");
+        if (!vertex.IsFinite) throw new MeshError(file, element, NotFinite(vertex));
         _vertices.Add(vertex);
         return _vertices.Count - 1;
     }
@@ -26,6 +26,9 @@ internal sealed class MeshBuilder(string file)
             throw new MeshError(file, element, $"more than {TriangleMesh.MaxTriangles} triangles; a mesh may have at most {TriangleMesh.MaxTriangles} (a 16-qubit index register)");
         _triangles.Add(new MeshTriangle(a, b, c));
     }
+
+    /// <summary>The problem of a vertex with a NaN or infinite coordinate, in every format's errors.</summary>
+    public static string NotFinite(Vec3 vertex) => $"vertex {vertex} is not finite; every coordinate must be a finite number (no NaN or infinity)";
 
     public TriangleMesh Build(string element) => _triangles.Count == 0
         ? throw new MeshError(file, element, "no triangles: a mesh needs at least one")
