@@ -37,13 +37,14 @@ public static class CommandReference
         text.Append("Generated from the command-line parser by `").Append(CommandLineText).Append("`;\n");
         text.Append("a test fails when an option changes and this page was not regenerated.\n");
         text.Append("What the commands measure and print is in the pages of [docs/](README.md).\n\n");
-        var paths = Paths(CommandLine.Build(), []).ToArray();
+        var root = ReferenceRoot();
+        var paths = Paths(root, []).ToArray();
         foreach (var path in paths.Skip(1))
             text.Append("- [`qrt ").Append(string.Join(' ', path)).Append("`](#").Append(Anchor(path)).Append(")\n");
         foreach (var path in paths)
         {
             text.Append('\n').Append(path.Length == 0 ? "## qrt" : $"## qrt {string.Join(' ', path)}").Append("\n\n");
-            text.Append("```text\n").Append(Help(path)).Append("```\n");
+            text.Append("```text\n").Append(Help(root, path)).Append("```\n");
         }
         return text.ToString();
     }
@@ -78,12 +79,20 @@ public static class CommandReference
     private static string Anchor(string[] path) => "qrt-" + string.Join('-', path);
 
     /// <summary>What `qrt PATH --help` prints at <see cref="Width"/> columns, under the program's own name, lines trimmed.</summary>
-    public static string Help(string[] path)
+    public static string Help(string[] path) => Help(ReferenceRoot(), path);
+
+    // The parser as the page shows it: built once per page, without this machine's values, its help at the fixed width.
+    private static RootCommand ReferenceRoot()
     {
         var root = CommandLine.Build();
         WithoutThisMachine(root);
         foreach (var help in root.Options.OfType<HelpOption>())
             if (help.Action is HelpAction action) action.MaxWidth = Width;
+        return root;
+    }
+
+    private static string Help(RootCommand root, string[] path)
+    {
         var output = new StringWriter();
         var code = root.Parse([.. path, "--help"]).Invoke(new InvocationConfiguration { Output = output, EnableDefaultExceptionHandler = false });
         if (code != ExitCodes.Success) throw new InvalidOperationException($"'{string.Join(' ', path)} --help' exited with {code}");

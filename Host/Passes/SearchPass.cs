@@ -21,8 +21,9 @@ public static class SearchPass
         var findEnds = goal.FindEnds;
         var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
         var cheap = CheapConfirmation.Of(options, search, geometry.Count);
+        // The machine's misses are tracked apart only where they differ from the plan's (a noisy render planned as ideal).
         var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds, CheapConfirmation.Levels(options, rays.Count),
-            RayLedger.WorstMisses(search, geometry.Count, machine: true));
+            search.MachineMissesDiffer ? RayLedger.WorstMisses(search, geometry.Count, machine: true) : null);
         var found = goal.Found;
         bool Observe(int i, RayTable table, HitOutcome outcome)
         {

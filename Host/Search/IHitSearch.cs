@@ -29,6 +29,9 @@ public interface IHitSearch : IDisposable
     /// </summary>
     double MachineMissProbability(int count, IReadOnlyList<double> pt, QSearchSchedule? schedule = null) => MissProbability(count, pt, paperFormula: false, schedule);
 
+    /// <summary>Whether <see cref="MachineMissProbability"/> differs from the misses the passes plan with (a noisy render planned as ideal).</summary>
+    bool MachineMissesDiffer => false;
+
     /// <summary>
     /// The expected #Int (conservative count) of one search over <paramref name="count"/> primitives that finds
     /// nothing: what a further confirming search costs at most, for the classical settle (docs/conventions.md).

@@ -60,6 +60,8 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
             ? FalseNegativeRate.Eq10AtBound(Schedule(count), pt)
             : FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt, success);
 
+    public bool MachineMissesDiffer => machineSuccess is not null && machineSuccess != success;
+
     public double MachineMissProbability(int count, IReadOnlyList<double> pt, QSearchSchedule? schedule = null) =>
         FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt, machineSuccess ?? success);
 
