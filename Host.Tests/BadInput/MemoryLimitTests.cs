@@ -32,11 +32,11 @@ public sealed class MemoryLimitTests : IDisposable
     public void TheForecastComesFirstWithTheCalibrationsRaysPerPixel()
     {
         var scene = Intersection.TestScenes.Load("qornell-8.json");
-        var settings = new RenderRunSettings(scene, RenderDefaults.CommandLine(1024, 1024), EngineKind.Analytic, new QSearchOptions(), _output.File("big.png"), MaxMemory: 1L << 20);
+        var settings = new RenderRunSettings(scene, RenderDefaults.CommandLine(1024, 1024), new EngineSetup(EngineKind.Analytic), _output.File("big.png"), MaxMemory: 1L << 20);
         RenderForecast? told = null;
         var refused = Assert.Throws<QuantumRayTracing.Output.UserError>(() => RenderRun.Run(settings, null, f => told = f));
         Assert.Contains("--max-memory limit of 1 MB", refused.Message);
-        var calibration = Renderer.Render(scene, settings.EngineSetup, RenderDefaults.CommandLine(128, 128)).Total.Rays;
+        var calibration = Renderer.Render(scene, settings.Engine, RenderDefaults.CommandLine(128, 128)).Total.Rays;
         Assert.NotNull(told);
         Assert.Equal(calibration / (128.0 * 128), told.RaysPerPixel, 9);
         Assert.Equal(1024L * 1024, told.Pixels);
@@ -65,7 +65,7 @@ public sealed class MemoryLimitTests : IDisposable
     public void SmallRendersAndTheQSharpEnginesAreNotForecast()
     {
         var scene = Intersection.TestScenes.Load("qornell-8.json");
-        RenderRunSettings At(int side, EngineKind engine) => new(scene, RenderOptions.PaperPipeline(side, side), engine, new QSearchOptions(), "x.png");
+        RenderRunSettings At(int side, EngineKind engine) => new(scene, RenderOptions.PaperPipeline(side, side), new EngineSetup(engine), "x.png");
         Assert.False(RenderForecast.Applies(At(1023, EngineKind.Classical)));
         Assert.True(RenderForecast.Applies(At(1024, EngineKind.Classical)));
         Assert.False(RenderForecast.Applies(At(1024, EngineKind.FullState)));

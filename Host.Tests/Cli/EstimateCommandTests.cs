@@ -76,7 +76,8 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void FramePricingOnAClusterCostsTheSame()
     {
-        string[] frame = ["estimate", "--frame", Scene, "--size", "2", "--models", "qubit_gate_ns_e3", "--workers", "1"];
+        // The smallest frame, one pixel: its 15 estimator jobs still go to both workers.
+        string[] frame = ["estimate", "--frame", Scene, "--size", "1", "--models", "qubit_gate_ns_e3", "--workers", "1"];
         Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, "--cluster", "cluster.json"]).Code); // one ray's estimates need no cluster
         var (local, onCluster) = (_scratch.File("local.json"), _scratch.File("cluster.json"));
         Assert.Equal(0, ConsoleCapture.Run([.. frame, "--json", local]).Code);
@@ -99,7 +100,7 @@ public sealed class EstimateCommandTests : IDisposable
     public void FrameWritesItsTableAsMarkdownAndCsvAndKeepsOtherFiles()
     {
         var markdown = Path.ChangeExtension(Path.Combine(_scratch.Path, "frame"), "md");
-        string[] frame = ["estimate", "--frame", Scene, "--size", "2", "--qpus", "2", "--workers", "1"];
+        string[] frame = ["estimate", "--frame", Scene, "--size", "1", "--qpus", "2", "--workers", "1"];
         Assert.Equal(0, ConsoleCapture.Run([.. frame, "-o", markdown]).Code);
         var lines = File.ReadAllLines(markdown);
         Assert.Equal(GeneratedReport.MarkdownMarker("qrt estimate --frame"), lines[0]);
@@ -127,7 +128,7 @@ public sealed class EstimateCommandTests : IDisposable
         // What an earlier run of the same command left: it replaces both.
         File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine) + "\nan earlier report\n");
         ImageFiles.Write([(new RgbImage(1, 1), plot)]);
-        string[] sweep = ["estimate", "frame-sweep", "--sizes", "2", "--primitives", "8", "--scaling-size", "2", "--detailed-size", "2", "--models", "qubit_gate_ns_e3", "--workers", "1", "-o", output];
+        string[] sweep = ["estimate", "frame-sweep", "--sizes", "1", "--primitives", "8", "--scaling-size", "1", "--detailed-size", "1", "--models", "qubit_gate_ns_e3", "--workers", "1", "-o", output];
         Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
         var lines = File.ReadAllLines(output);
         Assert.DoesNotContain("an earlier report", lines);
@@ -135,7 +136,7 @@ public sealed class EstimateCommandTests : IDisposable
         // Each scene at the one size in the logical table, the model's table and the per-pixel table; N in the
         // logical, runtime and qubit tables.
         foreach (var scene in new[] { "Qornell-64", "Depth Complexity 64" })
-            Assert.Equal(3, lines.Count(l => l.StartsWith($"| {scene} | 2x2 |", StringComparison.Ordinal)));
+            Assert.Equal(3, lines.Count(l => l.StartsWith($"| {scene} | 1x1 |", StringComparison.Ordinal)));
         Assert.Equal(3, lines.Count(l => l.StartsWith("| 8 | ", StringComparison.Ordinal)));
         Assert.Contains(lines, l => l.Contains("(frame-sweep-runtime-vs-primitives.png)", StringComparison.Ordinal));
         Assert.Equal(QuantumRayTracing.Estimates.FramePlots.Width, ImageReader.Read(plot).Width);

@@ -111,6 +111,7 @@ public sealed class ClusterFaultTests
     public void NoReachableWorkerIsExitCodeThreeWithOneLine()
     {
         using var cluster = new TestCluster(5); // the file only: no worker started
+        using var _ = TestCluster.RefusalIsTheAnswer();
         var (code, error) = ConsoleCapture.Run("search", "-n", "8", "-s", "2", "--cluster", cluster.ConfigPath);
         Assert.Equal(ExitCodes.QuantumFailure, code);
         var first = error.Split('\n')[0];

@@ -46,6 +46,14 @@ public sealed class ClusterSeedTests : IDisposable
         }
     }
 
+    /// <summary>One bridge's worth of a shared executor: the cluster's workers have one bridge each, as on two machines.</summary>
+    private sealed class OneBridgeOf(IChunkExecutor shared) : IChunkExecutor
+    {
+        public int Capacity => 1;
+
+        public Task<JsonNode> Execute(JsonObject request) => shared.Execute(request);
+    }
+
     /// <summary>This machine's bridges behind the transport seam, so their requests can be recorded too.</summary>
     private sealed class LocalTransport(IChunkExecutor bridges) : IBridgeTransport
     {
@@ -55,7 +63,7 @@ public sealed class ClusterSeedTests : IDisposable
     }
 
     private RenderRunResult Render(BridgePool pool, ulong seed, string output) => RenderRun.Run(new RenderRunSettings(
-        Empty, RenderDefaults.CommandLine(4, 4, seed), EngineKind.FullState, new QSearchOptions(), _scratch.File(output), Pool: pool));
+        Empty, RenderDefaults.CommandLine(4, 4, seed), new EngineSetup(EngineKind.FullState).OnBridges(pool), _scratch.File(output)));
 
     // Chunks of one round run at once, so their order varies: the requests are compared as sorted lists.
     private static string[] Sorted(params RecordingExecutor[] executors) => executors.SelectMany(e => e.Requests).Order(StringComparer.Ordinal).ToArray();
@@ -80,9 +88,8 @@ public sealed class ClusterSeedTests : IDisposable
         using (var pool = new BridgePool(new LocalTransport(otherSeed), 2))
             Render(pool, seed: 12, "other.png");
 
-        using var first = new WorkerBridges(1);
-        using var second = new WorkerBridges(1);
-        var (onFirst, onSecond) = (new RecordingExecutor(first), new RecordingExecutor(second));
+        // The workers run on the same two Node bridges, one each: what a worker sends them is recorded before they see it.
+        var (onFirst, onSecond) = (new RecordingExecutor(new OneBridgeOf(localBridges)), new RecordingExecutor(new OneBridgeOf(localBridges)));
         RenderRunResult onCluster;
         using (var cluster = new TestCluster(120, onFirst, onSecond))
         using (var pool = ClusterBridges.Start(cluster.ConfigPath, 1))

@@ -45,12 +45,12 @@ public sealed class ClusterTileTests
     [Theory]
     [MemberData(nameof(Engines))]
     public void PartsThroughTheWireGiveTheLocalImage(EngineKind kind, double noise) =>
-        AssertPartsThroughTheWire(new EngineSetup(kind) { Noise = noise == 0 ? null : NoiseModel.Depolarizing(noise), NoiseAware = noise > 0 });
+        AssertPartsThroughTheWire(new EngineSetup(kind) { Noise = noise == 0 ? null : NoiseModel.Depolarizing(noise), IdealPlan = noise > 0 });
 
     /// <summary>A device model (gate rates and readout error) travels with the part as the Pauli model does.</summary>
     [Fact]
     public void ADeviceModelTravelsWithThePart() =>
-        AssertPartsThroughTheWire(new EngineSetup(EngineKind.Analytic) { Device = new DeviceNoiseModel(1e-4, 1e-3, 0.02, 0.04), NoiseAware = true });
+        AssertPartsThroughTheWire(new EngineSetup(EngineKind.Analytic) { Device = new DeviceNoiseModel(1e-4, 1e-3, 0.02, 0.04), IdealPlan = true });
 
     private static void AssertPartsThroughTheWire(EngineSetup engine)
     {
@@ -73,9 +73,15 @@ public sealed class ClusterTileTests
         Assert.StartsWith("renderPart: the request cannot be read", error.Message);
     }
 
+    // Two lit rectangles, off centre, across the corner where the four tiles of a 1024x1024 frame meet: every tile holds
+    // edges of both, and no two tiles look alike. A quarter of Qornell's work per pixel, which a frame this size multiplies.
+    private static readonly Scene Across = With(4, 0, [Rect(2, 2, 8, 7, 6, 8), Rect(3, 3, 6, 5, 5, 6, "grey")],
+        lights: """[{ "position": [6, 12, 0], "intensity": [40, 40, 40] }]""", ambient: 0.1);
+
     /// <summary>
-    /// `render`'s path (<see cref="Renderer"/> with a cluster's bridges) on two workers at 1024x1024, where the render is tiled
-    /// in 512x512: the local image, and both workers served tiles. Q# chunks still reach the bridges behind each worker.
+    /// `render`'s path (<see cref="Renderer"/> with a cluster's bridges) on two workers at 1024x1024, the smallest frame
+    /// that is tiled (<see cref="TiledRender.Applies"/>), in 512x512: the local image, and both workers served tiles. Q# chunks
+    /// still reach the bridges behind each worker.
     /// </summary>
     [Fact]
     public void ATiledFrameOnTwoWorkersIsTheLocalFrame()
@@ -84,12 +90,17 @@ public sealed class ClusterTileTests
         using var cluster = new TestCluster(120, new WorkerExecutor(first), new WorkerExecutor(second));
         using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
         var options = RenderDefaults.CommandLine(1024, 1024, 3);
+        Assert.True(TiledRender.Applies(options) && !TiledRender.Applies(options with { Height = 1023 }));
         var engine = new EngineSetup(EngineKind.Analytic);
 
-        var remote = Renderer.Render(Qornell, engine with { Pool = pool, ImagePartsOnCluster = true }, options);
-        var local = Renderer.Render(Qornell, engine, options);
+        var remote = Renderer.Render(Across, engine.OnBridges(pool), options);
+        var local = Renderer.Render(Across, engine, options);
 
         AssertSameRender(local, remote);
+        var quarters = new[] { (0, 0), (512, 0), (0, 512), (512, 512) }
+            .Select(corner => string.Concat(Enumerable.Range(0, 512 * 512).Select(k => local.Image.GetPixel(corner.Item1 + k % 512, corner.Item2 + k / 512))))
+            .ToArray();
+        Assert.Equal(4, quarters.Distinct().Count()); // a tile in another's place would show
         Assert.True(cluster.Served(0) > 0 && cluster.Served(1) > 0, $"tiles served: {cluster.Served(0)} and {cluster.Served(1)}; both workers should take some");
         Assert.Equal(4, cluster.Served(0) + cluster.Served(1));
         Assert.Equal(RunPlace.ClusterKind, EngineFactory.Place(EngineKind.Analytic, pool, 1).Kind);

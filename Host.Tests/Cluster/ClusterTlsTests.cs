@@ -33,6 +33,7 @@ public sealed class ClusterTlsTests : IDisposable
 
         var withoutCertificate = Variant(cluster.ConfigPath, "plain.json", null);
         var withAnother = Variant(cluster.ConfigPath, "other.json", SelfSigned("qrt-cluster", "other.pfx"));
+        using var _ = TestCluster.RefusalIsTheAnswer();
         foreach (var refused in new[] { withoutCertificate, withAnother })
         {
             var error = Assert.Throws<ClusterException>(() => ClusterBridges.Start(refused, 1).Dispose());

@@ -63,9 +63,8 @@ public sealed class TestCluster : IDisposable
         {
             try
             {
-                // A hung request would hold a graceful stop: give it two seconds, then stop anyway.
-                using var hurry = new CancellationTokenSource(TimeSpan.FromSeconds(2));
-                silo.StopAsync(hurry.Token).WaitAsync(TimeSpan.FromSeconds(10)).GetAwaiter().GetResult();
+                // The test is over: stop at once, without the graceful stop a hung request would hold for seconds.
+                silo.StopAsync(new CancellationToken(canceled: true)).WaitAsync(TimeSpan.FromSeconds(10)).GetAwaiter().GetResult();
             }
             catch (Exception e) when (e is TimeoutException or OperationCanceledException or ObjectDisposedException)
             {
@@ -91,6 +90,22 @@ public sealed class TestCluster : IDisposable
             Assert.True(DateTime.UtcNow < deadline, $"{state()} after two minutes");
         }
         run.GetAwaiter().GetResult();
+    }
+
+    /// <summary>
+    /// Until disposed, a client this test connects takes the first refusal as the answer: the workers here have started
+    /// before it connects, so the seconds a client gives workers still starting would only be waited out where a refusal is expected.
+    /// </summary>
+    public static IDisposable RefusalIsTheAnswer()
+    {
+        var before = ClusterTransport.ConnectRetriesInThisFlow.Value;
+        ClusterTransport.ConnectRetriesInThisFlow.Value = TimeSpan.Zero;
+        return new Restore(() => ClusterTransport.ConnectRetriesInThisFlow.Value = before);
+    }
+
+    private sealed class Restore(Action restore) : IDisposable
+    {
+        public void Dispose() => restore();
     }
 
     public static int[] FreePorts(int count)

@@ -12,9 +12,14 @@ namespace QuantumRayTracing.Tests.Engines;
 [Collection(QSharpCollection.Name)]
 public class FullStateEngineTests(FullStateFixture fixture)
 {
+    /// <summary>
+    /// 600 shots per hard case: each acceptance interval (false failure 1e-8 per case) is at most ±0.12 around the closed form,
+    /// and ±0.07 or less where the closed form is 0.9 or more, or 0.1 or less (a normal approximation of the exact interval); an iteration too many or too few moves the cases'
+    /// shares by 0.16 to 0.6 (N = 8, t = 1: 0.945 at r = 2 against 0.781 at r = 1 and 0.33 at r = 3), beyond those intervals.
+    /// </summary>
     [Fact]
     public void SuccessMatchesClosedForm() =>
-        EngineDistributionChecks.SuccessMatchesClosedForm(fixture.Engine, shots: 1500);
+        EngineDistributionChecks.SuccessMatchesClosedForm(fixture.Engine, shots: 600);
 
     [Fact]
     public void AgreesWithAnalyticEngineInDistribution()

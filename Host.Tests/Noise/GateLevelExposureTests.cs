@@ -1,3 +1,4 @@
+using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Experiments;
@@ -86,8 +87,9 @@ public class GateLevelExposureTests(FullStateFixture fixture)
         // in the wrong class misses by far more. At r = 1 the channels must cost more than the equal share per iteration: a sign
         // flip in the only oracle section harms as in the first of two, more than one in the last of two (1 against 0.6 of a
         // uniformly dephased register's harm at N = 8), which the equal split gives every section alike (986 against 831 measured).
+        // The eight-primitive ray's traces are shared with the model checks (NoiseCheck.Exposure, traced once per process).
         var eight = NoiseBenchmark.EightPrimitiveRay();
-        var traced = GateLevelExposure.Trace(Pool, eight, "test", traces: 2);
+        var traced = NoiseCheck.Exposure(Pool, eight);
         Assert.NotNull(traced.Channels);
         const double p = 1e-7;
         var noise = NoiseModel.Depolarizing(p);
@@ -124,18 +126,20 @@ public class GateLevelExposureTests(FullStateFixture fixture)
     [Fact]
     public void TheBuiltInTableAgreesWithAFreshEstimateWithinItsSpread()
     {
-        // The table's per-iteration harm (the mean of K traces) against a fresh mean of two: their difference has standard deviation
-        // σ·√(1/K + 1/2) with σ the spread of one trace; allowed z times that with σ at its upper confidence bound, so a false
+        // The table's per-iteration harm (the mean of K traces) against a fresh mean of three (shared with the model checks): their difference has standard deviation
+        // σ·√(1/K + 1/3) with σ the spread of one trace; allowed z times that with σ at its upper confidence bound, so a false
         // failure has probability below 1e-6 (about 1e-3 were σ half as large again as that bound). The old estimator (the
         // difference of a two- and a one-iteration trace) moved by 380 to 700 between traces at this shape, far outside.
         var scene = SceneLoader.Load(Path.Combine(RepositoryPaths.Root, "Scenes", "qornell-8.json"));
         var table = GateLevelExposureTable.For(scene);
         Assert.NotNull(table?.Estimate);
-        var fresh = GateLevelExposure.Trace(Pool, GateLevelExposure.RepresentativeRay(scene), "test", traces: 2);
+        // Fresh traces of the scene's representative ray (DefaultTraces of them), shared with the model checks when it is their ray too.
+        var fresh = NoiseCheck.Exposure(Pool, GateLevelExposure.RepresentativeRay(scene));
         var tolerance = Z * TraceSpreadAtEight * Math.Sqrt(1.0 / table.Estimate.Traces + 1.0 / fresh.Estimate!.Traces);
         Assert.True(Math.Abs(fresh.Iteration.HarmWeight - table.Iteration.HarmWeight) <= tolerance,
             $"per-iteration harm weight: table {table.Iteration.HarmWeight:0.0}, fresh {fresh.Iteration.HarmWeight:0.0}, allowed ±{tolerance:0.0}");
-        // The fresh traces' own spread lies within what the stated spread allows (two traces: |difference| ≤ z·σ·√2).
+        // The fresh traces' own spread (their sample standard deviation s over three traces) lies within z·σ: 2s²/σ² is χ² with
+        // 2 degrees of freedom, so s exceeds z·σ by chance with probability e^(−z²), about 4e-11.
         Assert.InRange(fresh.Estimate.IterationSpread, 0, Z * TraceSpreadAtEight);
         // The outside is graded whole on every trace: the same preparation and measurement, the same harm.
         Assert.Equal(table.Outside.HarmWeight, fresh.Outside.HarmWeight, 3);

@@ -6,7 +6,7 @@ using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Tests.Noise;
 
-/// <summary>Passes that plan with the noisy machine's success probabilities (<c>render --noise-aware</c>).</summary>
+/// <summary>Passes that plan with the noisy machine's success probabilities (`render` under a noise model, unless <c>--ideal-plan</c>).</summary>
 public class NoiseAwarePlanningTests
 {
     private static readonly Scene Qornell = SceneLoader.Load(Path.Combine(RepositoryPaths.Scenes, "qornell-64.json"));
@@ -33,8 +33,8 @@ public class NoiseAwarePlanningTests
         var options = NoisyRenderBenchmark.Defaults(32);
         var classical = RenderMeasurement.Reference(Qornell, options);
         var noise = NoiseModel.Depolarizing(1e-3);
-        var blind = RenderMeasurement.Run(Qornell, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise), options, classical);
-        var aware = RenderMeasurement.Run(Qornell, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise, NoiseAware: true), options, classical);
+        var blind = RenderMeasurement.Run(Qornell, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise, IdealPlan: true), options, classical);
+        var aware = RenderMeasurement.Run(Qornell, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise), options, classical);
 
         Assert.True(blind.Error.DifferentPixels > 0, "the noise-blind render should lose pixels at p = 1e-3");
         Assert.Equal(0, aware.Error.DifferentPixels);

@@ -24,7 +24,7 @@ public sealed class RenderRunTests : IDisposable
 
     // One pass of the randomized engine misses hits, so the render and its reference differ in some pixels.
     private RenderRunSettings Randomized(string output, ulong seed = 5) => new(Qornell8, new RenderOptions(16, 16, Iterations: 1, Seed: seed),
-        EngineKind.Randomized, new QSearchOptions(), _scratch.File(output), WithReference: true);
+        new EngineSetup(EngineKind.Randomized), _scratch.File(output), WithReference: true);
 
     private static (long Rays, int Iterations, SearchCost Cost, long TableRows, long UpdatedPixels) Counts(PassMetrics pass) =>
         (pass.Rays, pass.Iterations, pass.Cost, pass.TableRows, pass.UpdatedPixels);
@@ -75,7 +75,7 @@ public sealed class RenderRunTests : IDisposable
     public void SampledLightAddsTheConvergedReference()
     {
         var scene = Load("qornell-64-area.json");
-        var settings = new RenderRunSettings(scene, RenderDefaults.CommandLine(8, 8) with { AreaSamples = 2 }, EngineKind.Analytic, new QSearchOptions(),
+        var settings = new RenderRunSettings(scene, RenderDefaults.CommandLine(8, 8) with { AreaSamples = 2 }, new EngineSetup(EngineKind.Analytic),
             _scratch.File("area.png"), WithReference: true, ReferenceSamples: 16);
         var run = RenderRun.Run(settings);
 
@@ -93,7 +93,7 @@ public sealed class RenderRunTests : IDisposable
     public void SearchTooWideForTheSimulatorStopsBeforeAnyFile()
     {
         // The limit is checked before anything is sent: no Node bridge starts.
-        var settings = new RenderRunSettings(Qornell8, new RenderOptions(4, 4), EngineKind.Gate, new QSearchOptions(), _scratch.File("g.png"), MaxQubits: 10, Workers: 1);
+        var settings = new RenderRunSettings(Qornell8, new RenderOptions(4, 4), new EngineSetup(EngineKind.Gate, new QSearchOptions(), Workers: 1, MaxQubits: 10), _scratch.File("g.png"));
         var error = Assert.Throws<UserError>(() => RenderRun.Run(settings));
         Assert.StartsWith($"{Qornell8.Name}: ", error.Message);
         Assert.Contains("--max-qubits", error.Message);

@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Tests.Search;
 public sealed class SearchRunTests
 {
     private static SearchRunSettings Settings(IReadOnlyList<int>? marked, int searches, ulong seed) =>
-        new(64, marked, searches, new QSearchOptions(), EngineKind.Analytic, seed);
+        new(64, marked, searches, new EngineSetup(EngineKind.Analytic), seed);
 
     [Fact]
     public void MissesAsOftenAsQSearchsExactRate()

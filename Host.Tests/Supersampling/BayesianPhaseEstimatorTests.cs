@@ -83,16 +83,16 @@ public class BayesianPhaseEstimatorTests
 
     /// <summary>
     /// The point of the method: fewer estimates far from the rest than QSS at the same queries (QSS t = 7 and 9: 255 and
-    /// 1,023). On 800 means the measured shares were 7.8% against 12.1% and 5.9% against 11.6%; here over 4,000 means each
-    /// share's standard error is about 0.5%, so the gap of over 4 points is over 6 standard errors of the difference
-    /// (false failure below 1e-9 per budget).
+    /// 1,023). On 800 means the measured shares were 7.8% against 12.1% and 5.9% against 11.6%; here over 1,500 means the
+    /// difference of the shares has a standard error of about 1.1% (t = 7) and 1.0% (t = 9), so the gaps of 4.3 and 5.7 points
+    /// are 3.9 and 5.6 standard errors (false failure about 4e-5 and 1e-8 per budget).
     /// </summary>
     [Theory]
     [InlineData(7)]
     [InlineData(9)]
     public void ItsLongTailIsShorterThanQsss(int counterBits)
     {
-        var means = RandomMeans(4000, 61);
+        var means = RandomMeans(1500, 61);
         var queries = QssRequest.QueriesPerRun(counterBits);
         var (bayes, qss) = (TailShare(SortedErrors(new BayesianPhaseEstimator(queries), means, 7)), TailShare(SortedErrors(new QssEstimator(counterBits), means, 7)));
         Assert.True(bayes < qss, $"{queries} queries: share above 3x the median error {bayes:0.000} with Bayesian phase estimation, {qss:0.000} with QSS");
@@ -101,12 +101,14 @@ public class BayesianPhaseEstimatorTests
     /// <summary>
     /// Negative control: a likelihood reading the shot as ½ + ½·cos(kθ) (the eigenphase's factor 2 lost) puts the posterior on
     /// the wrong angle. The right likelihood errs by about 0.0034 on average at 960 queries (<see cref="AmplitudeEstimatorTests"/>
-    /// bounds it below 0.4 of Monte Carlo's 0.0103); the wrong one must miss that bound, and it misses it by far (about 0.4).
+    /// bounds it below 0.4 of Monte Carlo's 0.0103); the wrong one must miss that bound, and it misses it by far (about 0.4, a
+    /// hundred times the bound). 100 means suffice: one mean's error lies in [0, 1], so their average falls to the bound only 0.39
+    /// below its expectation, with probability below exp(−2 · 100 · 0.39²) ≈ 6e-14 (Hoeffding).
     /// </summary>
     [Fact]
     public void AWrongFringeFailsTheErrorBound()
     {
-        var means = RandomMeans(800, 31);
+        var means = RandomMeans(100, 31);
         var wrong = new BayesianPhaseEstimator(960, new PosteriorFringe(0.5, 0, Math.PI / 2, 1));
         var error = SortedErrors(wrong, means, 5).Average();
         Assert.True(error > 0.4 * 0.0103, $"with the wrong fringe: mean error {error:0.00000}");

@@ -21,7 +21,7 @@ public sealed class SupersampleRunTests : IDisposable
     public void Dispose() => _scratch.Dispose();
 
     private SupersampleRunSettings Settings(SupersampleSettings method, string output, ulong seed = 1, int size = 16, EngineKind engine = EngineKind.Analytic, NoiseModel? noise = null) =>
-        new(method, null, Qornell8, (size, size), engine, seed, _scratch.File(output), TableDirectory: _scratch.File("tables"), Noise: noise);
+        new(method, null, Qornell8, (size, size), new EngineSetup(engine, new QuantumRayTracing.Search.QSearchOptions(), QuantumRayTracing.Bridge.BridgePool.DefaultWorkers, Noise: noise), seed, _scratch.File(output), TableDirectory: _scratch.File("tables"));
 
     [Fact]
     public void MonteCarloEstimatesScatterAsBinomialsAroundTheExactMeans()

@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.ComponentModel;
 using System.Diagnostics;
 using System.Text;
@@ -18,8 +19,28 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     private const int StderrTailLength = 4000;
 
     private Process? _process;
-    private readonly StringBuilder _stderr = new();
+    private StringBuilder _stderr = new();
     private long _nextId;
+
+    /// <summary>
+    /// Keep a disposed bridge's Node process, its Q# sources compiled, for the next bridge started with the same options,
+    /// instead of stopping it: a process that runs many short commands one after another (the test suite) then compiles the
+    /// sources a few times, not once per bridge. A process that timed out, died or failed to start is never kept. Off by default.
+    /// </summary>
+    public static bool ReuseProcesses { get; set; }
+
+    /// <summary>At most this many idle processes are kept per set of options; more are stopped.</summary>
+    private const int MaxIdleProcesses = 4;
+
+    private static readonly ConcurrentDictionary<string, ConcurrentBag<(Process Process, StringBuilder Stderr, string? Version)>> Idle = new();
+
+    static QSharpBridge() => AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+    {
+        foreach (var bag in Idle.Values)
+            while (bag.TryTake(out var idle)) Kill(idle.Process);
+    };
+
+    private string IdleKey => options.Node + "\n" + options.Script;
 
     public QSharpBridge() : this(new BridgeOptions()) { }
 
@@ -149,6 +170,19 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     {
         if (_process is { HasExited: false }) return _process;
         Stop();
+        if (ReuseProcesses && Idle.TryGetValue(IdleKey, out var idle))
+            while (idle.TryTake(out var kept))
+            {
+                if (kept.Process.HasExited)
+                {
+                    kept.Process.Dispose();
+                    continue;
+                }
+                (_process, _stderr, QSharpVersion) = kept;
+                lock (_stderr) _stderr.Clear();
+                _starts++;
+                return _process;
+            }
         var start = new ProcessStartInfo(options.Node)
         {
             WorkingDirectory = Path.GetDirectoryName(options.Script)!,
@@ -171,14 +205,15 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
                 $"could not start Node.js ('{options.Node}'): {e.Message}. Node.js 20 or later runs the Q# simulator: install it (README.md, Prerequisites) or set {BridgeOptions.NodeVariable} to its path.", e);
         }
         _starts++;
-        lock (_stderr) _stderr.Clear();
+        // The process's own stderr buffer: it stays with the process if the process is kept for another bridge.
+        var stderr = _stderr = new StringBuilder();
         process.ErrorDataReceived += (_, e) =>
         {
             if (e.Data is null) return;
-            lock (_stderr)
+            lock (stderr)
             {
-                _stderr.AppendLine(e.Data);
-                if (_stderr.Length > 4 * StderrTailLength) _stderr.Remove(0, _stderr.Length - StderrTailLength);
+                stderr.AppendLine(e.Data);
+                if (stderr.Length > 4 * StderrTailLength) stderr.Remove(0, stderr.Length - StderrTailLength);
             }
         };
         process.BeginErrorReadLine();
@@ -257,20 +292,39 @@ public sealed class QSharpBridge(BridgeOptions options) : IDisposable
     private void Stop()
     {
         if (_process is null) return;
+        Kill(_process);
+        _process = null;
+    }
+
+    private static void Kill(Process process)
+    {
         try
         {
-            if (!_process.HasExited) _process.Kill(entireProcessTree: true);
-            _process.WaitForExit(5000);
+            if (!process.HasExited) process.Kill(entireProcessTree: true);
+            process.WaitForExit(5000);
         }
         catch (InvalidOperationException)
         {
             // Already gone.
         }
-        _process.Dispose();
-        _process = null;
+        process.Dispose();
     }
 
-    public void Dispose() => Stop();
+    /// <summary>Stops the process, or with <see cref="ReuseProcesses"/> keeps a healthy one for the next bridge.</summary>
+    public void Dispose()
+    {
+        if (ReuseProcesses && _process is { HasExited: false } process)
+        {
+            var idle = Idle.GetOrAdd(IdleKey, _ => []);
+            if (idle.Count < MaxIdleProcesses)
+            {
+                idle.Add((process, _stderr, QSharpVersion));
+                _process = null;
+                return;
+            }
+        }
+        Stop();
+    }
 
     /// <summary>The process ended under a request: the one case that is retried after a restart.</summary>
     private sealed class BridgeDiedException(string message) : Exception(message);

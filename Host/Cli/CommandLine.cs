@@ -31,6 +31,7 @@ public static class CommandLine
         root.Subcommands.Add(new EstimateCommand());
         root.Subcommands.Add(new ExportCommand());
         root.Subcommands.Add(new WorkerCommand());
+        root.Subcommands.Add(new DocsCommand());
         return root;
     }
 

@@ -99,6 +99,14 @@ public sealed class EngineOptions
         return oracle;
     }
 
+    /// <summary>
+    /// The engine the options ask for: its kind, <paramref name="search"/> (default QSearch), workers, qubit limit and noise, and
+    /// with `render`'s options the oracle its noise model counts and the plan; on local bridges until given others.
+    /// </summary>
+    public EngineSetup GetSetup(ParseResult parse, QSearchOptions? search = null, NoiseOracle noiseOracle = NoiseOracle.GateLevel, bool idealPlan = false) => new(
+        parse.GetValue(Engine), search ?? new QSearchOptions(), parse.GetValue(Workers), parse.GetValue(MaxQubits), GetNoise(parse),
+        NoiseOracle: noiseOracle, IdealPlan: idealPlan, Device: GetDevice(parse));
+
     /// <summary>The noise model a parse result asks for (validated at parse time).</summary>
     public NoiseModel GetNoise(ParseResult parse) => NoiseModel.Of(parse.GetValue(Noise), parse.GetValue(QubitLoss));
 

@@ -2,6 +2,7 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Scenes;
+using QuantumRayTracing.Scenes.Meshes;
 
 namespace QuantumRayTracing.Cli;
 
@@ -23,7 +24,7 @@ public static class ErrorReport
 
     private static (int Code, string Summary) Summarise(Exception e) => e switch
     {
-        UserError or SceneError or SimulatorLimitException => (ExitCodes.BadInput, e.Message),
+        UserError or SceneError or MeshError or SimulatorLimitException => (ExitCodes.BadInput, e.Message),
         // A file system failure after the up-front checks (a disk that filled, a directory made read-only meanwhile).
         IOException or UnauthorizedAccessException => (ExitCodes.BadInput, e.Message),
         QSharpException { Code: "compile" } q => (ExitCodes.QuantumFailure, q.Message),

@@ -32,9 +32,9 @@ public sealed class EstimateCommand : Command
 
     private readonly Option<int> _subpixels = new Option<int>("--subpixels")
     {
-        Description = "Subpixels of the QSS readout and QCoin step rows (4x4 = 16 in the thesis).",
-        DefaultValueFactory = _ => 16,
-    }.Between(1, 1024);
+        Description = "s: the QSS readout and QCoin step rows average s x s subpixels, as `supersample --subpixels` (4: 16 subpixels, as in the thesis).",
+        DefaultValueFactory = _ => 4,
+    }.Between(1, 32);
 
     private readonly Option<int?> _counterBits = CommonOptions.CounterBits("QSS counter register bits.", 10, fallback: 4, shortName: false);
 
@@ -81,7 +81,7 @@ public sealed class EstimateCommand : Command
     {
         var (scene, width, height) = LoadScene(parse);
         var pixel = parse.GetValue(_pixel) is { } text ? OptionText.PixelIn(text, width, height) : ((int, int)?)null;
-        var (table, estimates) = RayEstimateRun.Run(new RayEstimateSettings(scene, width, height, pixel, parse.GetValue(_iterations), parse.GetValue(_subpixels),
+        var (table, estimates) = RayEstimateRun.Run(new RayEstimateSettings(scene, width, height, pixel, parse.GetValue(_iterations), parse.GetValue(_subpixels) * parse.GetValue(_subpixels),
             parse.GetValue(_counterBits)!.Value, _estimator.Construction(parse), _estimator.QubitModels(parse), !parse.GetValue(_estimator.NoCircuit), parse.GetValue(_estimator.Workers)));
         table.Write(parse.GetValue(_estimator.Format));
         _json.Write(parse, EstimateFigures.Of(table, estimates));

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
@@ -43,15 +44,15 @@ public sealed class RenderCommand : Command
         _render.AddTo(this);
         Options.Add(_render.Budget);
         _engine.AddTo(this);
-        this.AddOptions(_engine.NoiseOracleOption, _noiseAware);
+        this.AddOptions(_engine.NoiseOracleOption, _idealPlan);
         _qsearch.AddTo(this);
         _json.AddTo(this);
         SetAction(Execute);
     }
 
-    private readonly Option<bool> _noiseAware = new("--noise-aware")
+    private readonly Option<bool> _idealPlan = new("--ideal-plan")
     {
-        Description = "Plan with the noisy machine (analytic engine under --noise): the termination rule, the lattice's confirmations, the accuracy budget and the classical settling use each Grover run's noisy success probability, so a ray whose noisy search would cost more than N classical tests is settled classically.",
+        Description = "Under a noise model (analytic engine), plan as if the machine were noiseless: the termination rule, the lattice's confirmations, the budget rounds and the classical settling use each Grover run's ideal success probability. By default they use the noisy one, so the budget holds under noise. The expected wrong pixels printed always take the noisy probabilities.",
     };
 
     private int Execute(ParseResult parse)
@@ -75,9 +76,9 @@ public sealed class RenderCommand : Command
         var kind = parse.GetValue(_engine.Engine);
         var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
         var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
-        return new RenderRunSettings(scene, options, kind, _qsearch.Get(parse),
+        var engine = _engine.GetSetup(parse, _qsearch.Get(parse), _engine.GetNoiseOracle(parse), parse.GetValue(_idealPlan));
+        return new RenderRunSettings(scene, options, engine,
             parse.GetValue(_output) ?? $"{DefaultScene.StemOf(sceneFile?.Name)}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),
-            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), MaxMemory: OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes,
-            NoiseOracle: _engine.GetNoiseOracle(parse), NoiseAware: parse.GetValue(_noiseAware), Device: _engine.GetDevice(parse));
+            OptionText.ParseBytes(parse.GetValue(_maxMemory)).Bytes);
     }
 }

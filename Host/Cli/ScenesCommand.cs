@@ -39,11 +39,11 @@ public sealed class ScenesCommand : Command
     {
         private readonly Argument<FileInfo[]> _files = new("files")
         {
-            Description = "Scene files to validate.",
+            Description = "Scene files (JSON) or mesh files (.obj, .gltf, .glb) to validate.",
             Arity = ArgumentArity.OneOrMore,
         };
 
-        public CheckCommand() : base("check", "Validate scene files and print what each holds; the first problem of each is reported with file, element and reason.")
+        public CheckCommand() : base("check", "Validate scene or mesh files and print what each holds (for a mesh: its triangles, bounds, the grid chosen and the rounding onto it); the first problem of each is reported with file, element (or line) and reason.")
         {
             Arguments.Add(_files);
             SetAction(parse => SceneCheck.Run(parse.GetValue(_files)!, Console.Out, Console.Error) == 0 ? ExitCodes.Success : ExitCodes.BadInput);

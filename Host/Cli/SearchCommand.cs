@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Search;
 
@@ -56,9 +57,8 @@ public sealed class SearchCommand : Command
         _json.EnsureWritable(parse, []);
         using var bridges = _engine.StartBridges(parse);
         var settings = new SearchRunSettings(parse.GetValue(_count), parse.GetResult(_marked) is null ? null : parse.GetValue(_marked) ?? [],
-            parse.GetValue(_searches), _qsearch.Get(parse), parse.GetValue(_engine.Engine), parse.GetValue(_engine.Seed),
-            parse.GetValue(_engine.Workers), parse.GetValue(_engine.MaxQubits), _engine.GetNoise(parse), bridges, _engine.GetDevice(parse));
-        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel, settings.Device, settings.Count);
+            parse.GetValue(_searches), _engine.GetSetup(parse, _qsearch.Get(parse)).OnBridges(bridges), parse.GetValue(_engine.Seed));
+        EngineFactory.CheckNoise(settings.Engine.Kind, settings.Engine.NoiseModel, settings.Engine.Device, settings.Count);
         SearchRunView.PrintPlan(settings);
         var run = SearchRunView.RunWithProgress(settings);
         SearchRunView.Print(settings, run);

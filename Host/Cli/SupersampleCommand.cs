@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
@@ -107,11 +108,11 @@ public sealed class SupersampleCommand : Command
         string[] inputs = settings.InputFile is { } input ? [input] : [];
         ImageFiles.EnsureWritable(settings.Files, inputs);
         _json.EnsureWritable(parse, [.. settings.Files, .. inputs]);
-        EngineFactory.CheckNoise(settings.Engine, settings.NoiseModel);
+        EngineFactory.CheckNoise(settings.Engine.Kind, settings.Engine.NoiseModel);
         using var bridges = _engine.StartBridges(parse);
         var run = SupersampleRunView.RunAndPrint(settings, bridges);
-        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Device is { } device ? RunNoise.Of(settings.Engine, device)
-            : RunNoise.Of(settings.Engine, settings.NoiseModel, SupersamplingNoise.Description(settings.Engine, settings.NoiseModel)));
+        _json.Write(parse, run.Figures, _engine, run.RanOn, settings.Engine.Device is { } device ? RunNoise.Of(settings.Engine.Kind, device)
+            : RunNoise.Of(settings.Engine.Kind, settings.Engine.NoiseModel, SupersamplingNoise.Description(settings.Engine.Kind, settings.Engine.NoiseModel)));
         return ExitCodes.Success;
     }
 
@@ -120,9 +121,7 @@ public sealed class SupersampleCommand : Command
     {
         var method = MethodSettings(parse.CommandResult);
         var (imageFile, sceneFile) = (parse.GetValue(_image), parse.GetValue(_scene));
-        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size, parse.GetValue(_engine.Engine),
-            parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{DefaultScene.StemOf(imageFile?.Name ?? sceneFile?.Name)}-{OptionRules.ChoiceName(method.Method)}.png",
-            Workers: parse.GetValue(_engine.Workers), MaxQubits: parse.GetValue(_engine.MaxQubits), Noise: _engine.GetNoise(parse),
-            Device: _engine.GetDevice(parse));
+        return new SupersampleRunSettings(method, imageFile?.FullName, sceneFile?.FullName, OptionText.ParseSize(parse.GetValue(_size)).Size, _engine.GetSetup(parse),
+            parse.GetValue(_engine.Seed), parse.GetValue(_output) ?? $"{DefaultScene.StemOf(imageFile?.Name ?? sceneFile?.Name)}-{OptionRules.ChoiceName(method.Method)}.png");
     }
 }

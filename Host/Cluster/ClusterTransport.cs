@@ -24,6 +24,12 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     /// <summary>How long connecting keeps trying while the gateways refuse (workers still starting).</summary>
     public static readonly TimeSpan ConnectRetries = TimeSpan.FromSeconds(5);
 
+    /// <summary>
+    /// Replaces <see cref="ConnectRetries"/> for the connections made in the current async flow: a test whose workers have
+    /// all started, or that expects a refusal, needs no time for workers still starting.
+    /// </summary>
+    internal static readonly AsyncLocal<TimeSpan?> ConnectRetriesInThisFlow = new();
+
     private readonly IHost _host;
     private readonly ClusterConfig _config;
     private readonly Worker[] _workers;
@@ -67,6 +73,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
     public static ClusterTransport Connect(ClusterConfig config, TimeProvider? chunkClock = null, TimeSpan? heartbeat = null)
     {
         Exception? refused = null;
+        var retries = ConnectRetriesInThisFlow.Value ?? ConnectRetries;
         var clock = System.Diagnostics.Stopwatch.StartNew();
         var builder = Host.CreateApplicationBuilder(new HostApplicationBuilderSettings { Args = [], ContentRootPath = AppContext.BaseDirectory });
         builder.Logging.ClearProviders();
@@ -77,7 +84,7 @@ public sealed class ClusterTransport : IBridgeTransport, IDisposable
             client.UseConnectionRetryFilter(async (e, cancel) =>
             {
                 refused = e;
-                if (clock.Elapsed > ConnectRetries) return false;
+                if (clock.Elapsed > retries) return false;
                 await Task.Delay(500, cancel);
                 return true;
             });

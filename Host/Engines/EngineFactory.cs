@@ -16,20 +16,27 @@ public static class EngineFactory
 {
     public static string Name(EngineKind kind) => kind.Name;
 
+    /// <summary>The ray search of <paramref name="engine"/> (<see cref="CreateSearch(EngineKind, SeededRandom, int, QSearchOptions, int?, BridgePool?, NoiseModel?, DepolarizingApproximation?, bool, DeviceNoiseModel?)"/>).</summary>
+    public static IHitSearch CreateSearch(EngineSetup engine, SeededRandom root, DepolarizingApproximation? approximation = null) =>
+        CreateSearch(engine.Kind, root, engine.Workers, engine.Search, engine.MaxQubits, engine.Pool, engine.Noise, approximation, engine.IdealPlan, engine.Device);
+
     /// <summary>
     /// The ray search of <paramref name="kind"/>: QSearch over its Grover engine, or a classical search. The
     /// noise model is the caller's to check (<see cref="CheckNoise"/>), once per run.
     /// </summary>
-    /// <remarks>With <paramref name="noiseAware"/> and an approximation, the search's miss rates take the noisy runs' success.</remarks>
+    /// <remarks>
+    /// Under noise with an approximation, the search's miss rates take the noisy runs' success: those the passes plan with, unless
+    /// <paramref name="idealPlan"/>, and always those the expected wrong pixels are reported with.
+    /// </remarks>
     public static IHitSearch CreateSearch(EngineKind kind, SeededRandom root, int workers, QSearchOptions options, int? maxQubits = null, BridgePool? pool = null, NoiseModel? noise = null,
-        DepolarizingApproximation? approximation = null, bool noiseAware = false, DeviceNoiseModel? device = null)
+        DepolarizingApproximation? approximation = null, bool idealPlan = false, DeviceNoiseModel? device = null)
     {
         noise ??= NoiseModel.None;
         var noisy = !noise.IsNoiseless || device is { IsNoiseless: false };
+        var noisySuccess = approximation is not null && noisy ? device is null ? approximation.NoisySuccess(noise) : approximation.NoisySuccess(CircuitRates.Of(device)) : null;
         return kind.SearchesWithGrover
             ? new QuantumHitSearch(Grover(kind, root, workers, maxQubits, pool, noise, approximation, device), root.Fork(RandomStreams.Search), options, gateLevel: kind.SimulatesOracleGates,
-                success: noiseAware && approximation is not null && noisy ? device is null ? approximation.NoisySuccess(noise) : approximation.NoisySuccess(CircuitRates.Of(device)) : null,
-                pooled: kind == EngineKind.Analytic && !noisy)
+                success: idealPlan ? null : noisySuccess, machineSuccess: noisySuccess, pooled: kind == EngineKind.Analytic && !noisy)
             : kind switch
             {
                 EngineKind.Classical => new ClassicalHitSearch(),
@@ -37,6 +44,10 @@ public static class EngineFactory
                 _ => new RandomizedHitSearch(root.Fork(RandomStreams.Engine)),
             };
     }
+
+    /// <summary>The Grover engine of <paramref name="engine"/>, its noise model checked (<see cref="Create(EngineKind, SeededRandom, int, int?, BridgePool?, NoiseModel?, DeviceNoiseModel?)"/>).</summary>
+    public static IGroverEngine Create(EngineSetup engine, SeededRandom root) =>
+        Create(engine.Kind, root, engine.Workers, engine.MaxQubits, engine.Pool, engine.NoiseModel, engine.Device);
 
     /// <summary>
     /// A Grover engine, its noise model checked; <paramref name="maxQubits"/> null keeps the engine's own limit. The Q# engines

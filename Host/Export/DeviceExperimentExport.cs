@@ -1,4 +1,4 @@
-using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Intersection;
 
 namespace QuantumRayTracing.Export;

@@ -12,8 +12,14 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     /// <summary>Rays settled classically (N tests each, in #C_Int) because their remaining quantum work was expected to cost more.</summary>
     public long SettledRays { get; init; }
 
-    /// <summary>The rays the pass is expected to leave wrong (<see cref="RayLedger"/>).</summary>
+    /// <summary>The rays the pass is expected to leave wrong on the machine it ran on (<see cref="RayLedger"/>).</summary>
     public double ExpectedWrong { get; init; }
+
+    /// <summary>
+    /// The rays the pass is expected to leave wrong as its plan sees them: <see cref="ExpectedWrong"/>, but for a noisy render
+    /// planned with the ideal miss rates. What the later passes' share of the budget is reckoned from.
+    /// </summary>
+    public double PlannedWrong { get; init; }
 
     /// <summary>#Int (conservative) of the lattice's cheap confirmations, before any budget round.</summary>
     public long CheapIntersections { get; init; }
@@ -42,6 +48,7 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     {
         SettledRays = first.SettledRays + second.SettledRays,
         ExpectedWrong = second.ExpectedWrong,
+        PlannedWrong = second.PlannedWrong,
         CheapIntersections = first.CheapIntersections + second.CheapIntersections,
         RoundIntersections = first.RoundIntersections + second.RoundIntersections,
     };
@@ -58,6 +65,7 @@ public sealed record PassMetrics(string Name, long Rays, int Iterations, SearchC
     {
         SettledRays = passes.Sum(p => p.SettledRays),
         ExpectedWrong = passes.Sum(p => p.ExpectedWrong),
+        PlannedWrong = passes.Sum(p => p.PlannedWrong),
         CheapIntersections = passes.Sum(p => p.CheapIntersections),
         RoundIntersections = passes.Sum(p => p.RoundIntersections),
     };

@@ -18,6 +18,8 @@ namespace QuantumRayTracing.Passes;
 /// only the levels whose finds ask for it).
 /// Summed over a stratum before any budget round this is about the stratum's finds · W / (1 − W); it errs high: every wrong ray counts as a wrong pixel, and neighbour gathering repairs nothing.
 /// A certain answer (a classical test of every primitive) is never wrong.
+/// The plan's expectation takes the worst misses the passes plan with; the machine's (<see cref="MachineExpectedTotal"/>) those of
+/// the machine the searches run on, which differ only when a noisy render plans with the ideal miss rates (`render --ideal-plan`).
 /// </summary>
 public sealed class RayLedger
 {
@@ -31,6 +33,9 @@ public sealed class RayLedger
     private const int FullFirst = 0, FullAfterFind = 1, CheapAfterFind = 2, CheapFirst = 3;
 
     private readonly double[] _trailing;
+    private readonly double[] _machineTrailing;
+    private readonly double[] _machinePrior;
+    private readonly Func<QSearchSchedule?, double>? _machineWorstMiss;
     private readonly int[] _path;
     private readonly bool[] _done;
     private readonly bool[] _afterFind;
@@ -47,13 +52,18 @@ public sealed class RayLedger
     /// <param name="cheap">The lattice's cheap confirmation, whose rays form their own path, or null.</param>
     /// <param name="findEnds">Whether a find settles the ray (visibility) rather than start a search for a closer one.</param>
     /// <param name="levels">Each ray's lattice level, whose cheap confirmations form a stratum of their own; null: one level.</param>
-    public RayLedger(int rays, Func<QSearchSchedule?, double> worstMiss, CheapConfirmation? cheap, bool findEnds, IReadOnlyList<int>? levels = null)
+    /// <param name="machineWorstMiss">The machine's worst misses where they differ from <paramref name="worstMiss"/>; null: the same.</param>
+    public RayLedger(int rays, Func<QSearchSchedule?, double> worstMiss, CheapConfirmation? cheap, bool findEnds, IReadOnlyList<int>? levels = null,
+        Func<QSearchSchedule?, double>? machineWorstMiss = null)
     {
         _levels = levels;
         var strata = CheapFirst + 1 + (levels is null || levels.Count == 0 ? 0 : levels.Max());
         _found = new long[strata];
         _prior = new double[strata];
         _trailing = Enumerable.Repeat(1.0, rays).ToArray();
+        _machineWorstMiss = machineWorstMiss;
+        _machineTrailing = machineWorstMiss is null ? _trailing : Enumerable.Repeat(1.0, rays).ToArray();
+        _machinePrior = machineWorstMiss is null ? _prior : new double[strata];
         _path = new int[rays];
         _done = new bool[rays];
         _afterFind = new bool[rays];
@@ -66,15 +76,18 @@ public sealed class RayLedger
     public static RayLedger For(int rays, IHitSearch search, int count, CheapConfirmation? cheap, bool findEnds, IReadOnlyList<int>? levels = null) =>
         new(rays, WorstMisses(search, count), cheap, findEnds, levels);
 
-    /// <summary>A schedule's worst miss for t ≤ 8 (null: the engine's own), computed once per schedule.</summary>
-    public static Func<QSearchSchedule?, double> WorstMisses(IHitSearch search, int count)
+    /// <summary>
+    /// A schedule's worst miss for t ≤ 8 (null: the engine's own), computed once per schedule: the plan's, or with
+    /// <paramref name="machine"/> the machine's (<see cref="IHitSearch.MachineMissProbability"/>).
+    /// </summary>
+    public static Func<QSearchSchedule?, double> WorstMisses(IHitSearch search, int count, bool machine = false)
     {
         var known = new Dictionary<QSearchSchedule, double>();
         double? own = null;
         return schedule =>
         {
-            if (schedule is null) return own ??= Rendering.AccuracyBudget.WorstMiss(search, count, null);
-            if (!known.TryGetValue(schedule, out var miss)) known[schedule] = miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
+            if (schedule is null) return own ??= Rendering.AccuracyBudget.WorstMiss(search, count, null, machine);
+            if (!known.TryGetValue(schedule, out var miss)) known[schedule] = miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule, machine);
             return miss;
         };
     }
@@ -100,9 +113,13 @@ public sealed class RayLedger
         {
             if (!_frozen) _found[Stratum(ray)]++;
             if (_findEnds) _done[ray] = true;
-            else (_trailing[ray], _afterFind[ray]) = (1, true);
+            else (_trailing[ray], _machineTrailing[ray], _afterFind[ray]) = (1, 1, true);
         }
-        else _trailing[ray] *= _worstMiss(schedule);
+        else
+        {
+            _trailing[ray] *= _worstMiss(schedule);
+            if (_machineWorstMiss is not null) _machineTrailing[ray] *= _machineWorstMiss(schedule);
+        }
     }
 
     /// <summary>Marks <paramref name="ray"/>'s answer as certain: found by a classical test (a neighbour's occluder), never wrong.</summary>
@@ -115,8 +132,13 @@ public sealed class RayLedger
     public void Freeze()
     {
         if (_frozen) return;
-        var priors = Priors();
+        var priors = Priors(_trailing);
         for (var stratum = 0; stratum < _prior.Length; stratum++) _prior[stratum] = priors[stratum] ?? 0;
+        if (_machineWorstMiss is not null)
+        {
+            var machine = Priors(_machineTrailing);
+            for (var stratum = 0; stratum < _machinePrior.Length; stratum++) _machinePrior[stratum] = machine[stratum] ?? 0;
+        }
         _frozen = true;
     }
 
@@ -124,11 +146,11 @@ public sealed class RayLedger
     /// The share of lattice level <paramref name="level"/>'s cheap confirmations estimated to have something to find, from
     /// the searches so far; null before any (<see cref="CheapConfirmation"/> weighs it for the next finer level).
     /// </summary>
-    public double? CheapPrior(int level) => CheapFirst + level < _prior.Length ? Priors()[CheapFirst + level] : null;
+    public double? CheapPrior(int level) => CheapFirst + level < _prior.Length ? Priors(_trailing)[CheapFirst + level] : null;
 
     // Each stratum's π from its finds and open episodes (null when it has none), in one sweep over the rays: per stratum
     // its open rays, those with trailing misses and their trailing W summed in ray order.
-    private double?[] Priors()
+    private double?[] Priors(double[] trailingOf)
     {
         var strata = _prior.Length;
         var (open, completed, trailing) = (new long[strata], new long[strata], new double[strata]);
@@ -137,9 +159,9 @@ public sealed class RayLedger
             if (_path[i] == Unsearched || _done[i]) continue;
             var stratum = Stratum(i);
             open[stratum]++;
-            if (_trailing[i] >= 1) continue;
+            if (trailingOf[i] >= 1) continue;
             completed[stratum]++;
-            trailing[stratum] += _trailing[i];
+            trailing[stratum] += trailingOf[i];
         }
         var priors = new double?[strata];
         for (var stratum = 0; stratum < strata; stratum++)
@@ -162,24 +184,28 @@ public sealed class RayLedger
         _ => FullFirst,
     };
 
-    /// <summary>The probability ray <paramref name="ray"/> is wrong (<see cref="Freeze"/> first).</summary>
-    public double Expected(int ray)
+    /// <summary>The probability ray <paramref name="ray"/> is wrong as the plan sees it (<see cref="Freeze"/> first).</summary>
+    public double Expected(int ray) => Expected(ray, _prior, _trailing);
+
+    private double Expected(int ray, double[] prior, double[] trailing)
     {
         if (!_frozen) throw new InvalidOperationException("freeze the ledger first");
         if (_path[ray] == Unsearched || _done[ray]) return 0;
-        var (pi, w) = (_prior[Stratum(ray)], _trailing[ray]);
+        var (pi, w) = (prior[Stratum(ray)], trailing[ray]);
         return pi * w / (1 - pi + pi * w);
     }
 
-    /// <summary>The expected wrong rays of the pass.</summary>
-    public double ExpectedTotal
+    /// <summary>The expected wrong rays of the pass as the plan sees it.</summary>
+    public double ExpectedTotal => Total(_prior, _trailing);
+
+    /// <summary>The expected wrong rays of the pass on the machine the searches ran on.</summary>
+    public double MachineExpectedTotal => Total(_machinePrior, _machineTrailing);
+
+    private double Total(double[] prior, double[] trailing)
     {
-        get
-        {
-            Freeze();
-            var sum = 0.0;
-            for (var i = 0; i < Rays; i++) sum += Expected(i);
-            return sum;
-        }
+        Freeze();
+        var sum = 0.0;
+        for (var i = 0; i < Rays; i++) sum += Expected(i, prior, trailing);
+        return sum;
     }
 }

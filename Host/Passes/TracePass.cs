@@ -19,56 +19,30 @@ public static class TracePass
         string name, IHitSearch search, SceneGeometry geometry, IReadOnlyList<Ray> rays, PassOptions options,
         IRenderProgress? progress = null)
     {
-        var hits = WrittenArray.Of<Hit?>(rays.Count);
-        bool[]? vouched = null; // the lattice's agreement flags, once lattice-first tracing runs
-        var misses = new int[rays.Count];
-        var worstMiss = RayLedger.WorstMisses(search, geometry.Count);
-        var cheap = CheapConfirmation.Of(options, search, geometry.Count);
-        var ledger = new RayLedger(rays.Count, worstMiss, cheap, findEnds: false, CheapConfirmation.Levels(options, rays.Count));
-        // The table's own ray: a pass's rays may be computed on each read.
-        HitWindow Window(int i, RayTable table) =>
-            Hit.Beyond(table.Ray, hits[i], table.Count, options.TieBreak);
-        void Apply(int i, RayTable table, HitOutcome outcome)
-        {
-            if (outcome.Primitive is { } p) hits[i] = Hit.From(table, p);
-        }
-        bool Observe(int i, RayTable table, HitOutcome outcome)
-        {
-            Apply(i, table, outcome);
-            misses[i] = outcome.Primitive is null ? misses[i] + 1 : 0;
-            return outcome.Certain || options.Stop?.Continue(misses[i], vouched?[i] == true) == false;
-        }
-        Func<(long, long)>? gather = options.Neighbours is { } neighbours
-            ? () => NeighbourGathering.ForClosest(geometry, rays, hits, neighbours, options.TieBreak)
-            : null;
-        Func<int, int, QSearchSchedule?> schedule = (_, _) => options.Schedule;
-        var settle = ClassicalSettle.Rule(options, search, geometry.Count, worstMiss, (round, i) => schedule(round, i), i => misses[i],
-            i => vouched?[i] == true, findEnds: false);
+        var goal = new ClosestHit(geometry, rays, options.TieBreak);
+        return (goal.Hits, SearchPass.Run(name, search, geometry, rays, options, goal, progress));
+    }
 
-        PassMetrics metrics;
-        if (ClassicalSettle.SettlesEveryRay(options, search, geometry.Count, rays.Count, worstMiss, findEnds: false))
-            metrics = IteratedSearch.Run(name, search, geometry, rays, 1, Window, Observe, progress, ledger: ledger, settle: (_, _) => true);
-        else if (options.Lattice is not { } lattice || options.Neighbours is not { } layout)
-            metrics = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, progress, gather,
-                schedule: schedule, ledger: ledger, settle: settle);
-        else
+    /// <summary>Each ray's closest hit: a search looks beyond the best so far, a find keeps the ray searching for a closer one.</summary>
+    private sealed class ClosestHit(SceneGeometry geometry, IReadOnlyList<Ray> rays, TieBreak tieBreak) : ISearchGoal
+    {
+        public Hit?[] Hits { get; } = WrittenArray.Of<Hit?>(rays.Count);
+
+        public bool FindEnds => false;
+
+        public Func<int, bool>? Found => null;
+
+        // The table's own ray: a pass's rays may be computed on each read.
+        public HitWindow Window(int ray, RayTable table) => Hit.Beyond(table.Ray, Hits[ray], table.Count, tieBreak);
+
+        public void Apply(int ray, RayTable table, HitOutcome outcome)
         {
-            QSearchSchedule? levelCheap = null;
-            schedule = (round, i) => round == 0 && vouched![i] ? levelCheap : options.Schedule;
-            metrics = LatticeOrder.Run(rays.Count, layout, lattice.Levels, progress, (level, levelRays, agreed, levelProgress) =>
-            {
-                vouched = agreed;
-                var (tests, updated) = level == lattice.Levels ? (0L, 0L)
-                    : NeighbourGathering.FromLattice(geometry, rays, levelRays, hits, layout, lattice.Levels, options.TieBreak, agreed);
-                levelCheap = cheap?.For(levelRays.Count(i => agreed[i]), options.Allowance / Math.Max(1, rays.Count), ledger.CheapPrior(level + 1));
-                var searched = IteratedSearch.Run(name, search, geometry, rays, options.Iterations, Window, Observe, levelProgress,
-                    level == 0 ? gather : null, schedule: schedule, ledger: ledger, settle: settle, among: levelRays);
-                return (searched, tests, updated);
-            });
+            if (outcome.Primitive is { } p) Hits[ray] = Hit.From(table, p);
         }
-        if (options.Allowance is { } allowance
-            && BudgetRounds.Run(name, search, geometry, rays, ledger, allowance, options.Schedule, options.Lattice?.Agreed, Window, Apply) is { } rounds)
-            metrics = PassMetrics.Phases(metrics, rounds with { RoundIntersections = rounds.IntersectionsConservative }, 0, 0);
-        return (hits, metrics with { ExpectedWrong = ledger.ExpectedTotal, CheapIntersections = ledger.CheapIntersections });
+
+        public (long Tests, long Updated) Gather(PixelLayout layout) => NeighbourGathering.ForClosest(geometry, rays, Hits, layout, tieBreak);
+
+        public (long Tests, long Updated) FromLattice(int[] levelRays, PixelLayout layout, int levels, bool[] agreed) =>
+            NeighbourGathering.FromLattice(geometry, rays, levelRays, Hits, layout, levels, tieBreak, agreed);
     }
 }

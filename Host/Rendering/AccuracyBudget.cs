@@ -29,8 +29,9 @@ public sealed record AccuracyBudget(double ExpectedWrongPixels, long Pixels, dou
     public bool Exceeded => Share is not null && ExpectedWrongPixels > Allowed * (1 + 1e-9);
 
     /// <summary>The expectation over the budgeted passes' metrics.</summary>
+    /// <remarks>Capped at the pixels: a pass's expected wrong rays may exceed them (shadow rays, a noisy machine planned for as ideal), a pixel is wrong once.</remarks>
     public static AccuracyBudget From(IEnumerable<PassMetrics> budgeted, long pixels, double? share) =>
-        new(budgeted.Sum(p => p.ExpectedWrong), pixels, share);
+        new(Math.Min(pixels, budgeted.Sum(p => p.ExpectedWrong)), pixels, share);
 
     /// <summary>
     /// The consecutive empty searches a ray with no agreeing lattice neighbours needs before the stop rule
@@ -52,14 +53,15 @@ public sealed record AccuracyBudget(double ExpectedWrongPixels, long Pixels, dou
     public const int MaxRequiredMisses = 4;
 
     /// <summary>The schedule's largest exact miss probability over t = 1..<see cref="RenderOptions.ConfirmationMaxT"/>.</summary>
-    public static double WorstMiss(IHitSearch search, int count, QSearchSchedule? schedule)
+    /// <remarks>With <paramref name="machine"/>, the machine's misses (<see cref="IHitSearch.MachineMissProbability"/>) rather than the plan's.</remarks>
+    public static double WorstMiss(IHitSearch search, int count, QSearchSchedule? schedule, bool machine = false)
     {
         var worst = 0.0;
         for (var t = 1; t <= Math.Min(count, RenderOptions.ConfirmationMaxT); t++)
         {
             var pt = new double[t + 1];
             pt[t] = 1;
-            worst = Math.Max(worst, search.MissProbability(count, pt, paperFormula: false, schedule));
+            worst = Math.Max(worst, machine ? search.MachineMissProbability(count, pt, schedule) : search.MissProbability(count, pt, paperFormula: false, schedule));
         }
         return worst;
     }

@@ -36,8 +36,7 @@ public sealed class LocalParts : IPartRenderer
 
     public RenderResult Render(RenderOptions options, ImageWindow? window, IRenderProgress? progress)
     {
-        using var search = EngineFactory.CreateSearch(_engine.Kind, new SeededRandom(options.Seed), _engine.Workers, _engine.Search,
-            _engine.MaxQubits, _engine.Pool, _engine.Noise, _approximation, _engine.NoiseAware, _engine.Device);
+        using var search = EngineFactory.CreateSearch(_engine, new SeededRandom(options.Seed), _approximation);
         return SceneRenderer.Render(_scene, search, options, progress, window);
     }
 }

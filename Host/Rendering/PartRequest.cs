@@ -25,7 +25,7 @@ public static class PartRequest
 
     // What a part needs of an engine: its kind and QSearch's options, and its noise. Workers and the qubit limit belong to
     // the Q# engines, whose chunks go to the cluster one Grover run at a time, not as parts.
-    private sealed record PartEngine(EngineKind Kind, QSearchOptions Search, NoiseModel? Noise, NoiseOracle NoiseOracle, bool NoiseAware, DeviceNoiseModel? Device);
+    private sealed record PartEngine(EngineKind Kind, QSearchOptions Search, NoiseModel? Noise, NoiseOracle NoiseOracle, bool IdealPlan, DeviceNoiseModel? Device);
 
     /// <summary>The scene as parts carry it (written once per render, sent with every part).</summary>
     public static string SceneText(Scene scene) => JsonSerializer.Serialize(scene, Json);
@@ -34,7 +34,7 @@ public static class PartRequest
     {
         ["method"] = Method,
         ["scene"] = sceneText,
-        ["engine"] = JsonSerializer.SerializeToNode(new PartEngine(engine.Kind, engine.Search, engine.Noise, engine.NoiseOracle, engine.NoiseAware, engine.Device), Json),
+        ["engine"] = JsonSerializer.SerializeToNode(new PartEngine(engine.Kind, engine.Search, engine.Noise, engine.NoiseOracle, engine.IdealPlan, engine.Device), Json),
         ["options"] = JsonSerializer.SerializeToNode(options, Json),
         ["window"] = window is { } w ? JsonSerializer.SerializeToNode(w, Json) : null,
     };
@@ -60,7 +60,7 @@ public static class PartRequest
             {
                 var engine = engineNode.Deserialize<PartEngine>(Json) ?? throw new JsonException("'engine' is null");
                 var scene = JsonSerializer.Deserialize<Scene>(sceneText, Json) ?? throw new JsonException("'scene' is null");
-                return new LocalParts(scene, new EngineSetup(engine.Kind, engine.Search, Noise: engine.Noise, NoiseOracle: engine.NoiseOracle, NoiseAware: engine.NoiseAware, Device: engine.Device));
+                return new LocalParts(scene, new EngineSetup(engine.Kind, engine.Search, Noise: engine.Noise, NoiseOracle: engine.NoiseOracle, IdealPlan: engine.IdealPlan, Device: engine.Device));
             });
             options = Field(request, "options").Deserialize<RenderOptions>(Json) ?? throw new JsonException("'options' is null");
             window = request["window"]?.Deserialize<ImageWindow>(Json);

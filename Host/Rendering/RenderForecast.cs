@@ -39,7 +39,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
 
     /// <summary>Whether <paramref name="settings"/> ask for a render large enough to forecast: on an engine whose work runs here in C#.</summary>
     public static bool Applies(RenderRunSettings settings) =>
-        (long)settings.Options.Width * settings.Options.Height >= LargePixels && !settings.Engine.RunsQSharp;
+        (long)settings.Options.Width * settings.Options.Height >= LargePixels && !settings.Engine.Kind.RunsQSharp;
 
     public static RenderForecast Of(RenderRunSettings settings)
     {
@@ -61,11 +61,11 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
         var time = largeTime + TimeSpan.FromSeconds(perPixel * (pixels - largePixels));
         var raysPerPixel = rays / largePixels;
         // The tiles rendered at once here each hold their work; a cluster's workers hold theirs.
-        var tiles = settings.EngineSetup.ImagePartsOnCluster ? 1 : LocalParts.TilesAtOnce(settings.Engine);
+        var tiles = settings.Engine.ImagePartsOnCluster ? 1 : LocalParts.TilesAtOnce(settings.Engine.Kind);
         var tileBytes = (long)(BytesPerRay * raysPerPixel * TiledRender.MostTracedPixels(options.LatticeLevels));
         return new RenderForecast(pixels, raysPerPixel, BaseBytes + tiles * tileBytes + BytesPerPixel * pixels, time)
         {
-            ImageOnCluster = settings.EngineSetup.ImagePartsOnCluster,
+            ImageOnCluster = settings.Engine.ImagePartsOnCluster,
         };
     }
 
@@ -80,7 +80,7 @@ public sealed record RenderForecast(long Pixels, double RaysPerPixel, long PeakB
     private static long Calibrate(RenderRunSettings settings, RenderOptions small)
     {
         // Timed here even when a cluster's workers will render the image: a small render there times the trip, not the work.
-        var rays = Renderer.Render(settings.Scene, settings.EngineSetup with { ImagePartsOnCluster = false }, small).Total.Rays;
+        var rays = Renderer.Render(settings.Scene, settings.Engine with { ImagePartsOnCluster = false }, small).Total.Rays;
         var classical = new EngineSetup(EngineKind.Classical);
         Renderer.Render(settings.Scene, classical, RenderDefaults.Reference(small));
         if (settings.WithConverged) Renderer.Render(settings.Scene, classical, RenderDefaults.Converged(small, Math.Max(1, settings.ReferenceSamples)));

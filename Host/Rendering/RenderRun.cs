@@ -20,7 +20,7 @@ public static class RenderRun
     public static RenderRunResult Run(RenderRunSettings settings, IRunProgress? progress = null, Action<RenderForecast>? onForecast = null)
     {
         var (scene, options) = (settings.Scene, settings.Options);
-        var plan = RenderPlan.Of(settings);
+        var plan = ModelledRegisters.Of(settings);
         if (RenderForecast.Applies(settings))
         {
             var forecast = RenderForecast.Of(settings);
@@ -31,14 +31,14 @@ public static class RenderRun
         RenderResult result;
         try
         {
-            result = Stage(progress, settings.Engine.Name, p => Renderer.Render(scene, settings.EngineSetup, options, p));
+            result = Stage(progress, settings.Engine.Kind.Name, p => Renderer.Render(scene, settings.Engine, options, p));
         }
         catch (SimulatorLimitException e)
         {
             throw new UserError($"{scene.Name}: {e.Message}");
         }
         var renderTime = clock.Elapsed;
-        FinishedRender.Release((long)options.Width * options.Height);
+        LargeRenderCollection.Collect((long)options.Width * options.Height);
 
         clock.Restart();
         var classical = new EngineSetup(EngineKind.Classical);
@@ -68,7 +68,7 @@ public static class RenderRun
             converged is null ? null : ImageError.Between(reference.Image, converged.Image),
             renderTime, referenceTime, converged is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
         // After the render: a cluster's place counts the chunks it had to send again.
-        var ranOn = EngineFactory.Place(settings.Engine, settings.Pool, settings.LocalWorkers);
+        var ranOn = EngineFactory.Place(settings.Engine.Kind, settings.Engine.Pool, settings.Engine.Workers);
         return new RenderRunResult(figures, ranOn, result, reference, converged);
     }
 

@@ -49,7 +49,7 @@ public static class SceneRenderer
 
     // The expected wrong rays of the passes so far: the budget left is what they did not spend (none, when a pass
     // ended over its allowance).
-    private static double Left(double allowed, List<PassMetrics> passes) => Math.Max(0, allowed - passes.Sum(p => p.ExpectedWrong));
+    private static double Left(double allowed, List<PassMetrics> passes) => Math.Max(0, allowed - passes.Sum(p => p.PlannedWrong));
 
     // The optimisations every pass shares: the planned schedule, the stop rule and the lattice plan.
     private static PassPlan PlanPasses(Scene scene, IHitSearch search, RenderOptions options, IReadOnlyList<Ray> cameraRays, List<PassMetrics> passes, IRenderProgress? progress)
@@ -129,33 +129,24 @@ public static class SceneRenderer
     private static bool[,] TraceShadowRays(PassPlan plan, SurfacePoints points, List<PassMetrics> passes, double allowance)
     {
         var scene = plan.Scene;
-        var pointLights = scene.Lights.Count;
-        var lightCount = pointLights + scene.DirectionalLights.Count;
-        Ray? RayAt(int k, int l) => l < pointLights
-            ? SecondaryRays.Shadow(points[k], scene.Lights[l])
-            : SecondaryRays.TowardsDirectional(points[k], scene.DirectionalLights[l - pointLights], scene.Grid);
-        // Which (point, light) slots have a ray, on all cores and without building it; then the slots with one, in order.
-        // Only the slot is kept per shadow ray: the ray, its pixel and its layout channel (the light, and whether the point
-        // is primary or reflected, so gathering compares rays towards the same light from the same kind of point) are
-        // computed when the pass reads them.
+        var lightCount = scene.Lights.Count + scene.DirectionalLights.Count;
+        // Which (point, light) pairs have a ray, on all cores and without building it; then the work items, in point-major order.
         var present = new bool[points.Count * lightCount];
         Parallel.For(0, points.Count, k =>
         {
-            for (var l = 0; l < lightCount; l++)
-                present[k * lightCount + l] = l < pointLights
-                    ? SecondaryRays.HasShadow(points[k], scene.Lights[l])
-                    : SecondaryRays.HasDirectional(points[k], scene.DirectionalLights[l - pointLights]);
+            for (var l = 0; l < lightCount; l++) present[k * lightCount + l] = ShadowRayWorkItem.Exists(scene, points, k, l);
         });
-        var slots = new int[present.AsSpan().Count(true)];
-        for (int slot = 0, i = 0; slot < present.Length; slot++)
-            if (present[slot]) slots[i++] = slot;
-        var rays = new ComputedList<Ray>(slots.Length, i => RayAt(slots[i] / lightCount, slots[i] % lightCount)!.Value);
-        var pixels = new ComputedList<int>(slots.Length, i => points[slots[i] / lightCount].Pixel);
-        var channels = new ComputedList<int>(slots.Length, i => 2 * (slots[i] % lightCount) + (slots[i] / lightCount < points.PrimaryCount ? 0 : 1));
+        var items = new ShadowRayWorkItem[present.AsSpan().Count(true)];
+        for (int k = 0, i = 0; k < points.Count; k++)
+            for (var l = 0; l < lightCount; l++)
+                if (present[k * lightCount + l]) items[i++] = new ShadowRayWorkItem(k, l);
+        var rays = new ComputedList<Ray>(items.Length, i => items[i].Ray(scene, points));
+        var pixels = new ComputedList<int>(items.Length, i => items[i].Pixel(points));
+        var channels = new ComputedList<int>(items.Length, i => items[i].Channel(points));
         var (occluded, metrics) = DirectPass.Run("shadow", plan.Search, plan.Geometry, rays, plan.Shadow(pixels, channels, allowance: allowance), plan.Progress);
         passes.Add(metrics);
         var visible = new bool[points.Count, lightCount];
-        for (var i = 0; i < slots.Length; i++) visible[slots[i] / lightCount, slots[i] % lightCount] = !occluded[i];
+        for (var i = 0; i < items.Length; i++) visible[items[i].Point, items[i].Light] = !occluded[i];
         return visible;
     }
 

@@ -1,8 +1,13 @@
+using QuantumRayTracing.Scenes.Meshes;
 using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Scenes;
 
-/// <summary>`scenes check`: each file loaded and validated; what a good one holds on one line, a bad one's first problem on another.</summary>
+/// <summary>
+/// `scenes check`: each file loaded and validated; what a good one holds on one line, a bad one's first problem on another.
+/// A mesh file (.obj, .gltf, .glb: <see cref="MeshReader"/>) is read as a mesh and put on its grid (<see cref="MeshCheck"/>);
+/// any other file is read as a scene. A mesh reader's warnings go to the error writer as "warning: ..." lines.
+/// </summary>
 public static class SceneCheck
 {
     /// <returns>How many files failed.</returns>
@@ -13,9 +18,15 @@ public static class SceneCheck
         {
             try
             {
-                output.WriteLine($"{file}: ok: {Summary(SceneLoader.Load(file.FullName))}");
+                if (MeshReader.IsMeshFile(file.FullName))
+                {
+                    var mesh = MeshCheck.Run(file.FullName);
+                    foreach (var warning in mesh.File.Warnings) errors.WriteLine($"warning: {warning}");
+                    output.WriteLine($"{file}: ok: {MeshCheck.Summary(mesh)}");
+                }
+                else output.WriteLine($"{file}: ok: {Summary(SceneLoader.Load(file.FullName))}");
             }
-            catch (SceneError e)
+            catch (Exception e) when (e is SceneError or MeshError)
             {
                 errors.WriteLine($"error: {e.Message}");
                 failures++;

@@ -23,6 +23,16 @@ public interface IHitSearch : IDisposable
     double MissProbability(int count, IReadOnlyList<double> pt, bool paperFormula, QSearchSchedule? schedule = null);
 
     /// <summary>
+    /// The exact miss probability on the machine the searches run on (<see cref="MissProbability"/> without the paper's
+    /// formula): a noisy machine's even when the passes plan with the ideal one, so the expected wrong pixels a render reports
+    /// predict what it measures.
+    /// </summary>
+    double MachineMissProbability(int count, IReadOnlyList<double> pt, QSearchSchedule? schedule = null) => MissProbability(count, pt, paperFormula: false, schedule);
+
+    /// <summary>Whether <see cref="MachineMissProbability"/> differs from the misses the passes plan with (a noisy render planned as ideal).</summary>
+    bool MachineMissesDiffer => false;
+
+    /// <summary>
     /// The expected #Int (conservative count) of one search over <paramref name="count"/> primitives that finds
     /// nothing: what a further confirming search costs at most, for the classical settle (docs/conventions.md).
     /// <paramref name="schedule"/>, when set, is the QSearch schedule used instead of the engine's own.

@@ -10,10 +10,11 @@ namespace QuantumRayTracing.Search;
 /// and window, which the gate engine loads into its gate-level oracle (the full table: a compact one
 /// kept between rounds is rebuilt for it). With <paramref name="success"/> the miss rates the passes plan with (termination
 /// rule, lattice confirmations, accuracy budget, classical settling) take each run's success from it, a noisy machine's,
-/// instead of the ideal one. With <paramref name="pooled"/> it also runs pooled searches (<see cref="IPooledSearch"/>).
+/// instead of the ideal one; <paramref name="machineSuccess"/>, when the machine's differs from the plan's, gives the miss rates the
+/// expected wrong pixels are reported with. With <paramref name="pooled"/> it also runs pooled searches (<see cref="IPooledSearch"/>).
 /// </summary>
 public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, QSearchOptions options, bool gateLevel = false, FalseNegativeRate.RunSuccess? success = null,
-    bool pooled = false) : IHitSearch, IPooledSearch
+    bool pooled = false, FalseNegativeRate.RunSuccess? machineSuccess = null) : IHitSearch, IPooledSearch
 {
     private readonly Dictionary<int, QSearchSchedule> _schedules = [];
 
@@ -58,6 +59,11 @@ public sealed class QuantumHitSearch(IGroverEngine engine, SeededRandom random, 
         paperFormula && schedule is null
             ? FalseNegativeRate.Eq10AtBound(Schedule(count), pt)
             : FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt, success);
+
+    public bool MachineMissesDiffer => machineSuccess is not null && machineSuccess != success;
+
+    public double MachineMissProbability(int count, IReadOnlyList<double> pt, QSearchSchedule? schedule = null) =>
+        FalseNegativeRate.QSearchExact(schedule ?? Schedule(count), pt, machineSuccess ?? success);
 
     public double EmptySearchCost(int count, QSearchSchedule? schedule = null) => SearchCost.ExpectedEmpty(schedule ?? Schedule(count));
 

@@ -21,12 +21,12 @@ public static class SearchRun
             .ToArray();
         var clock = Stopwatch.StartNew();
         int rounds;
-        using (var engine = EngineFactory.Create(settings.Engine, new SeededRandom(settings.Seed), settings.LocalWorkers, settings.MaxQubits, settings.Pool, settings.NoiseModel, settings.Device))
+        using (var engine = EngineFactory.Create(settings.Engine, new SeededRandom(settings.Seed)))
             rounds = QSearchDriver.Run(searches, engine, onRound);
         clock.Stop();
 
         var figures = new SearchFigures(settings.Count, marked.Indices.ToArray(), schedule.Bounds.ToArray(), settings.Registers, searches.Length,
             searches.Count(s => s.Found is not null), searches.Aggregate(default(SearchCost), (sum, s) => sum + s.Cost), rounds, clock.Elapsed);
-        return new SearchRunResult(figures, EngineFactory.Place(settings.Engine, settings.Pool, settings.LocalWorkers));
+        return new SearchRunResult(figures, EngineFactory.Place(settings.Engine.Kind, settings.Engine.Pool, settings.Engine.Workers));
     }
 }

@@ -25,9 +25,10 @@ public static class SupersampleRun
     /// <param name="onPlan">Called with what the run models once it is known, before the estimates start.</param>
     public static SupersampleRunResult Run(SupersampleRunSettings settings, IRunProgress? progress = null, Action<SupersamplePlan>? onPlan = null)
     {
-        var (method, kind, noise) = (settings.Method, settings.Engine, settings.NoiseModel);
+        var (method, engineSetup) = (settings.Method, settings.Engine);
+        var (kind, noise) = (engineSetup.Kind, engineSetup.NoiseModel);
         EngineFactory.CheckNoise(kind, noise);
-        if (method.Method == SupersampleMethod.QssBayes && (settings.Device is not null || kind == EngineKind.Analytic && !noise.IsNoiseless))
+        if (method.Method == SupersampleMethod.QssBayes && (engineSetup.Device is not null || kind == EngineKind.Analytic && !noise.IsNoiseless))
             throw new UserError("--method qss-bayes: its single-ancilla shot runs on the fullstate engine, or on the analytic engine without noise; not under a device model");
         var (input, inputName, renderTime) = settings.ImageFile is { } file
             ? (LoadImage(file, method.Side, kind), Path.GetFileName(file), (TimeSpan?)null)
@@ -51,7 +52,7 @@ public static class SupersampleRun
         try
         {
             var supersampling = progress?.Start(EngineFactory.Name(kind));
-            using var engine = CreateEngine(kind, settings.Seed, settings.LocalWorkers, settings.MaxQubits, noise, settings.Pool, settings.Device);
+            using var engine = CreateEngine(kind, settings.Seed, engineSetup.Workers, engineSetup.MaxQubits, noise, engineSetup.Pool, engineSetup.Device);
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         }
         finally
@@ -71,7 +72,7 @@ public static class SupersampleRun
             result.QueriesPerChannel * result.ChannelsEstimated * input.Pixels, error,
             result.Confidence?.Average(), result.Confidence?.Min(), elapsed, images.Select(i => i.Item2).ToArray());
         // After the estimates: a cluster's place counts the chunks it had to send again.
-        var ranOn = EngineFactory.Place(kind, settings.Pool, settings.LocalWorkers);
+        var ranOn = EngineFactory.Place(kind, engineSetup.Pool, engineSetup.Workers);
         return new SupersampleRunResult(figures, ranOn, input, result);
     }
 

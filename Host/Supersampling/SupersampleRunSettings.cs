@@ -12,36 +12,23 @@ namespace QuantumRayTracing.Supersampling;
 /// <param name="ImageFile">The image supersampled, each s x s block of its pixels one output pixel; null renders a scene instead.</param>
 /// <param name="SceneFile">The scene rendered classically at s times the output size (without <paramref name="ImageFile"/>); null: the built-in Qornell box.</param>
 /// <param name="Size">The output size of a scene; null: the scene's own.</param>
-/// <param name="Engine">Where the coins and QSS runs are simulated: analytic or fullstate.</param>
+/// <param name="Engine">Where the coins and QSS runs are simulated (analytic or fullstate), on which bridges and under which noise: a
+/// device model (<see cref="EngineSetup.Device"/>) runs the estimators on the single-qubit coins (<see cref="DirectCoinEngine"/>).</param>
 /// <param name="Seed">The seed of every classical random choice (the analytic engine's outcomes).</param>
 /// <param name="Output">The PNG the estimate is written to; bit-plane QSS writes its confidence map beside it.</param>
 /// <param name="TableDirectory">Where QSS lookup tables are kept between runs; null: the user's cache directory.</param>
-/// <param name="Workers">Local Node bridges the fullstate engine starts when <paramref name="Pool"/> is null; null: one per core.</param>
-/// <param name="MaxQubits">The widest circuit the fullstate engine may simulate; null keeps the engine's own limit.</param>
-/// <param name="Noise">The noise model the engine runs under; null for the ideal machine.</param>
-/// <param name="Device">A device noise model instead of <paramref name="Noise"/>: the estimators then run on the single-qubit coins (<see cref="DirectCoinEngine"/>); null for none.</param>
-/// <param name="Pool">Bridges the fullstate engine runs on (a cluster's, say), used and not stopped; null starts local ones.</param>
 public sealed record SupersampleRunSettings(
     SupersampleSettings Method,
     string? ImageFile,
     string? SceneFile,
     (int Width, int Height)? Size,
-    EngineKind Engine,
+    EngineSetup Engine,
     ulong Seed,
     string Output,
-    string? TableDirectory = null,
-    int? Workers = null,
-    int? MaxQubits = null,
-    NoiseModel? Noise = null,
-    BridgePool? Pool = null,
-    DeviceNoiseModel? Device = null)
+    string? TableDirectory = null)
 {
     /// <summary>The fullstate engine simulates every (pixel, channel) item: above this many output pixels it is refused.</summary>
     public const int MaxFullStatePixels = 256;
-
-    public NoiseModel NoiseModel => Noise ?? NoiseModel.None;
-
-    public int LocalWorkers => Workers ?? BridgePool.DefaultWorkers;
 
     /// <summary>What is wrong with the input and noise options given together, before the method's own (<see cref="SupersampleSettings.Problem"/>); null if nothing.</summary>
     public static string? InputProblem(bool image, bool scene, bool size, bool pauliNoise, bool deviceNoise) =>

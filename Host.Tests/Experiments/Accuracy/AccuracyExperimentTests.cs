@@ -8,8 +8,9 @@ namespace QuantumRayTracing.Tests.Experiments;
 /// <summary>`bench accuracy` on 4x4 images and one seed: its tables hold the cells it measured, summed as they say.</summary>
 public sealed class AccuracyExperimentTests
 {
+    // The bench at its smallest: 4x4 images, one seed, and the growth table (which these tests do not read) at two small N.
     private static readonly Lazy<Report> Report = new(() =>
-        AccuracyExperiment.Run(new AccuracySettings([4], 1, 4, DefaultScene.Load(null)), _ => { }));
+        AccuracyExperiment.Run(new AccuracySettings([4], 1, 4, DefaultScene.Load(null)) { Growth = [64, 128], GrowthSeeds = 2 }, _ => { }));
 
     [Fact]
     public void EachKindsRowHoldsItsMeasuredCells()

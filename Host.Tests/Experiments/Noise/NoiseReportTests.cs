@@ -49,4 +49,16 @@ public sealed class NoiseReportTests
         var summary = Assert.Single(report.Blocks.OfType<ReportText>(), t => t.Markdown.StartsWith("The model misses", StringComparison.Ordinal)).Markdown;
         Assert.Contains("The model misses on 1 of 1 rows: lookup N = 16, t = 1, r = 3, p = 1e-3: -0.162 (-14.9σ).", summary, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void ThePageOpensWithItsResultsInShortBeforeTheirDetail()
+    {
+        var report = NoiseReport.Of(Measured(Row(870), Row(700)), ModelOnly);
+
+        var texts = report.Blocks.OfType<ReportText>().Select(t => t.Markdown).ToList();
+        var summary = Assert.Single(texts, t => t.StartsWith("**In short**", StringComparison.Ordinal));
+        Assert.Contains("- The searches' noise model lies within 0.02 + z·σ of the noisy simulator on 1 of 2 rows.", summary, StringComparison.Ordinal);
+        Assert.True(texts.IndexOf(summary) < texts.FindIndex(t => t.StartsWith("**Noise model.**", StringComparison.Ordinal)));
+        Assert.InRange(summary.Split('\n').Length, 2, 10);
+    }
 }

@@ -50,6 +50,7 @@ public sealed class BenchClusterOptionTests(OneWorkerCluster worker) : IClassFix
     public void AClusterWithNoWorkerIsOneLineAndAQuantumFailure()
     {
         using var empty = new TestCluster(10);
+        using var _ = TestCluster.RefusalIsTheAnswer();
         var (code, error) = ConsoleCapture.Run(Bench("grover", empty.ConfigPath));
         Assert.Equal(ExitCodes.QuantumFailure, code);
         // The error's one line, then the hint every Q# failure gets.

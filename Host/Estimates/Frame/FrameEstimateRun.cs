@@ -1,5 +1,6 @@
+using QuantumRayTracing.Reports;
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Cluster;
-using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 

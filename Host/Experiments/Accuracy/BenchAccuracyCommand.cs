@@ -16,7 +16,7 @@ public sealed class BenchAccuracyCommand : Command
 
     private readonly Option<int> _deepSize = CommonOptions.SquareSize("Largest size rendered for the 4,000-rectangle scenes (their rays each test 4,000 primitives classically).", 64, "--deep-size");
 
-    private readonly Option<int[]> _growth = CommonOptions.List("--growth", "Scattered random scene sizes N of the table of where the budget spends its queries (space-separated).",
+    private readonly Option<int[]> _growth = CommonOptions.List("--growth-sizes", "Scattered random scene sizes N of the table of where the budget spends its queries (space-separated).",
         AccuracySettings.DefaultGrowth, "N", 1, 8192);
 
     private readonly Option<int> _growthSeeds = CommonOptions.SeedCount("Scattered scenes per N (seeds 1..n) of the default's spread in the table of where the budget spends its queries.",

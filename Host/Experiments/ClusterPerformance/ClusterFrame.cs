@@ -29,7 +29,7 @@ public sealed record ClusterFrame(int Size, TimeSpan Local, TimeSpan OnCluster, 
         var clock = Stopwatch.StartNew();
         var local = Renderer.Render(scene, engine, options).Image.Pixels.ToArray();
         var localTime = clock.Elapsed;
-        FinishedRender.Release((long)size * size);
+        LargeRenderCollection.Collect((long)size * size);
         clock.Restart();
         var remote = Renderer.Render(scene, onCluster, options).Image.Pixels;
         return new ClusterFrame(size, localTime, clock.Elapsed, remote.SequenceEqual(local), cluster.Where, load, MachineLoad.OneMinute());

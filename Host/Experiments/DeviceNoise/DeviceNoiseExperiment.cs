@@ -45,7 +45,7 @@ public static class DeviceNoiseExperiment
               64); past that, its counted locations by arity at the harmful share 2/3.
 
             The readout error is not in Φ: the engine flips each bit of every index it samples with its seeded generator, so renders stay
-            byte-identical per seed. With `--noise-aware` the passes plan with P(reading a marked index) = Φ (P₀ a + (1 − P₀) b) + (1 − Φ) c,
+            byte-identical per seed. Noise-aware passes (`render`'s default under noise; `--ideal-plan` turns it off) plan with P(reading a marked index) = Φ (P₀ a + (1 − P₀) b) + (1 − Φ) c,
             a, b, c the readout's chances of reading a marked index from a marked one, an unmarked one and a uniform register value (on a
             typical marked set per N and t). The fullstate engine runs the lookup circuit under the device model on the simulator, each
             gate's rate set inside Q# before it and the readout flipped by the host from the seed (N a power of two; its tests check it
@@ -98,7 +98,7 @@ public static class DeviceNoiseExperiment
                 foreach (var aware in new[] { false, true })
                 {
                     progress($"render: {name}, {oracle.Name()}{(aware ? ", noise-aware" : "")}");
-                    var m = RenderMeasurement.Run(settings.Scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), NoiseOracle: oracle, NoiseAware: aware, Device: device), options, classical);
+                    var m = RenderMeasurement.Run(settings.Scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), NoiseOracle: oracle, IdealPlan: !aware, Device: device), options, classical);
                     renders.Row([name, oracle.Name(), aware ? "noise-aware" : "ideal miss rates", F2(m.Result.Total.PerRayConservative), P(m.Error.Nrmse), N(m.Error.DifferentPixels),
                         Seconds(m.WallTime), (m.WallTime / noiseless.WallTime).ToString("0.0", CultureInfo.InvariantCulture)]);
                 }

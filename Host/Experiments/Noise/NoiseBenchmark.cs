@@ -1,3 +1,4 @@
+using QuantumRayTracing.Reports;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Estimates;

@@ -35,6 +35,7 @@ public static class NoiseReport
             $"supersampling coins and QSS readouts within {F(ModelTolerance, "0.00")} + z·σ; the ray tracing paper's device experiment (sec. 8, fig. 15)",
             "reproduced on the simulator; and what noise costs a render on the gate-level oracle, beside the lookup oracle (intersections",
             "computed classically beforehand), whose circuit has far fewer noise locations."));
+        Summary(report, result, settings);
         report.Text($"Measured in {F(result.Elapsed.TotalMinutes, "0.0")} min; the machine and the command that regenerates this page are named at its end.");
         if (result.Exposures.Count > 0) Exposure(report, result.Exposures, traced: settings.Parts.Contains("exposure"));
         if (settings.Parts.Contains("model")) Model(report, result.Check, settings.Shots, result.Fit);
@@ -43,6 +44,54 @@ public static class NoiseReport
         if (settings.Parts.Contains("render")) Render(report, result.Sweeps, settings.Size, result.Confirmations, settings.ConfirmSize);
         return report;
     }
+
+    /// <summary>The page's results in a few lines before their detail: each figure is one its section below gives.</summary>
+    private static void Summary(Report report, NoiseBenchResult result, NoiseBenchSettings settings)
+    {
+        var lines = new List<string>();
+        if (settings.Parts.Contains("model") && result.Check.Count > 0)
+        {
+            var inside = result.Check.Count(r => r.Accepts(SearchModel.Counted, NoiseCheck.SearchTolerance, NoiseCheck.Z));
+            lines.Add($"- The searches' noise model lies within {F(NoiseCheck.SearchTolerance, "0.00")} + z·σ of the noisy simulator on {inside} of {result.Check.Count} rows.");
+        }
+        if (settings.Parts.Contains("supersampling") && result.Supersampling.Count > 0)
+            lines.Add($"- The supersampling coins' and QSS readouts' model: largest gap beyond z·σ {F(Math.Max(0, SupersamplingWorstGap(result.Supersampling)), "0.000")} "
+                + $"(the tolerance is {F(ModelTolerance, "0.00")}).");
+        if (settings.Parts.Contains("device") && result.Device.Count > 0)
+        {
+            var floor = UniformSamplingFloor(result.Device[0].Histogram.Length, settings.DeviceShots);
+            var flat = NoiseBenchmark.RateAtDistance(result.Device, 2 * floor);
+            var tenth = NoiseBenchmark.RateAtDistance(result.Device, 0.1);
+            lines.Add($"- The paper's device experiment (fig. 15): the measured index is as flat as {settings.DeviceShots} uniform samples from "
+                + $"p ≈ {(flat is { } a ? Rate(a) : "–")} per gate, within 0.1 of uniform (TVD) from p ≈ {(tenth is { } b ? Rate(b) : "–")}.");
+        }
+        if (settings.Parts.Contains("render") && result.Sweeps.Count > 0)
+        {
+            lines.Add($"- Rendering at {settings.Size}x{settings.Size}: the per-gate error p from which quantum loses (a) to brute force in Int/Ray, "
+                + "(b) to the randomized renderer in NRMSE at equal Int/Ray:");
+            foreach (var scene in result.Sweeps.GroupBy(s => s.Scene))
+                lines.Add($"  {scene.Key}: " + string.Join("; ", scene.Select(sweep =>
+                {
+                    var (a, b) = Thresholds(sweep);
+                    return $"{sweep.Label} (a) {a}, (b) {b}";
+                })) + ".");
+        }
+        if (lines.Count > 0) report.Text(Lines(["**In short** (each figure from its section below):", .. lines]));
+    }
+
+    /// <summary>Where a sweep's quantum render loses: (a) to brute force in Int/Ray, (b) to the randomized renderer at equal Int/Ray.</summary>
+    private static (string A, string B) Thresholds(NoisyRenderBenchmark.Sweep sweep)
+    {
+        var classicalPerRay = sweep.Classical.Result.Total.PerRayConservative;
+        var a = sweep.Crossing(q => q.Measurement.Result.Total.PerRayConservative - classicalPerRay);
+        var b = sweep.Crossing(q => sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is { } r ? q.Measurement.Error.Nrmse - r : double.NaN);
+        var highest = Rate(sweep.Quantum.Max(q => q.PerGate));
+        return (a is { } x ? Rate(x) : $"none up to {highest}", b is { } y ? Rate(y) : $"none up to {highest}");
+    }
+
+    /// <summary>The supersampling check's largest gap beyond z·σ (negative when every row is inside z·σ).</summary>
+    private static double SupersamplingWorstGap(IReadOnlyList<SupersamplingCheckRow> rows) =>
+        rows.Max(r => Math.Abs(r.Observed - r.Predicted(DepolarizingApproximation.Default)) - NoiseCheck.Z * r.StandardError(DepolarizingApproximation.Default));
 
     // One paragraph of several source lines, kept as the lines of the Markdown.
     private static string Lines(params string[] lines) => string.Join('\n', lines);
@@ -362,7 +411,7 @@ public static class NoiseReport
         }
         report.Table(check);
         report.Text("(f: the shifted coin's head amplitude f − E, else the mean (1/N) Σ F(i). σ: the binomial standard error at the model's probability.)");
-        var worst = rows.Max(r => Math.Abs(r.Observed - r.Predicted(model)) - NoiseCheck.Z * r.StandardError(model));
+        var worst = SupersamplingWorstGap(rows);
         var summary = new List<string> { $"Largest gap beyond z·σ at s = 2/3: {F(Math.Max(0, worst), "0.000")} (the tolerance δ is {F(ModelTolerance, "0.00")})." };
         var direct = rows.Where(r => r.Case.Kind == CoinKind.Direct).ToArray();
         if (direct.Length > 0)
@@ -464,7 +513,7 @@ public static class NoiseReport
             "- **lookup oracle** (`--noise-oracle lookup`): an oracle over intersection answers computed classically beforehand, which leaves out",
             "  the cost and the noise of computing them; its circuit evolved exactly as a density matrix (the model check above), once per",
             "  marked count the render asks, and kept for the process;",
-            "- **gate-level, noise-aware** (`--noise-aware`): the gate-level oracle's model, and the passes (termination rule, lattice",
+            "- **gate-level, noise-aware** (`render`'s default under noise): the gate-level oracle's model, and the passes (termination rule, lattice",
             "  confirmations, accuracy budget, classical settling) plan with each run's noisy success instead of the ideal one, so a ray whose",
             "  noisy search would cost more than N classical tests is settled classically.",
             "Int/Ray in the conservative count (r + 1 per Grover run, every classical test counted); NRMSE against the classical",
@@ -483,7 +532,7 @@ public static class NoiseReport
             var (oracle, slug) = (sweep.Label, sweep.Slug);
             report.Heading($"{sweep.Scene}, {oracle}", 3);
             report.Text($"Classical brute force: Int/Ray {F(classicalPerRay, "0.00")}. Noise model: the {sweep.Oracle.Description()}"
-                + (sweep.NoiseAware ? "; the passes plan with the noisy runs' success (`--noise-aware`)." : "; the passes plan with the ideal miss rates."));
+                + (sweep.NoiseAware ? "; the passes plan with the noisy runs' success (`render`'s default under noise)." : "; the passes plan with the ideal miss rates (`--ideal-plan`)."));
             var quantum = new TextTable($"render-{sweep.Scene}-{slug}", ["p per gate", "Int/Ray", "NRMSE", "#Dpix", "randomized NRMSE at equal Int/Ray", "wall time", "first of three", "vs noiseless"]);
             foreach (var q in sweep.Quantum)
             {
@@ -496,8 +545,7 @@ public static class NoiseReport
             var a = sweep.Crossing(q => q.Measurement.Result.Total.PerRayConservative - classicalPerRay);
             var b = sweep.Crossing(q => sweep.RandomizedNrmseAt(q.Measurement.Result.Total.PerRayConservative) is { } r ? q.Measurement.Error.Nrmse - r : double.NaN);
             var highest = Rate(sweep.Quantum.Max(q => q.PerGate));
-            var aText = a is { } x ? Rate(x) : $"none up to {highest}";
-            var bText = b is { } y ? Rate(y) : $"none up to {highest}";
+            var (aText, bText) = Thresholds(sweep);
             thresholds.Row(sweep.Scene, oracle, aText, bText);
             report.Text(Lines(
                 $"With the {sweep.Oracle.Name()} oracle's noise model{(sweep.NoiseAware ? ", the passes planning with it" : "")}:",

@@ -66,7 +66,7 @@ public static class NoisyRenderBenchmark
 
     /// <summary>
     /// One scene's sweep over <paramref name="rates"/> on <paramref name="oracle"/>'s noise model, with <paramref name="noiseAware"/> the
-    /// passes planning with the noisy runs' success (<c>render --noise-aware</c>).
+    /// passes planning with the noisy runs' success (`render`'s default under noise; otherwise <c>--ideal-plan</c>).
     /// </summary>
     public static Sweep Run(string name, Scene scene, NoiseOracle oracle, int size, IReadOnlyList<double> rates, int maxRandomizedPasses, Action<string>? progress = null, bool noiseAware = false)
     {
@@ -79,7 +79,7 @@ public static class NoisyRenderBenchmark
         {
             progress?.Invoke($"{name}: analytic, {oracle.Name()} oracle{(noiseAware ? ", noise-aware" : "")}, p = {p}");
             // Same seed, same render: of three, the fastest is the cost least disturbed by other work on the machine.
-            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p), NoiseOracle: oracle, NoiseAware: noiseAware), options, classical)).ToArray();
+            var runs = Enumerable.Range(0, 3).Select(_ => RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: NoiseModel.Depolarizing(p), NoiseOracle: oracle, IdealPlan: !noiseAware), options, classical)).ToArray();
             quantum.Add(new Point(p, runs.MinBy(r => r.WallTime)!, runs[0].WallTime));
         }
         // The termination rule stops the randomized renderer's rays after a miss or two, so its Int/Ray would
@@ -108,14 +108,15 @@ public static class NoisyRenderBenchmark
 
     /// <summary>
     /// A small render on the noisy gate engine (the gate-level oracle simulated) beside the analytic engine under the gate-level
-    /// oracle's model, both without the accuracy budget (the simulator engines run without it); on <paramref name="pool"/> when given.
+    /// oracle's model, both without the accuracy budget (the simulator engines run without it) and both planning with the ideal
+    /// miss rates, as the gate engine does; on <paramref name="pool"/> when given.
     /// </summary>
     public static (RenderMeasurement Analytic, RenderMeasurement Gate) Confirm(Scene scene, int size, double perGate, int workers, Bridge.BridgePool? pool = null)
     {
         var options = Defaults(size) with { Budget = null };
         var classical = RenderMeasurement.Reference(scene, options);
         var noise = NoiseModel.Depolarizing(perGate);
-        return (RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise), options, classical),
+        return (RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, new QSearchOptions(), Noise: noise, IdealPlan: true), options, classical),
             RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Gate, new QSearchOptions(), workers, Noise: noise, Pool: pool), options, classical));
     }
 }

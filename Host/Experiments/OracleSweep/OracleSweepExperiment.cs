@@ -1,3 +1,4 @@
+using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Reports;

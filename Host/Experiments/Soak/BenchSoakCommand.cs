@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Views;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;

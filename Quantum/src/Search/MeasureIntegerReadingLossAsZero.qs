@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Search {
     ///
     /// # Output
     /// The integer read; without qubit loss the same as `MeasureInteger`.
-    operation MeasureIntegerReadingLossAsZero(register : Qubit[]) : Int {
+    internal operation MeasureIntegerReadingLossAsZero(register : Qubit[]) : Int {
         mutable value = 0;
         for k in 0..Length(register) - 1 {
             if MeasureBitReadingLossAsZero(register[k]) {
@@ -23,7 +23,7 @@ namespace QuantumRayTracing.Search {
 
     /// # Summary
     /// Measures one qubit and resets it: true for One, false for Zero or a lost qubit.
-    operation MeasureBitReadingLossAsZero(qubit : Qubit) : Bool {
+    internal operation MeasureBitReadingLossAsZero(qubit : Qubit) : Bool {
         let result = MResetZ(qubit);
         not IsLossResult(result) and result == One
     }

@@ -19,7 +19,7 @@ namespace QuantumRayTracing.Search {
     /// top qubit's |0⟩, and the remaining `count - 2^(n-1)` states are prepared recursively under
     /// its |1⟩. The preparation is exact, so Grover's success probability is sin²((2r+1)θ) with
     /// sin²θ = t/count, not t/2^n.
-    operation PrepareUniformSuperposition(count : Int, register : Qubit[]) : Unit is Adj + Ctl {
+    internal operation PrepareUniformSuperposition(count : Int, register : Qubit[]) : Unit is Adj + Ctl {
         let width = Length(register);
         if count < 1 or count > 1 <<< width {
             fail $"count {count} does not fit a register of {width} qubits";

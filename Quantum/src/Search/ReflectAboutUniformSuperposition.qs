@@ -13,7 +13,7 @@ namespace QuantumRayTracing.Search {
     /// (held in |1⟩) controlled by the register.
     /// ## index
     /// Index register of the search.
-    operation ReflectAboutUniformSuperposition(count : Int, phaseOnAllOnes : Qubit[] => Unit is Adj + Ctl, index : Qubit[]) : Unit is Adj + Ctl {
+    internal operation ReflectAboutUniformSuperposition(count : Int, phaseOnAllOnes : Qubit[] => Unit is Adj + Ctl, index : Qubit[]) : Unit is Adj + Ctl {
         ReflectAboutPreparedState(PrepareUniformSuperposition(count, _), X, phaseOnAllOnes, index);
     }
 

@@ -21,7 +21,7 @@ namespace QuantumRayTracing.Supersampling {
     /// The coin is an equal-weight superposition of the Grover operator's eigenvectors, eigenphases
     /// ±2θ with sin²θ = f, so the ancilla reads 0 with probability ½ + ½·cos(2kθ) = cos²(kθ).
     /// Registers: one ancilla, ceil(log2 N) subpixel qubits and one coin qubit.
-    operation CountAncillaZeros(amplitudes : Double[], power : Int, shots : Int) : Int {
+    internal operation CountAncillaZeros(amplitudes : Double[], power : Int, shots : Int) : Int {
         let prepare = PrepareMeanCoin(amplitudes, _);
         mutable zeros = 0;
         use ancilla = Qubit();

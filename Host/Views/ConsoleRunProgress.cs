@@ -1,6 +1,8 @@
 using QuantumRayTracing.Passes;
 
-namespace QuantumRayTracing.Rendering;
+using QuantumRayTracing.Rendering;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>A run's renders on standard error, one <see cref="ConsoleProgress"/> each, its line cleared when the render ends.</summary>
 public sealed class ConsoleRunProgress : IRunProgress

@@ -5,13 +5,15 @@ using QuantumRayTracing.Passes;
 using QuantumRayTracing.Scenes;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Rendering;
+using QuantumRayTracing.Rendering;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>`render` on the console: what a run models before it starts, and its figures (the paper's table 1 per pass) after.</summary>
 public static class RenderRunView
 {
     /// <summary>What the run models, printed before it starts.</summary>
-    public static void PrintPlan(RenderRunSettings settings, RenderPlan plan)
+    public static void PrintModel(RenderRunSettings settings, ModelledRegisters plan)
     {
         var (scene, options) = (settings.Scene, settings.Options);
         AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
@@ -22,7 +24,7 @@ public static class RenderRunView
                 + (settings.WithConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         }
         AnsiConsole.WriteLine($"modelled per search: {plan.IndexQubits} index qubits + {plan.AuxiliaryQubits} auxiliaries, lookup table of {plan.Primitives} rows x {plan.CoordinateBits} coordinate bits per axis");
-        if (settings.Engine.SearchesWithGrover)
+        if (settings.Engine.Kind.SearchesWithGrover)
             AnsiConsole.WriteLine($"noise model: {settings.NoiseDescription}");
         if (plan.GateRegisters is { } registers)
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
@@ -31,8 +33,8 @@ public static class RenderRunView
     /// <summary>The run on <paramref name="pool"/> (null: local bridges): its plan first, its progress on standard error, its figures after.</summary>
     public static RenderRunResult RunAndPrint(RenderRunSettings settings, Bridge.BridgePool? pool)
     {
-        PrintPlan(settings, RenderPlan.Of(settings));
-        var run = RenderRun.Run(settings with { Pool = pool }, new ConsoleRunProgress(), PrintForecast);
+        PrintModel(settings, ModelledRegisters.Of(settings));
+        var run = RenderRun.Run(settings with { Engine = settings.Engine.OnBridges(pool) }, new ConsoleRunProgress(), PrintForecast);
         Print(settings, run);
         return run;
     }
@@ -45,7 +47,7 @@ public static class RenderRunView
     /// <summary>Where the run went, the cost per pass, the error against the references and the files written.</summary>
     public static void Print(RenderRunSettings settings, RenderRunResult run)
     {
-        var (kind, noisy, figures) = (settings.Engine, settings.IsNoisy, run.Figures);
+        var (kind, noisy, figures) = (settings.Engine.Kind, settings.IsNoisy, run.Figures);
         var engineName = EngineFactory.Name(kind);
         AnsiConsole.WriteLine($"{engineName} ran on {run.RanOn.Description}");
         if (noisy) engineName = $"{engineName} under {settings.NoiseDescription}";
@@ -58,10 +60,12 @@ public static class RenderRunView
         AnsiConsole.WriteLine($"wrong pixels: expected {budget.ExpectedWrongPixels:0.0} ({budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); "
             + (budget.Share is { } share ? $"budget {share:P1}" : "no budget (its searches run as configured)"));
         if (budget.Exceeded)
-            AnsiConsole.WriteLine($"over budget: the expected wrong pixels stay above {budget.Allowed:0.0} after {BudgetRounds.MaxRounds} budget rounds per pass");
-        AnsiConsole.WriteLine(noisy
-            ? "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)"
-            : "(expected: an expectation from each search path's miss rate and finds)");
+            AnsiConsole.WriteLine(settings.Engine.IdealPlan
+                ? $"over budget: {budget.ExpectedWrongPixels:0.0} wrong pixels expected under the noise model against {budget.Allowed:0.0} allowed, because the passes planned with the ideal miss rates (--ideal-plan)"
+                : $"over budget: the expected wrong pixels stay above {budget.Allowed:0.0} after {BudgetRounds.MaxRounds} budget rounds per pass");
+        AnsiConsole.WriteLine(!noisy ? "(expected: an expectation from each search path's miss rate and finds)"
+            : kind.ApproximatesNoise ? "(expected: an expectation from each search path's miss rate under the noise model above, and its finds)"
+            : "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)");
         if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } monteCarlo })
             AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {monteCarlo.Nrmse:P2} (Monte Carlo noise alone)");
         var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";

@@ -1,7 +1,9 @@
 using System.Diagnostics;
 using QuantumRayTracing.Passes;
 
-namespace QuantumRayTracing.Rendering;
+using QuantumRayTracing.Rendering;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>
 /// Progress on standard error, only once work has run longer than a second: a line rewritten in place

@@ -2,7 +2,9 @@ using System.Globalization;
 using QuantumRayTracing.Engines;
 using Spectre.Console;
 
-namespace QuantumRayTracing.Search;
+using QuantumRayTracing.Search;
+
+namespace QuantumRayTracing.Views;
 
 /// <summary>`search` on the console: the searched set and registers before the run, a progress bar during it, a table of what it found and cost after.</summary>
 public static class SearchRunView
@@ -11,7 +13,7 @@ public static class SearchRunView
     public static SearchRunResult RunWithProgress(SearchRunSettings settings) => AnsiConsole.Profile.Capabilities.Interactive
         ? AnsiConsole.Progress().AutoClear(true).Start(progress =>
         {
-            var task = progress.AddTask($"{EngineFactory.Name(settings.Engine)}: searching", maxValue: settings.Searches);
+            var task = progress.AddTask($"{EngineFactory.Name(settings.Engine.Kind)}: searching", maxValue: settings.Searches);
             return SearchRun.Run(settings, (_, active) => task.Value = settings.Searches - active);
         })
         : SearchRun.Run(settings);

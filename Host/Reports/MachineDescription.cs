@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 
-namespace QuantumRayTracing.Experiments;
+namespace QuantumRayTracing.Reports;
 
 /// <summary>One line saying what a benchmark ran on, for the tables it writes.</summary>
 public static class MachineDescription

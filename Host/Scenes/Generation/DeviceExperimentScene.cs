@@ -4,7 +4,7 @@ using QuantumRayTracing.Rays;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
 
-namespace QuantumRayTracing.Experiments;
+namespace QuantumRayTracing.Scenes.Generation;
 
 /// <summary>
 /// The ray tracing paper's device experiment (sec. 8): a minimal scene of 4 primitives on the 16x16x16
