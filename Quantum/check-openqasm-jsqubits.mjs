@@ -10,17 +10,12 @@
 // below QState.roundToZero to zero, set here to 1e-13 (its default, 1e-7, would drop amplitudes whose
 // probability is up to 1e-14; 1e-13 is above the residue of exact cancellations, about 1e-16, which
 // would otherwise stay in the sparse state as entries). jsqubits builds its bit masks with 32-bit
-// shifts, so a file may have at most 31 qubits.
+// shifts, so a file may have at most 31 qubits. With --serve it checks many files in one process (check-serve.mjs).
 
 import Qubits from "jsqubits";
 import { readMeasuredRegister, registerDistribution } from "./qasm2-measured-register.mjs";
+import { runCheck, UsageError } from "./check-serve.mjs";
 
-const file = process.argv[2];
-if (!file) {
-  console.error("usage: node check-openqasm-jsqubits.mjs FILE");
-  process.exit(2);
-}
-const { kept, register, measured } = readMeasuredRegister(file);
 Qubits.QState.roundToZero = 1e-13;
 
 const gates = {
@@ -42,23 +37,30 @@ const gates = {
   rz: (s, [a], angle) => s.rotateZ(a, angle),
 };
 
-let state = null;
-for (const line of kept) {
-  const text = line.trim();
-  if (text === "" || text.startsWith("//") || text === "OPENQASM 2.0;" || text === 'include "qelib1.inc";' || /^creg \w+\[\d+\];$/.test(text)) continue;
-  const qreg = text.match(/^qreg q\[(\d+)\];$/);
-  if (qreg) {
-    const qubits = Number(qreg[1]);
-    if (state !== null || qubits > 31) throw new Error(`jsqubits holds one register of at most 31 qubits: ${text}`);
-    state = Qubits("0".repeat(qubits));
-    continue;
+/** The reply for one file. */
+function check([file]) {
+  if (!file) throw new UsageError();
+  const { kept, register, measured } = readMeasuredRegister(file);
+  let state = null;
+  for (const line of kept) {
+    const text = line.trim();
+    if (text === "" || text.startsWith("//") || text === "OPENQASM 2.0;" || text === 'include "qelib1.inc";' || /^creg \w+\[\d+\];$/.test(text)) continue;
+    const qreg = text.match(/^qreg q\[(\d+)\];$/);
+    if (qreg) {
+      const qubits = Number(qreg[1]);
+      if (state !== null || qubits > 31) throw new Error(`jsqubits holds one register of at most 31 qubits: ${text}`);
+      state = Qubits("0".repeat(qubits));
+      continue;
+    }
+    const m = text.match(/^(\w+)(?:\(([-+0-9.eE]+)\))? (q\[\d+\](?:, q\[\d+\])*);$/);
+    if (!m || !(m[1] in gates) || state === null) throw new Error(`not a gate statement this check reads: ${text}`);
+    const operands = [...m[3].matchAll(/q\[(\d+)\]/g)].map((q) => Number(q[1]));
+    state = gates[m[1]](state, operands, m[2] === undefined ? undefined : Number(m[2]));
   }
-  const m = text.match(/^(\w+)(?:\(([-+0-9.eE]+)\))? (q\[\d+\](?:, q\[\d+\])*);$/);
-  if (!m || !(m[1] in gates) || state === null) throw new Error(`not a gate statement this check reads: ${text}`);
-  const operands = [...m[3].matchAll(/q\[(\d+)\]/g)].map((q) => Number(q[1]));
-  state = gates[m[1]](state, operands, m[2] === undefined ? undefined : Number(m[2]));
+
+  const amplitudes = [];
+  state.each((c) => amplitudes.push([c.asNumber(), c.amplitude.real, c.amplitude.imaginary]));
+  return { register, bits: measured.length, qubits: state.numBits(), probabilities: registerDistribution(amplitudes, measured) };
 }
 
-const amplitudes = [];
-state.each((c) => amplitudes.push([c.asNumber(), c.amplitude.real, c.amplitude.imaginary]));
-console.log(JSON.stringify({ register, bits: measured.length, qubits: state.numBits(), probabilities: registerDistribution(amplitudes, measured) }));
+await runCheck("node check-openqasm-jsqubits.mjs FILE | --serve", check);

@@ -6,9 +6,10 @@ using QuantumRayTracing.Tests.Engines;
 namespace QuantumRayTracing.Tests.Bridge;
 
 /// <summary>Every way the bridge can fail ends in a clear exception, and a dead bridge is started again once.</summary>
-public sealed class QSharpBridgeTests : IDisposable
+public sealed class QSharpBridgeTests(BridgeFixture fixture) : IClassFixture<BridgeFixture>, IDisposable
 {
-    private readonly QSharpBridge _bridge = new();
+    /// <summary>The class's bridge: each test leaves it answering (a killed or timed-out bridge restarts).</summary>
+    private readonly QSharpBridge _bridge = fixture.Bridge;
     private readonly string _scratch = Directory.CreateTempSubdirectory("qrt-bridge-").FullName;
 
     [Fact]
@@ -47,13 +48,14 @@ public sealed class QSharpBridgeTests : IDisposable
     public void KilledBridgeIsRestartedOnce()
     {
         _bridge.Version();
+        var restarts = _bridge.Restarts;
         using (var process = Process.GetProcessById(_bridge.ProcessId!.Value))
         {
             process.Kill();
             process.WaitForExit();
         }
         Assert.Equal(RepositoryPaths.LockedQdkVersion, _bridge.Version()["qsharp"]!.GetValue<string>());
-        Assert.Equal(1, _bridge.Restarts);
+        Assert.Equal(restarts + 1, _bridge.Restarts);
     }
 
     [Fact]
@@ -80,17 +82,12 @@ public sealed class QSharpBridgeTests : IDisposable
     {
         // A request that never ends, under a limit of its own: the bridge's other requests keep the default
         // limit, so however loaded the machine, only this one can time out.
-        using var bridge = new QSharpBridge();
-        bridge.Version();
+        _bridge.Version();
         const string endless = "{ mutable n = 0; while n >= 0 { set n += 1; } n }";
-        var error = Assert.Throws<BridgeTimeoutException>(() => bridge.Run(endless, timeout: TimeSpan.FromSeconds(1)));
+        var error = Assert.Throws<BridgeTimeoutException>(() => _bridge.Run(endless, timeout: TimeSpan.FromSeconds(1)));
         Assert.Contains("did not answer request run within 1 s", error.Message);
-        Assert.Equal(RepositoryPaths.LockedQdkVersion, bridge.Version()["qsharp"]!.GetValue<string>());
+        Assert.Equal(RepositoryPaths.LockedQdkVersion, _bridge.Version()["qsharp"]!.GetValue<string>());
     }
 
-    public void Dispose()
-    {
-        _bridge.Dispose();
-        Directory.Delete(_scratch, recursive: true);
-    }
+    public void Dispose() => Directory.Delete(_scratch, recursive: true);
 }

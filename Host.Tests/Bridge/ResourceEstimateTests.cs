@@ -5,9 +5,9 @@ using QuantumRayTracing.Tests.Engines;
 
 namespace QuantumRayTracing.Tests.Bridge;
 
-public sealed class ResourceEstimateTests : IDisposable
+public sealed class ResourceEstimateTests(BridgeFixture fixture) : IClassFixture<BridgeFixture>
 {
-    private readonly QSharpBridge _bridge = new();
+    private readonly QSharpBridge _bridge = fixture.Bridge;
 
     [Theory]
     [InlineData(8)]
@@ -32,6 +32,4 @@ public sealed class ResourceEstimateTests : IDisposable
         // Each factor of 16 in N adds the same number of qubits: linear in log2 N.
         Assert.Equal(widths[1] - widths[0], widths[2] - widths[1]);
     }
-
-    public void Dispose() => _bridge.Dispose();
 }

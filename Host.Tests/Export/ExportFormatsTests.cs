@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using QuantumRayTracing.Export;
-using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
 
@@ -15,18 +14,13 @@ public sealed class ExportFormatsTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    private string Export(string name, params string[] arguments)
-    {
-        var file = _scratch.File(name);
-        var (code, error) = ConsoleCapture.Run([.. arguments, "-o", file]);
-        Assert.True(code == 0, error);
-        return file;
-    }
+    /// <summary>The file `qrt <paramref name="arguments"/> -o FILE` writes (<see cref="ExportCache"/>: made once per test run).</summary>
+    private static string Export(params string[] arguments) => ExportCache.File(arguments);
 
     /// <summary>The search for pixel (3, 0) of the 2-bit-grid test scene (one of 5 marked) in <paramref name="format"/>: its file and text.</summary>
-    private (string File, string Text) ExportTinySearch(string name, string format)
+    private static (string File, string Text) ExportTinySearch(string format)
     {
-        var file = Export(name, "export", "search", OpenQasmOnQuantumCircuitTests.TinyScene(_scratch), "--size", "4", "--pixel", "3,0", "--format", format);
+        var file = Export("export", "search", OpenQasmOnQuantumCircuitTests.TinyScene(), "--size", "4", "--pixel", "3,0", "--format", format);
         return (file, File.ReadAllText(file));
     }
 
@@ -35,7 +29,7 @@ public sealed class ExportFormatsTests : IDisposable
     [InlineData("qasm3")]
     public void DeviceExperimentRunsOnTheQdkAsItsHeaderSays(string format)
     {
-        var file = Export($"device-{format}.qasm", "export", "device-experiment", "--format", format);
+        var file = Export("export", "device-experiment", "--format", format);
         var ideal = ExportedDistribution.FromHeader(file);
         Assert.True(Math.Abs(ideal[2] - 1) <= 1e-9, $"header: {string.Join(' ', ideal)}");
         // 100 shots all reading 2; a circuit that did not amplify (uniform: 1/4 each) passes with probability 4^-100.
@@ -48,30 +42,34 @@ public sealed class ExportFormatsTests : IDisposable
     /// The 5-square search (pixel (3, 0), r = 1) as OpenQASM 3 keeps the feedback of its comparators' ANDs and runs
     /// on the QDK's OpenQASM import as its header says: index 3 with probability 0.968, 0, 1, 2 and 4 with 0.008
     /// each, 5 to 7 (past N = 5, which the preparation never reaches) never. The QDK's shots take no seed, so the
-    /// check is statistical, with bounds whose false-failure rate is below 1e-10 in all (Chernoff bounds on the
-    /// binomial counts of 1,000 shots): no shot on a value the header leaves off, at least 920 on index 3 (mean 968:
-    /// at most 80 misses where 32 are expected, probability below 1e-11), at most 40 on each other value (mean 8,
-    /// probability below 1e-14). The same search with r = 0 (index 3 with probability 0.2) must fail the bounds.
+    /// check is statistical, with bounds whose false-failure rate is below 1e-10 in all (exact binomial tails of
+    /// 200 shots): no shot on a value the header leaves off, at least 170 on index 3 (mean 193.6: at most 30 misses
+    /// where 6.4 are expected, probability 5e-13), at most 15 on each other value (mean 1.6, probability 1.2e-11 each,
+    /// 4.8e-11 for the four). The same search with r = 0 (index 3 with probability 0.2, 40 shots expected) must fail
+    /// the bounds; it passes them with probability below 1e-86.
     /// </summary>
     [Fact]
     public void SearchQasm3RunsOnTheQdkAsItsHeaderSays()
     {
-        var (file, text) = ExportTinySearch("search3.qasm", "qasm3");
+        var (file, text) = ExportTinySearch("qasm3");
         Assert.Contains("if (uncompute) { cz ", text, StringComparison.Ordinal);
         var ideal = ExportedDistribution.FromHeader(file);
         Assert.True(Math.Abs(ideal[3] - 0.968) <= 1e-9, $"header: {string.Join(' ', ideal)}");
-        Assert.Null(MissedBounds(ideal, IndexShots(file, 1000)));
-        var none = Export("none3.qasm", "export", "search", OpenQasmOnQuantumCircuitTests.TinyScene(_scratch), "--size", "4", "--pixel", "3,0", "--iterations", "0", "--format", "qasm3");
-        Assert.NotNull(MissedBounds(ideal, IndexShots(none, 1000)));
+        Assert.Null(MissedBounds(ideal, IndexShots(file, Shots)));
+        var none = Export("export", "search", OpenQasmOnQuantumCircuitTests.TinyScene(), "--size", "4", "--pixel", "3,0", "--iterations", "0", "--format", "qasm3");
+        Assert.NotNull(MissedBounds(ideal, IndexShots(none, Shots)));
     }
 
-    /// <summary>What 1,000 shots of the 5-square search break of the bounds its header sets (above); null: none.</summary>
+    /// <summary>Shots of the 5-square search on the QDK: what the bounds above need.</summary>
+    private const int Shots = 200;
+
+    /// <summary>What <see cref="Shots"/> shots of the 5-square search break of the bounds its header sets (above); null: none.</summary>
     private static string? MissedBounds(IReadOnlyDictionary<int, double> ideal, Dictionary<int, int> shots)
     {
         var seen = string.Join(' ', shots.OrderBy(s => s.Key));
         if (shots.Keys.Any(v => !ideal.ContainsKey(v))) return $"a shot on a value the header leaves off: {seen}";
-        if (shots.GetValueOrDefault(3) < 920) return $"index 3 read {shots.GetValueOrDefault(3)} times in 1000, expected about 968: {seen}";
-        if (shots.Any(s => s.Key != 3 && s.Value > 40)) return $"another index read more than 40 times in 1000: {seen}";
+        if (shots.GetValueOrDefault(3) < 170) return $"index 3 read {shots.GetValueOrDefault(3)} times in {Shots}, expected about 193.6: {seen}";
+        if (shots.Any(s => s.Key != 3 && s.Value > 15)) return $"another index read more than 15 times in {Shots}: {seen}";
         return null;
     }
 
@@ -97,7 +95,7 @@ public sealed class ExportFormatsTests : IDisposable
     [Fact]
     public void SearchQirAssemblesAndRecordsTheIndexRegister()
     {
-        var (file, text) = ExportTinySearch("search.ll", "qir");
+        var (file, text) = ExportTinySearch("qir");
         Assert.StartsWith("; QuantumRayTracing: ", text, StringComparison.Ordinal);
         Assert.Contains("\n; ideal outcome probabilities: 3:0.96", text, StringComparison.Ordinal);
         Assert.Contains("\"qir_profiles\"=\"adaptive_profile\"", text, StringComparison.Ordinal);
@@ -119,7 +117,7 @@ public sealed class ExportFormatsTests : IDisposable
     public void QssQasm3RunsOnTheQdkAsItsHeaderSays()
     {
         // Mean 0.5: θ = π/4 sits on the grid of t = 2, so the header promises readouts 1 and 3, one half each.
-        var file = Export("qss3.qasm", "export", "qss", "--values", "0.25", "0.75", "--counter-bits", "2", "--format", "qasm3");
+        var file = Export("export", "qss", "--values", "0.25", "0.75", "--counter-bits", "2", "--format", "qasm3");
         var ideal = ExportedDistribution.FromHeader(file);
         Assert.True(Math.Abs(ideal[1] - 0.5) <= 1e-9 && Math.Abs(ideal[3] - 0.5) <= 1e-9, $"header: {string.Join(' ', ideal)}");
         Assert.Contains("bit[2] counter;", File.ReadAllText(file), StringComparison.Ordinal);
@@ -133,7 +131,7 @@ public sealed class ExportFormatsTests : IDisposable
     [Fact]
     public void QssQirRecordsTheCounterOnly()
     {
-        var text = File.ReadAllText(Export("qss.ll", "export", "qss", "--values", "0", "1", "1", "1", "--format", "qir"));
+        var text = File.ReadAllText(Export("export", "qss", "--values", "0", "1", "1", "1", "--format", "qir"));
         Assert.Contains("\"qir_profiles\"=\"adaptive_profile\"", text, StringComparison.Ordinal);
         var circuit = QirReader.Read(text);
         Assert.Equal(3, circuit.Outputs.Count);

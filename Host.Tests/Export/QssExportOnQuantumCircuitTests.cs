@@ -1,6 +1,5 @@
 using System.Globalization;
 using QuantumRayTracing.Supersampling;
-using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
 
@@ -18,13 +17,9 @@ public sealed class QssExportOnQuantumCircuitTests : IDisposable
 
     public void Dispose() => _scratch.Dispose();
 
-    private string Export(double[] values, int counterBits, string name = "qss.qasm")
-    {
-        var file = _scratch.File(name);
-        var (code, error) = ConsoleCapture.Run(["export", "qss", "--values", .. values.Select(v => v.ToString(CultureInfo.InvariantCulture)), "--counter-bits", counterBits.ToString(CultureInfo.InvariantCulture), "-o", file]);
-        Assert.True(code == 0, error);
-        return file;
-    }
+    /// <summary>The file `qrt export qss` writes (<see cref="ExportCache"/>: made once per test run).</summary>
+    private static string Export(double[] values, int counterBits) =>
+        ExportCache.File(["export", "qss", "--values", .. values.Select(v => v.ToString(CultureInfo.InvariantCulture)), "--counter-bits", counterBits.ToString(CultureInfo.InvariantCulture)]);
 
     [Theory]
     [InlineData(2, 0.25, 0.6)] // mean 0.425: θ/π is off the grid, the readout spreads over all four values
@@ -57,8 +52,8 @@ public sealed class QssExportOnQuantumCircuitTests : IDisposable
     public void CircuitOfAnotherMeanIsRejected()
     {
         // One subpixel of four switched off: mean 0.5 instead of 0.75, compared with the 0.75 file's header.
-        var promised = ExportedDistribution.FromHeader(Export([0.0, 1.0, 1.0, 1.0], 3, "three.qasm"));
-        var other = ExportedDistribution.OnQuantumCircuit(Export([0.0, 1.0, 1.0, 0.0], 3, "two.qasm"), "counter");
+        var promised = ExportedDistribution.FromHeader(Export([0.0, 1.0, 1.0, 1.0], 3));
+        var other = ExportedDistribution.OnQuantumCircuit(Export([0.0, 1.0, 1.0, 0.0], 3), "counter");
         var difference = ExportedDistribution.MaxDifference(promised, other);
         Assert.True(difference > 1e-2, $"the mean-0.5 circuit differs from the mean-0.75 header by only {difference}");
     }

@@ -1,5 +1,4 @@
 using System.Globalization;
-using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
 
@@ -49,7 +48,7 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     [InlineData(2, 6, 1UL, 0, false, 1)] // 2-bit grid, hits nothing, one iteration
     public void SearchOnJsqubitsIsTheHeadersAndGroversClosedForm(int bits, int count, ulong seed, int marked, bool orMore, int? iterations)
     {
-        var file = SmallGridScene.ExportSearch(_scratch, bits, count, seed, marked, orMore, iterations);
+        var file = SmallGridScene.ExportSearch(bits, count, seed, marked, orMore, iterations);
         AssertJsqubitsHeaderAndClosedFormAgree(file, $"{count} rectangles, {bits}-bit grid, seed {seed}, {marked}{(orMore ? "+" : "")} marked, r {iterations?.ToString(CultureInfo.InvariantCulture) ?? "default"}");
         if (marked == 0 && iterations is null)
             Assert.Contains("iterations: 0 (no primitive is marked: every r leaves the uniform distribution as it is, so none is run)", File.ReadAllText(file), StringComparison.Ordinal);
@@ -58,9 +57,7 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     [Fact]
     public void DeviceExperimentOnJsqubitsIsTheHeadersAndGroversClosedForm()
     {
-        var file = _scratch.File("device.qasm");
-        var (code, error) = ConsoleCapture.Run("export", "device-experiment", "-o", file);
-        Assert.True(code == 0, error);
+        var file = ExportCache.File("export", "device-experiment");
         Assert.Contains("// qubits: 28;", File.ReadAllText(file), StringComparison.Ordinal);
         AssertJsqubitsHeaderAndClosedFormAgree(file, "device experiment");
         // Dropping the first Toffoli (a load of the oracle's lookup) must break the search.
@@ -83,10 +80,8 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     [InlineData("baseline", "5,5", 2)]
     public void Qornell8OnJsqubitsIsTheHeadersAndGroversClosedForm(string oracle, string pixel, int marked)
     {
-        var file = _scratch.File($"qornell8-{oracle}-{pixel.Replace(',', '-')}.qasm");
         var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-        var (code, error) = ConsoleCapture.Run("export", "search", scene, "--size", "8", "--pixel", pixel, "--oracle", oracle, "-o", file);
-        Assert.True(code == 0, error);
+        var file = ExportCache.File("export", "search", scene, "--size", "8", "--pixel", pixel, "--oracle", oracle);
         Assert.Equal(marked, ExportedDistribution.MarkedFromHeader(file).Length);
         Assert.Contains($"// oracle: {oracle} ", File.ReadAllText(file), StringComparison.Ordinal);
         AssertJsqubitsHeaderAndClosedFormAgree(file, $"Qornell-8, {oracle}, pixel {pixel}");
@@ -100,8 +95,8 @@ public sealed class SearchExportOnJsqubitsTests : IDisposable
     [Fact]
     public void WrongIterationCountIsRejected()
     {
-        var optimal = SmallGridScene.ExportSearch(_scratch, 3, 12, 3UL, 1, name: "optimal.qasm");
-        var none = SmallGridScene.ExportSearch(_scratch, 3, 12, 3UL, 1, iterations: 1, name: "one.qasm");
+        var optimal = SmallGridScene.ExportSearch(3, 12, 3UL, 1);
+        var none = SmallGridScene.ExportSearch(3, 12, 3UL, 1, iterations: 1);
         Assert.Equal(2, HeaderCountAndIterations(optimal).Iterations);
         var difference = ExportedDistribution.MaxDifference(ExportedDistribution.FromHeader(optimal), ExportedDistribution.OnJsqubits(none, "index"));
         Assert.True(difference > 0.3, $"r = 1 against the r = 2 header differs by only {difference}");

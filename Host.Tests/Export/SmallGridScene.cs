@@ -4,7 +4,6 @@ using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
-using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
 
@@ -17,13 +16,6 @@ internal static class SmallGridScene
 {
     public static Scene Build(int integerBits, int count, ulong seed) =>
         SceneLoader.Parse(Json(integerBits, count, seed), $"small-grid-{integerBits}-{count}-{seed}");
-
-    /// <summary>The scene's JSON, written to <paramref name="path"/>; returns the path.</summary>
-    public static string Write(int integerBits, int count, ulong seed, string path)
-    {
-        File.WriteAllText(path, Json(integerBits, count, seed));
-        return path;
-    }
 
     private static string Json(int integerBits, int count, ulong seed)
     {
@@ -70,18 +62,17 @@ internal static class SmallGridScene
     }
 
     /// <summary>
-    /// `qrt export search` (qasm2) of the scene at the first pixel of a grid-sized image whose ray marks <paramref name="marked"/>
-    /// primitives (or more), into <paramref name="scratch"/>; r the default unless given. The header must list as many marked.
+    /// The file `qrt export search` (qasm2) writes for the scene at the first pixel of a grid-sized image whose ray marks
+    /// <paramref name="marked"/> primitives (or more); r the default unless given (<see cref="ExportCache"/>: made once
+    /// per test run). The header must list as many marked.
     /// </summary>
-    public static string ExportSearch(ScratchDirectory scratch, int integerBits, int count, ulong seed, int marked, bool orMore = false, int? iterations = null, string name = "search.qasm")
+    public static string ExportSearch(int integerBits, int count, ulong seed, int marked, bool orMore = false, int? iterations = null)
     {
         var size = 1 << integerBits;
         var (x, y, found) = PixelMarking(Build(integerBits, count, seed), size, marked, orMore);
-        var file = scratch.File(name);
         string[] r = iterations is { } n ? ["--iterations", n.ToString(CultureInfo.InvariantCulture)] : [];
-        var scene = Write(integerBits, count, seed, scratch.File("scene.json"));
-        var (code, error) = ConsoleCapture.Run(["export", "search", scene, "--size", $"{size}", "--pixel", $"{x},{y}", .. r, "-o", file]);
-        Assert.True(code == 0, error);
+        var scene = ExportCache.Scene(Json(integerBits, count, seed));
+        var file = ExportCache.File(["export", "search", scene, "--size", $"{size}", "--pixel", $"{x},{y}", .. r]);
         Assert.Equal(found, ExportedDistribution.MarkedFromHeader(file).Length);
         return file;
     }

@@ -2,7 +2,6 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Export;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Scenes.Generation;
-using QuantumRayTracing.Tests.Cli;
 
 namespace QuantumRayTracing.Tests.Export;
 
@@ -10,19 +9,15 @@ namespace QuantumRayTracing.Tests.Export;
 /// The export of a search compiles Q# <c>ApplyGateGroverSearchWithUnitaryLookups</c> (lookups uncomputed by
 /// Toffolis) instead of the gate engine's <c>ApplyGateGroverSearch</c>: made unitary, the two programs must have
 /// the same gates, gate for gate, and the exported QIR must hold fewer feedback branches (what makes the
-/// compile faster).
+/// compile faster). The exports run on one shared bridge (<see cref="ExportCache.Export"/>).
 /// </summary>
-public sealed class UnitaryLookupExportTests : IDisposable
+public sealed class UnitaryLookupExportTests
 {
-    private readonly ScratchDirectory _scratch = new("qrt-unitary-lookup-");
-
-    public void Dispose() => _scratch.Dispose();
-
     public static TheoryData<string> Subjects => ["tiny scene, pixel (3, 0)", "device experiment"];
 
-    private ExportSubject Subject(string name) => name == "device experiment"
+    private static ExportSubject Subject(string name) => name == "device experiment"
         ? DeviceExperimentExport.Subject()
-        : SearchExport.ForPixel(DefaultScene.Load(new FileInfo(OpenQasmOnQuantumCircuitTests.TinyScene(_scratch))), 4, 4, 3, 0, OracleConstruction.Narrow, null);
+        : SearchExport.ForPixel(DefaultScene.Load(new FileInfo(OpenQasmOnQuantumCircuitTests.TinyScene())), 4, 4, 3, 0, OracleConstruction.Narrow, null);
 
     [Theory]
     [MemberData(nameof(Subjects))]
@@ -31,14 +26,13 @@ public sealed class UnitaryLookupExportTests : IDisposable
         var subject = Subject(name);
         Assert.Contains(QSharpOperations.ApplyGateGroverSearchWithUnitaryLookups + "(", subject.Apply, StringComparison.Ordinal);
         var gateEngine = subject with { Apply = subject.Apply.Replace(QSharpOperations.ApplyGateGroverSearchWithUnitaryLookups + "(", QSharpOperations.ApplyGateGroverSearch + "(", StringComparison.Ordinal) };
-        using var bridge = new QSharpBridge();
-        var fast = CircuitExporter.Export(bridge, subject, ExportFormat.Qasm2);
-        var passed = CircuitExporter.Export(bridge, gateEngine, ExportFormat.Qasm2);
+        var fast = ExportCache.Export(subject, ExportFormat.Qasm2);
+        var passed = ExportCache.Export(gateEngine, ExportFormat.Qasm2);
         // The ideal-probabilities line is simulated separately for each program and may differ in the last bits.
         Assert.Equal(WithoutIdealLine(passed), WithoutIdealLine(fast));
 
-        var measured = GateCounts.Of(QirReader.Read(CircuitExporter.Export(bridge, gateEngine, ExportFormat.Qir)));
-        var unitary = GateCounts.Of(QirReader.Read(CircuitExporter.Export(bridge, subject, ExportFormat.Qir)));
+        var measured = GateCounts.Of(QirReader.Read(ExportCache.Export(gateEngine, ExportFormat.Qir)));
+        var unitary = GateCounts.Of(QirReader.Read(ExportCache.Export(subject, ExportFormat.Qir)));
         Assert.True(unitary.Conditionals < measured.Conditionals, $"{unitary.Conditionals} feedback branches with unitary lookups, {measured.Conditionals} without");
     }
 
@@ -49,10 +43,9 @@ public sealed class UnitaryLookupExportTests : IDisposable
     [Fact]
     public void CompactExportsAsNarrow()
     {
-        var scene = DefaultScene.Load(new FileInfo(OpenQasmOnQuantumCircuitTests.TinyScene(_scratch)));
-        using var bridge = new QSharpBridge();
+        var scene = DefaultScene.Load(new FileInfo(OpenQasmOnQuantumCircuitTests.TinyScene()));
         string Export(OracleConstruction construction) =>
-            CircuitExporter.Export(bridge, SearchExport.ForPixel(scene, 4, 4, 3, 0, construction, null), ExportFormat.Qasm2);
+            ExportCache.Export(SearchExport.ForPixel(scene, 4, 4, 3, 0, construction, null), ExportFormat.Qasm2);
         var compact = Export(OracleConstruction.Compact);
         Assert.Contains("// oracle: compact (2 axes tested, 2 bound register(s)), unload by a second lookup (the engines' compact oracle unloads by measurement, an unlookup the QDK cannot compile to QIR; so this is the narrow oracle's circuit)\n", compact, StringComparison.Ordinal);
         static string[] Body(string text) => WithoutIdealLine(text).Where(line => !line.StartsWith("// oracle: ", StringComparison.Ordinal)).ToArray();
