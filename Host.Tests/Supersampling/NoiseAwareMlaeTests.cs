@@ -110,7 +110,8 @@ public class NoiseAwareMlaeTests
         // schedule's mean absolute error is 1.1x to 1.8x the adaptive one's, 1.45x pooled. Bound: pooled over f = 0.2, 0.35,
         // 0.8 with 400 trials each, the adaptive error is at most the fixed one's. These errors are heavy-tailed (standard
         // deviation of the absolute error about 2.5x its mean), so each pooled mean absolute error has a relative standard
-        // error near 7% and their ratio near 10%: a true ratio of 1.45 falls below 1 with probability about 1e-5. The adaptive
+        // error near 7% and their ratio near 10%: ln 1.45 is 3.6 of those standard errors, so a true ratio of 1.45 falls below
+        // 1 with probability about 1.5e-4 (fewer trials would raise that past 1e-3, so the 400 stay). The adaptive
         // estimates are also unbiased within Z standard errors at each mean (false failure 1e-8 each). And the same seed
         // gives the same estimates.
         const long queries = 3200;
