@@ -86,8 +86,9 @@ public class GateLevelExposureTests(FullStateFixture fixture)
         // in the wrong class misses by far more. At r = 1 the channels must cost more than the equal share per iteration: a sign
         // flip in the only oracle section harms as in the first of two, more than one in the last of two (1 against 0.6 of a
         // uniformly dephased register's harm at N = 8), which the equal split gives every section alike (986 against 831 measured).
+        // The ray's traced exposure (three graded traces) is the one the model checks of NoisySimulatorTests read: traced once per run.
         var eight = NoiseBenchmark.EightPrimitiveRay();
-        var traced = GateLevelExposure.Trace(Pool, eight, "test", traces: 2);
+        var traced = NoiseCheck.Exposure(Pool, eight);
         Assert.NotNull(traced.Channels);
         const double p = 1e-7;
         var noise = NoiseModel.Depolarizing(p);
@@ -124,18 +125,21 @@ public class GateLevelExposureTests(FullStateFixture fixture)
     [Fact]
     public void TheBuiltInTableAgreesWithAFreshEstimateWithinItsSpread()
     {
-        // The table's per-iteration harm (the mean of K traces) against a fresh mean of two: their difference has standard deviation
+        // The table's per-iteration harm (the mean of K traces) against a fresh mean of three (the traces the model checks read; the
+        // representative ray is the 8-primitive ray they use, so the trace is shared): their difference has standard deviation
         // σ·√(1/K + 1/2) with σ the spread of one trace; allowed z times that with σ at its upper confidence bound, so a false
         // failure has probability below 1e-6 (about 1e-3 were σ half as large again as that bound). The old estimator (the
         // difference of a two- and a one-iteration trace) moved by 380 to 700 between traces at this shape, far outside.
         var scene = SceneLoader.Load(Path.Combine(RepositoryPaths.Root, "Scenes", "qornell-8.json"));
         var table = GateLevelExposureTable.For(scene);
         Assert.NotNull(table?.Estimate);
-        var fresh = GateLevelExposure.Trace(Pool, GateLevelExposure.RepresentativeRay(scene), "test", traces: 2);
+        var fresh = NoiseCheck.Exposure(Pool, GateLevelExposure.RepresentativeRay(scene));
+        Assert.Equal(GateLevelExposure.DefaultTraces, fresh.Estimate!.Traces);
         var tolerance = Z * TraceSpreadAtEight * Math.Sqrt(1.0 / table.Estimate.Traces + 1.0 / fresh.Estimate!.Traces);
         Assert.True(Math.Abs(fresh.Iteration.HarmWeight - table.Iteration.HarmWeight) <= tolerance,
             $"per-iteration harm weight: table {table.Iteration.HarmWeight:0.0}, fresh {fresh.Iteration.HarmWeight:0.0}, allowed ±{tolerance:0.0}");
-        // The fresh traces' own spread lies within what the stated spread allows (two traces: |difference| ≤ z·σ·√2).
+        // The fresh traces' own spread lies within what the stated spread allows: their sample deviation s has 2s²/σ² ~ χ² with two
+        // degrees of freedom, above zσ with probability exp(−z²) = 4e-11.
         Assert.InRange(fresh.Estimate.IterationSpread, 0, Z * TraceSpreadAtEight);
         // The outside is graded whole on every trace: the same preparation and measurement, the same harm.
         Assert.Equal(table.Outside.HarmWeight, fresh.Outside.HarmWeight, 3);
