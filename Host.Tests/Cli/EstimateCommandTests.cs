@@ -10,13 +10,45 @@ using QuantumRayTracing.Tests.Engines;
 namespace QuantumRayTracing.Tests.Cli;
 
 /// <summary>`estimate` and `estimate oracle-sweep` through <see cref="CommandLine.Run"/>: exit codes and the report file.</summary>
-public sealed class EstimateCommandTests : IDisposable
+public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frames) : IDisposable, IClassFixture<EstimateCommandTests.PricedFrames>
 {
     private static readonly string Scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
 
     private readonly ScratchDirectory _scratch = new("qrt-estimate-");
 
     public void Dispose() => _scratch.Dispose();
+
+    /// <summary>
+    /// The same 1x1 frame (both passes make Grover runs; a 2x2 frame prices twice the estimator jobs) priced on every
+    /// default model for 2 QPUs twice, once here writing its table as Markdown and once on a two-worker cluster writing
+    /// it as CSV, each with its --json record: the tests below read what they check from these two runs.
+    /// </summary>
+    public sealed class PricedFrames : IDisposable
+    {
+        private readonly ScratchDirectory _scratch = new("qrt-estimate-frames-");
+        private readonly Lazy<Runs> _runs;
+
+        public PricedFrames() => _runs = new(() =>
+        {
+            string[] frame = ["estimate", "--frame", Scene, "--size", "1", "--qpus", "2", "--workers", "1"];
+            var (markdown, csv) = (Path.ChangeExtension(_scratch.File("frame"), "md"), _scratch.File("frame.csv"));
+            var (local, onCluster) = (_scratch.File("local.json"), _scratch.File("cluster.json"));
+            var localCode = ConsoleCapture.Run([.. frame, "-o", markdown, "--json", local]).Code;
+            using var first = new WorkerBridges(1);
+            using var second = new WorkerBridges(1);
+            using var cluster = new TestCluster(120, first, second);
+            var clusterCode = ConsoleCapture.Run([.. frame, "--cluster", cluster.ConfigPath, "--format", "csv", "-o", csv, "--json", onCluster]).Code;
+            return new Runs(localCode, clusterCode, (cluster.Served(0), cluster.Served(1)), File.ReadAllLines(markdown), File.ReadAllLines(csv),
+                JsonNode.Parse(File.ReadAllText(local))!, JsonNode.Parse(File.ReadAllText(onCluster))!);
+        });
+
+        public Runs Value => _runs.Value;
+
+        public void Dispose() => _scratch.Dispose();
+    }
+
+    /// <summary>Exit codes, the jobs each cluster worker served, the files written and the JSON records of the two runs.</summary>
+    public sealed record Runs(int LocalCode, int ClusterCode, (long First, long Second) Served, string[] Markdown, string[] Csv, JsonNode Local, JsonNode OnCluster);
 
     [Fact]
     public void EstimatesOnePixelsRay()
@@ -76,20 +108,12 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void FramePricingOnAClusterCostsTheSame()
     {
-        // The smallest frame, one pixel: its 15 estimator jobs still go to both workers.
-        string[] frame = ["estimate", "--frame", Scene, "--size", "1", "--models", "qubit_gate_ns_e3", "--workers", "1"];
         Assert.Equal(1, ConsoleCapture.Run(["estimate", Scene, "--cluster", "cluster.json"]).Code); // one ray's estimates need no cluster
-        var (local, onCluster) = (_scratch.File("local.json"), _scratch.File("cluster.json"));
-        Assert.Equal(0, ConsoleCapture.Run([.. frame, "--json", local]).Code);
-        using var first = new WorkerBridges(1);
-        using var second = new WorkerBridges(1);
-        using (var cluster = new TestCluster(120, first, second))
-        {
-            Assert.Equal(0, ConsoleCapture.Run([.. frame, "--cluster", cluster.ConfigPath, "--json", onCluster]).Code);
-            Assert.True(cluster.Served(0) > 0 && cluster.Served(1) > 0, $"jobs served: {cluster.Served(0)} and {cluster.Served(1)}; both workers should take some");
-        }
+        var runs = frames.Value;
+        Assert.Equal((0, 0), (runs.LocalCode, runs.ClusterCode));
+        Assert.True(runs.Served.First > 0 && runs.Served.Second > 0, $"jobs served: {runs.Served.First} and {runs.Served.Second}; both workers should take some");
 
-        var (here, there) = (JsonNode.Parse(File.ReadAllText(local))!, JsonNode.Parse(File.ReadAllText(onCluster))!);
+        var (here, there) = (runs.Local, runs.OnCluster);
         // The Resource Estimator is deterministic: the same runs priced anywhere cost the same.
         Assert.Equal(here["figures"]!["cost"]!.ToJsonString(), there["figures"]!["cost"]!.ToJsonString());
         Assert.Equal((RunPlace.LocalKind, 1), ((string)here["ranOn"]!["kind"]!, (int)here["ranOn"]!["bridges"]!));
@@ -99,21 +123,19 @@ public sealed class EstimateCommandTests : IDisposable
     [Fact]
     public void FrameWritesItsTableAsMarkdownAndCsvAndKeepsOtherFiles()
     {
-        var markdown = Path.ChangeExtension(Path.Combine(_scratch.Path, "frame"), "md");
-        string[] frame = ["estimate", "--frame", Scene, "--size", "1", "--qpus", "2", "--workers", "1"];
-        Assert.Equal(0, ConsoleCapture.Run([.. frame, "-o", markdown]).Code);
-        var lines = File.ReadAllLines(markdown);
+        var runs = frames.Value;
+        Assert.Equal((0, 0), (runs.LocalCode, runs.ClusterCode));
+        var lines = runs.Markdown;
         Assert.Equal(GeneratedReport.MarkdownMarker("qrt estimate --frame"), lines[0]);
         var header = lines.Single(l => l.StartsWith("| measure |", StringComparison.Ordinal));
         Assert.EndsWith("| total |", header);
         Assert.Contains(lines, l => l.StartsWith("| qubit_gate_ns_e3, surface_code: runtime, 2 QPUs |", StringComparison.Ordinal));
 
-        var csv = Path.Combine(_scratch.Path, "frame.csv");
-        Assert.Equal(0, ConsoleCapture.Run([.. frame, "--format", "csv", "-o", csv]).Code);
-        var rows = File.ReadAllLines(csv).Where(l => !l.StartsWith('#')).ToArray();
+        var rows = runs.Csv.Where(l => !l.StartsWith('#')).ToArray();
         Assert.StartsWith("measure,", rows[0]);
         Assert.Contains(rows, r => r.StartsWith("CCZ,", StringComparison.Ordinal));
 
+        string[] frame = ["estimate", "--frame", Scene, "--size", "1", "--qpus", "2", "--workers", "1"];
         var notes = Path.ChangeExtension(Path.Combine(_scratch.Path, "notes"), "md");
         File.WriteAllText(notes, "# my notes\n");
         Assert.Equal(ExitCodes.BadInput, ConsoleCapture.Run([.. frame, "-o", notes]).Code);
@@ -128,6 +150,7 @@ public sealed class EstimateCommandTests : IDisposable
         // What an earlier run of the same command left: it replaces both.
         File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine) + "\nan earlier report\n");
         ImageFiles.Write([(new RgbImage(1, 1), plot)]);
+        // 1x1 frames, the smallest whose primary and shadow passes both make Grover runs.
         string[] sweep = ["estimate", "frame-sweep", "--sizes", "1", "--primitives", "8", "--scaling-size", "1", "--detailed-size", "1", "--models", "qubit_gate_ns_e3", "--workers", "1", "-o", output];
         Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
         var lines = File.ReadAllLines(output);
@@ -146,8 +169,11 @@ public sealed class EstimateCommandTests : IDisposable
     public void SweepWritesItsReportWithThePapersFigure()
     {
         var output = Path.Combine(_scratch.Path, "oracle-sweep.md");
+        // What an earlier run of the same command left: regenerating replaces it.
+        File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandLine) + "\nan earlier report\n");
         Assert.Equal(0, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         var lines = File.ReadAllLines(output);
+        Assert.DoesNotContain("an earlier report", lines);
         Assert.Equal(GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandLine), lines[0]);
         Assert.Contains("| paper, simulator (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
         Assert.Contains("| paper, transpiled for ibmq_paris | 27 | 18277 | 11096 | the device's native gates, routed on its 27 qubits |", lines);
@@ -162,9 +188,6 @@ public sealed class EstimateCommandTests : IDisposable
         // Every plot the report shows is a PNG beside it (none when the build has no plot writer).
         foreach (var png in lines.Where(l => l.StartsWith("![", StringComparison.Ordinal)).Select(l => l[(l.LastIndexOf('(') + 1)..^1]))
             Assert.Equal(800, ImageReader.Read(Path.Combine(_scratch.Path, png)).Width);
-        // Regenerating replaces the file this command wrote.
-        Assert.Equal(0, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
-        Assert.Equal(["4"], DataRows(File.ReadAllLines(output), "## The oracle against the number of primitives"));
     }
 
     /// <summary>The first cell of each data row of the table in the section starting with <paramref name="heading"/>.</summary>

@@ -172,8 +172,11 @@ public sealed partial class JsonOutputTests : IDisposable
     [Fact]
     public void EstimateRecordsThePrintedTableAndItsNumbers()
     {
-        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-        var (output, json) = Run("estimate", scene, "--size", "8", "--no-circuit", "--workers", "1");
+        // The run PlainOutputTests reads too: `estimate qornell-8.json --size 8 --no-circuit --workers 1 --json run.json`.
+        var (code, output, error, text) = OneRayEstimate.Result;
+        Assert.True(code == 0, error);
+        var json = JsonNode.Parse(text)!.AsObject();
+        Assert.Equal("run.json", (string?)json["options"]!["json"]);
         Assert.Equal("estimate", (string?)json["command"]);
         Assert.Null(json["seed"]);
         Assert.Null(json["engine"]);
@@ -221,7 +224,7 @@ public sealed partial class JsonOutputTests : IDisposable
         using var second = new WorkerBridges(1);
         using var cluster = new TestCluster(120, first, second);
         var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-        var (output, json) = Run("render", scene, "--engine", "fullstate", "--size", "4", "--cluster", cluster.ConfigPath, "-o", "r.png");
+        var (output, json) = Run("render", scene, "--engine", "fullstate", "--size", "2", "--cluster", cluster.ConfigPath, "-o", "r.png");
 
         var printed = Match(output, @"^fullstate ran on (?<where>.+)$")["where"].Value;
         AssertRanOn(printed, json, RunPlace.ClusterKind, bridges: 2, workers: 2);

@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Tests.Cli;
 /// </summary>
 public sealed class PlainOutputTests : IDisposable
 {
-    private static readonly Dictionary<string, string> ColourTerminal = new() { ["TERM"] = "xterm-256color", ["COLUMNS"] = "80" };
+    private static readonly Dictionary<string, string> ColourTerminal = OneRayEstimate.ColourTerminal;
 
     private readonly ScratchDirectory _scratch = new("qrt-plain-");
 
@@ -31,8 +31,7 @@ public sealed class PlainOutputTests : IDisposable
     [Fact]
     public void EstimateTableKeepsEachLabelOnOneLine()
     {
-        var scene = Path.Combine(RepositoryPaths.Scenes, "qornell-8.json");
-        var (code, output, error) = QrtProcess.Run(ColourTerminal, _scratch.Path, "estimate", scene, "--size", "8", "--no-circuit", "--workers", "1");
+        var (code, output, error, _) = OneRayEstimate.Result;
         Assert.True(code == 0, error);
         Assert.DoesNotContain('\u001b', output);
         var rows = output.Split('\n').Where(l => l.StartsWith('│')).Select(l => l.Split('│')[1].Trim()).ToArray();

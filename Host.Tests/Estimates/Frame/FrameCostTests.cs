@@ -10,7 +10,7 @@ using QuantumRayTracing.Tests.Engines;
 namespace QuantumRayTracing.Tests.Estimates;
 
 /// <summary>
-/// A frame's cost against the per-run estimates summed by hand: on a 4x4 frame every Grover run is
+/// A frame's cost against the per-run estimates summed by hand: on a 1x1 frame every Grover run is
 /// estimated on its own ray's circuit (not through the shape cache), and the sums, maxima and the
 /// failure bounds are taken here, apart from the frame code's aggregation.
 /// </summary>
@@ -23,8 +23,9 @@ public sealed class FrameCostTests(FullStateFixture fixture)
     public void FrameFiguresAreTheSumsOfThePerRunEstimatesAndTheSplitKeepsTheFrameWithinItsBudget()
     {
         var scene = SceneLoader.Load(Path.Combine(RepositoryPaths.Scenes, "qornell-8.json"));
-        // 2x2 pixels: enough runs of different circuits for the sums to be sums, a quarter of the runs to price.
-        var options = new RenderOptions(2, 2, Seed: 7);
+        // One pixel: its primary and shadow rays' runs are of different circuits, so the sums are sums (checked below), and
+        // each distinct circuit is one estimator job here (2x2 pixels gave four times the runs to price).
+        var options = new RenderOptions(1, 1, Seed: 7);
         var search = new QSearchOptions();
         var models = QubitModel.Defaults;
         var frame = FrameEstimate.Run(new FrameSettings(scene, options, search, OracleConstruction.Default, models, Budget, Qpus: 1), fixture.Engine.Pool);
@@ -43,14 +44,14 @@ public sealed class FrameCostTests(FullStateFixture fixture)
         var expressions = quantum.Select(r => EstimatedCircuits.SearchRun.Expression(new EstimateSubject(r.Oracle!, r.Iterations, ""))).ToArray();
         var distinct = expressions.Distinct().ToArray();
         Assert.True(distinct.Length >= 2, $"{quantum.Length} runs of {distinct.Length} distinct circuits: the sums would test nothing");
-        IReadOnlyDictionary<string, CircuitEstimate> Estimate(double budget)
-        {
-            var estimator = new ResourceEstimator(fixture.Engine.Pool, models.Select(m => m with { Budget = budget }).ToArray(), withCircuits: false);
-            var subjects = distinct.Select(e => quantum[Array.IndexOf(expressions, e)]).Select(r => (EstimatedCircuits.SearchRun, new EstimateSubject(r.Oracle!, r.Iterations, ""))).ToArray();
-            return distinct.Zip(estimator.Estimate(subjects)).ToDictionary(p => p.First, p => p.Second);
-        }
-        var split = Estimate(Budget / quantum.Length);
-        var alone = Estimate(Budget);
+        // One estimator job per circuit prices it on every model at both budgets: the first models.Count physical
+        // estimates at ε / R, the rest at ε.
+        var estimator = new ResourceEstimator(fixture.Engine.Pool,
+            [.. models.Select(m => m with { Budget = Budget / quantum.Length }), .. models.Select(m => m with { Budget = Budget })], withCircuits: false);
+        var subjects = distinct.Select(e => quantum[Array.IndexOf(expressions, e)]).Select(r => (EstimatedCircuits.SearchRun, new EstimateSubject(r.Oracle!, r.Iterations, ""))).ToArray();
+        var estimates = distinct.Zip(estimator.Estimate(subjects)).ToDictionary(p => p.First, p => p.Second);
+        var split = estimates.ToDictionary(p => p.Key, p => p.Value with { Physical = p.Value.Physical.Take(models.Count).ToArray() });
+        var alone = estimates.ToDictionary(p => p.Key, p => p.Value with { Physical = p.Value.Physical.Skip(models.Count).ToArray() });
 
         var total = frame.Cost.Total;
         var unsplit = new double[models.Count];
