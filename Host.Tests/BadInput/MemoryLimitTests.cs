@@ -32,11 +32,11 @@ public sealed class MemoryLimitTests : IDisposable
     public void TheForecastComesFirstWithTheCalibrationsRaysPerPixel()
     {
         var scene = Intersection.TestScenes.Load("qornell-8.json");
-        var settings = new RenderRunSettings(scene, RenderDefaults.CommandLine(1024, 1024), new EngineSetup(EngineKind.Analytic), _output.File("big.png"), MaxMemory: 1L << 20);
+        var settings = new RenderRunSettings(scene, RenderDefaults.Options(1024, 1024), new EngineSetup(EngineKind.Analytic), _output.File("big.png"), MaxMemory: 1L << 20);
         RenderForecast? told = null;
         var refused = Assert.Throws<QuantumRayTracing.Output.UserError>(() => RenderRun.Run(settings, null, f => told = f));
         Assert.Contains("--max-memory limit of 1 MB", refused.Message);
-        var calibration = Renderer.Render(scene, settings.Engine, RenderDefaults.CommandLine(128, 128)).Total.Rays;
+        var calibration = Renderer.Render(scene, settings.Engine, RenderDefaults.Options(128, 128)).Total.Rays;
         Assert.NotNull(told);
         Assert.Equal(calibration / (128.0 * 128), told.RaysPerPixel, 9);
         Assert.Equal(1024L * 1024, told.Pixels);

@@ -13,7 +13,7 @@ public sealed class CommandReferenceTests : IDisposable
     public void DocsCommandsMdIsWhatTheParserPrints()
     {
         var path = Path.Combine(RepositoryPaths.Root, "docs", "commands.md");
-        var regenerate = $"regenerate it with `dotnet run --project Host -- {CommandReference.CommandLineText["qrt ".Length..]}`";
+        var regenerate = $"regenerate it with `dotnet run --project Host -- {CommandReference.CommandText["qrt ".Length..]}`";
         Assert.True(File.Exists(path), $"docs/commands.md is missing: {regenerate}");
         var expected = CommandReference.Markdown().ReplaceLineEndings("\n");
         var actual = File.ReadAllText(path).ReplaceLineEndings("\n");

@@ -148,14 +148,14 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
         var output = Path.Combine(_scratch.Path, "frame-sweep.md");
         var plot = Path.Combine(_scratch.Path, "frame-sweep-runtime-vs-primitives.png");
         // What an earlier run of the same command left: it replaces both.
-        File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine) + "\nan earlier report\n");
+        File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandText) + "\nan earlier report\n");
         ImageFiles.Write([(new RgbImage(1, 1), plot)]);
         // 1x1 frames, the smallest whose primary and shadow passes both make Grover runs.
         string[] sweep = ["estimate", "frame-sweep", "--sizes", "1", "--primitives", "8", "--scaling-size", "1", "--detailed-size", "1", "--models", "qubit_gate_ns_e3", "--workers", "1", "-o", output];
         Assert.Equal(0, ConsoleCapture.Run(sweep).Code);
         var lines = File.ReadAllLines(output);
         Assert.DoesNotContain("an earlier report", lines);
-        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandLine), lines[0]);
+        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateFrameSweepCommand.CommandText), lines[0]);
         // Each scene at the one size in the logical table, the model's table and the per-pixel table; N in the
         // logical, runtime and qubit tables.
         foreach (var scene in new[] { "Qornell-64", "Depth Complexity 64" })
@@ -170,11 +170,11 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
     {
         var output = Path.Combine(_scratch.Path, "oracle-sweep.md");
         // What an earlier run of the same command left: regenerating replaces it.
-        File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandLine) + "\nan earlier report\n");
+        File.WriteAllText(output, GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandText) + "\nan earlier report\n");
         Assert.Equal(0, ConsoleCapture.Run(["estimate", "oracle-sweep", "--primitives", "4", "8", "--bits", "2", "--ablation", "4", "--no-circuit", "--workers", "1", "-o", output]).Code);
         var lines = File.ReadAllLines(output);
         Assert.DoesNotContain("an earlier report", lines);
-        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandLine), lines[0]);
+        Assert.Equal(GeneratedReport.MarkdownMarker(EstimateOracleSweepCommand.CommandText), lines[0]);
         Assert.Contains("| paper, simulator (Qiskit) | 19 | 2165 | 1185 | Qiskit's, after its decomposition (not stated further) |", lines);
         Assert.Contains("| paper, transpiled for ibmq_paris | 27 | 18277 | 11096 | the device's native gates, routed on its 27 qubits |", lines);
         // The device experiment at the device's width: table 9's two rows and ours (the device construction fits 27 qubits).

@@ -63,7 +63,7 @@ public sealed class ClusterSeedTests : IDisposable
     }
 
     private RenderRunResult Render(BridgePool pool, ulong seed, string output) => RenderRun.Run(new RenderRunSettings(
-        Empty, RenderDefaults.CommandLine(4, 4, seed), new EngineSetup(EngineKind.FullState).OnBridges(pool), _scratch.File(output)));
+        Empty, RenderDefaults.Options(4, 4, seed), new EngineSetup(EngineKind.FullState).OnBridges(pool), _scratch.File(output)));
 
     // Chunks of one round run at once, so their order varies: the requests are compared as sorted lists.
     private static string[] Sorted(params RecordingExecutor[] executors) => executors.SelectMany(e => e.Requests).Order(StringComparer.Ordinal).ToArray();

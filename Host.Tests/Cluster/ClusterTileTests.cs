@@ -24,7 +24,7 @@ public sealed class ClusterTileTests
     // Small tiles on a small image, so that every edge, border and clipped corner occurs (as in TiledRenderTests).
     private const int Tile = 32;
 
-    private static RenderOptions Options(ulong seed) => RenderDefaults.CommandLine(96, 80, seed);
+    private static RenderOptions Options(ulong seed) => RenderDefaults.Options(96, 80, seed);
 
     private static void AssertSameRender(RenderResult local, RenderResult remote)
     {
@@ -89,7 +89,7 @@ public sealed class ClusterTileTests
         var (first, second) = (new EchoExecutor(), new EchoExecutor());
         using var cluster = new TestCluster(120, new WorkerExecutor(first), new WorkerExecutor(second));
         using var pool = ClusterBridges.Start(cluster.ConfigPath, 1);
-        var options = RenderDefaults.CommandLine(1024, 1024, 3);
+        var options = RenderDefaults.Options(1024, 1024, 3);
         Assert.True(TiledRender.Applies(options) && !TiledRender.Applies(options with { Height = 1023 }));
         var engine = new EngineSetup(EngineKind.Analytic);
 

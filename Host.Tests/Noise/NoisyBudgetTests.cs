@@ -24,7 +24,7 @@ public class NoisyBudgetTests
     /// </summary>
     private const double Tail = 1e-4;
 
-    private static readonly RenderOptions Options = RenderDefaults.CommandLine(48, 48, 7);
+    private static readonly RenderOptions Options = RenderDefaults.Options(48, 48, 7);
 
     // Each scene once, with its classical reference, whatever the rate: the reference has no noise.
     private static readonly Dictionary<string, (Scene Scene, RgbImage Reference)> Shipped = new[] { "qornell-16", "qornell-32", "depth-complexity-32" }

@@ -28,7 +28,7 @@ public sealed class BudgetSample
     {
         var kind = BroadRandomScene.Kinds[j % BroadRandomScene.Kinds.Length];
         var seed = (ulong)(1000 * p.Size + j);
-        return Render(BroadRandomScene.Build(kind, seed), RenderDefaults.CommandLine(p.Size, p.Size, seed));
+        return Render(BroadRandomScene.Build(kind, seed), RenderDefaults.Options(p.Size, p.Size, seed));
     }))];
 
     /// <summary>Renders <paramref name="scene"/> with <paramref name="options"/> and compares it with the classical render.</summary>
@@ -125,7 +125,7 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
         {
             var seed = (ulong)(1000 * size + j);
             return BudgetSample.Render(BroadRandomScene.Build(BroadRandomScene.Kinds[j % BroadRandomScene.Kinds.Length], seed),
-                RenderDefaults.CommandLine(size, size, seed) with { Budget = null });
+                RenderDefaults.Options(size, size, seed) with { Budget = null });
         }).ToArray();
         var wrong = renders.Sum(r => r.Wrong);
         var claimed = renders.Sum(r => AccuracyBudget.Target * r.Pixels);
@@ -149,7 +149,7 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
     {
         foreach (var seed in Enumerable.Range(1, 10).Select(s => (ulong)s))
         {
-            var render = Renderer.Render(RandomScene.Scattered(4096, seed), new EngineSetup(EngineKind.Analytic), RenderDefaults.CommandLine(64, 64));
+            var render = Renderer.Render(RandomScene.Scattered(4096, seed), new EngineSetup(EngineKind.Analytic), RenderDefaults.Options(64, 64));
             Assert.False(render.Budget.Exceeded, $"seed {seed}: over budget");
             Assert.True(render.Total.PerRayConservative <= 50, $"seed {seed}: Int/Ray {render.Total.PerRayConservative:0.00}");
         }
@@ -167,7 +167,7 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
     [Fact]
     public void QornellBoxAt128KeepsItsCost()
     {
-        var render = BudgetSample.Render(DefaultScene.Load(null), RenderDefaults.CommandLine(128, 128));
+        var render = BudgetSample.Render(DefaultScene.Load(null), RenderDefaults.Options(128, 128));
         Assert.True(render.IntPerRay <= 10, $"Int/Ray {render.IntPerRay:0.00}");
         Assert.True(render.Wrong <= 5, $"{render.Wrong} wrong pixels");
         Assert.True(render.Budget.ExpectedShare <= AccuracyBudget.Target, $"expected {render.Budget.ExpectedShare:P3}");
@@ -178,7 +178,7 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
     public void TinyImagesAreSettledClassically()
     {
         var scene = BroadRandomScene.Scattered(37, 3);
-        var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), RenderDefaults.CommandLine(4, 4));
+        var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), RenderDefaults.Options(4, 4));
         Assert.Equal(result.Total.Rays, result.Total.SettledRays);
         Assert.Equal(scene.Rectangles.Count, result.Total.PerRayConservative, 9);
         Assert.Equal(0, result.Budget.ExpectedWrongPixels);

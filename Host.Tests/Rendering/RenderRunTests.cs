@@ -75,7 +75,7 @@ public sealed class RenderRunTests : IDisposable
     public void SampledLightAddsTheConvergedReference()
     {
         var scene = Load("qornell-64-area.json");
-        var settings = new RenderRunSettings(scene, RenderDefaults.CommandLine(8, 8) with { AreaSamples = 2 }, new EngineSetup(EngineKind.Analytic),
+        var settings = new RenderRunSettings(scene, RenderDefaults.Options(8, 8) with { AreaSamples = 2 }, new EngineSetup(EngineKind.Analytic),
             _scratch.File("area.png"), WithReference: true, ReferenceSamples: 16);
         var run = RenderRun.Run(settings);
 

@@ -50,7 +50,7 @@ public class SceneRendererTests
 
     // `render`'s default pipeline takes more from the seed than the searches: the termination rule's draws
     // (seeded by the options, as `render --seed` sets them) and the lattice's planned confirmations.
-    private static RenderOptions Pipeline(ulong seed) => RenderDefaults.CommandLine(16, 16, seed);
+    private static RenderOptions Pipeline(ulong seed) => RenderDefaults.Options(16, 16, seed);
 
     // A render's cost pass by pass, without wall times.
     private static object[] Costs(RenderResult result) => result.Passes.Select(p => (object)(p.Name, p.Rays, p.Iterations, p.Cost, p.UpdatedPixels)).ToArray();

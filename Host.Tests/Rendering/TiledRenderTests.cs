@@ -66,7 +66,7 @@ public class TiledRenderTests
     [InlineData(EngineKind.Bvh)]
     public void CertainEnginesGiveTheUntiledImage(EngineKind kind)
     {
-        var options = RenderDefaults.CommandLine(96, 80, 3);
+        var options = RenderDefaults.Options(96, 80, 3);
         Assert.Equal(Whole(Qornell, kind, options).Image.Pixels.ToArray(), Tiled(Qornell, kind, options).Image.Pixels.ToArray());
     }
 
@@ -74,7 +74,7 @@ public class TiledRenderTests
     [Fact]
     public void AnalyticTilesAreReproducible()
     {
-        var options = RenderDefaults.CommandLine(96, 80, 5);
+        var options = RenderDefaults.Options(96, 80, 5);
         var (first, again) = (Tiled(Qornell, EngineKind.Analytic, options), Tiled(Qornell, EngineKind.Analytic, options));
         Assert.Equal(first.Image.Pixels.ToArray(), again.Image.Pixels.ToArray());
         Assert.Equal(first.Total.IntersectionsConservative, again.Total.IntersectionsConservative);
@@ -95,7 +95,7 @@ public class TiledRenderTests
         {
             var seed = (ulong)(9000 + j);
             var scene = BroadRandomScene.Build(BroadRandomScene.Kinds[j % BroadRandomScene.Kinds.Length], seed);
-            var options = RenderDefaults.CommandLine(128, 128, seed);
+            var options = RenderDefaults.Options(128, 128, seed);
             var render = Tiled(scene, EngineKind.Analytic, options);
             Assert.False(render.Budget.Exceeded, $"{scene.Name}: over budget");
             Assert.True(render.Budget.ExpectedShare <= AccuracyBudget.Target * (1 + 1e-9), $"{scene.Name}: expected {render.Budget.ExpectedShare:P3}");
@@ -109,7 +109,7 @@ public class TiledRenderTests
     [Fact]
     public void BorderRaysAreCountedInEveryTileThatTracesThem()
     {
-        var options = RenderDefaults.CommandLine(96, 80, 3);
+        var options = RenderDefaults.Options(96, 80, 3);
         var primary = Tiled(Qornell, EngineKind.Classical, options).Passes.Single(p => p.Name == "primary");
         var traced = ImageTiles.Of(96, 80, 32, 1 << options.LatticeLevels).Sum(t => t.Traced.Pixels);
         Assert.Equal(traced, primary.Rays);

@@ -18,7 +18,7 @@ public class GeneratedSceneTests
     [Fact]
     public void ShippedScenesAreTheGeneratorsOutput()
     {
-        var marker = GeneratedReport.JsonMarker(ScenesCommand.GenerateCommandLine);
+        var marker = GeneratedReport.JsonMarker(ScenesCommand.GenerateCommandText);
         foreach (var (file, builder) in StandardScenes.All())
             Assert.Equal(new GeneratedReport(null, marker).Compose(builder.ToJson()), File.ReadAllText(Path.Combine(RepositoryPaths.Scenes, file)));
     }

@@ -14,7 +14,7 @@ namespace QuantumRayTracing.Cli;
 public static class CommandReference
 {
     /// <summary>The command that writes the page.</summary>
-    public const string CommandLineText = "qrt docs commands -o docs/commands.md";
+    public const string CommandText = "qrt docs commands -o docs/commands.md";
 
     /// <summary>The width the help text is wrapped at, whatever the terminal's.</summary>
     public const int Width = 120;
@@ -34,7 +34,7 @@ public static class CommandReference
         var text = new StringBuilder();
         text.Append("# Commands\n\n");
         text.Append("Every command's `--help`, as the program prints it (`dotnet run --project Host -- COMMAND --help`).\n");
-        text.Append("Generated from the command-line parser by `").Append(CommandLineText).Append("`;\n");
+        text.Append("Generated from the command-line parser by `").Append(CommandText).Append("`;\n");
         text.Append("a test fails when an option changes and this page was not regenerated.\n");
         text.Append("What the commands measure and print is in the pages of [docs/](README.md).\n\n");
         var root = ReferenceRoot();

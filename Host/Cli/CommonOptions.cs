@@ -90,6 +90,22 @@ public static class CommonOptions
     public static Option<int> SquareSize(string description, int fallback, string name = "--size") =>
         new Option<int>(name) { Description = description, DefaultValueFactory = _ => fallback }.Between(1, MaxSquareSide);
 
+    /// <summary>`--area-samples`: shadow rays per surface point and area light, `render`'s default unless given.</summary>
+    public static Option<int> AreaSamples(string description) =>
+        new Option<int>("--area-samples") { Description = description, DefaultValueFactory = _ => RenderDefaults.AreaSamples }.Between(1, MaxSamples);
+
+    /// <summary>`--vpl`: virtual point lights per surface point (0: no indirect light), `render`'s default unless given.</summary>
+    public static Option<int> Vpl(string description) =>
+        new Option<int>("--vpl") { Description = description, DefaultValueFactory = _ => RenderDefaults.Vpl }.Between(0, MaxSamples);
+
+    /// <summary>`--max-qubits`: the widest circuit an engine may simulate; left out, each engine's own limit.</summary>
+    public static Option<int?> MaxQubits(string description) =>
+        new Option<int?>("--max-qubits") { Description = description, HelpName = "qubits" }.Between(1, 100_000);
+
+    /// <summary>The value of <paramref name="option"/> when the command line gives it; null when it takes its default.</summary>
+    public static T? Given<T>(ParseResult parse, Option<T> option) where T : struct =>
+        parse.GetResult(option) is { Implicit: false } ? parse.GetValue(option) : null;
+
     /// <summary>Several values, space-separated, each <paramref name="min"/>..<paramref name="max"/>.</summary>
     public static Option<int[]> List(string name, string description, int[] fallback, string each, int min, int max, string why = "") =>
         new Option<int[]>(name) { Description = description, DefaultValueFactory = _ => fallback, AllowMultipleArgumentsPerToken = true }

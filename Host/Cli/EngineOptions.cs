@@ -31,11 +31,7 @@ public sealed class EngineOptions
 
     public readonly Option<int> Workers = CommonOptions.Workers("Node bridge processes running Q# in parallel (fullstate engine). Default: the core count.");
 
-    public readonly Option<int?> MaxQubits = new Option<int?>("--max-qubits")
-    {
-        Description = $"Refuse, before simulating anything, a circuit wider than this many qubits. Default: fullstate, the widest dense state this machine holds ({SimulatorCapacity.DefaultMaxQubits(BridgePool.DefaultWorkers)} qubits here: about {SimulatorCapacity.BytesPerAmplitude:0} bytes per amplitude in a WebAssembly heap of at most 4 GiB per worker); gate, {GateEngine.DefaultMaxQubits} at peak with library auxiliaries (its states are sparse; `qrt estimate` shows the width).",
-        HelpName = "qubits",
-    }.Between(1, 100_000);
+    public readonly Option<int?> MaxQubits = CommonOptions.MaxQubits($"Refuse, before simulating anything, a circuit wider than this many qubits. Default: fullstate, the widest dense state this machine holds ({SimulatorCapacity.DefaultMaxQubits(BridgePool.DefaultWorkers)} qubits here: about {SimulatorCapacity.BytesPerAmplitude:0} bytes per amplitude in a WebAssembly heap of at most 4 GiB per worker); gate, {GateEngine.DefaultMaxQubits} at peak with library auxiliaries (its states are sparse; `qrt estimate` shows the width).");
 
     public readonly Option<string?> Noise = new Option<string?>("--noise")
     {

@@ -74,17 +74,9 @@ public sealed class RenderOptionSet
         DefaultValueFactory = _ => AccuracyBudget.Target,
     }.Must(b => b is >= 0 and < 1 ? null : $"--budget must lie in [0, 1), got {b}");
 
-    public readonly Option<int> AreaSamples = new Option<int>("--area-samples")
-    {
-        Description = "Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.",
-        DefaultValueFactory = _ => RenderDefaults.AreaSamples,
-    }.Between(1, CommonOptions.MaxSamples);
+    public readonly Option<int> AreaSamples = CommonOptions.AreaSamples("Shadow rays per surface point and area light (stratified, jittered; the paper: 32). Only scenes with area lights use it.");
 
-    public readonly Option<int> Vpl = new Option<int>("--vpl")
-    {
-        Description = "Virtual point lights per surface point for single-bounce indirect light: cosine-weighted rays traced to their closest hit, each lit by the scene's lights through shadow rays (0: no indirect light; the paper: 4).",
-        DefaultValueFactory = _ => RenderDefaults.Vpl,
-    }.Between(0, CommonOptions.MaxSamples);
+    public readonly Option<int> Vpl = CommonOptions.Vpl("Virtual point lights per surface point for single-bounce indirect light: cosine-weighted rays traced to their closest hit, each lit by the scene's lights through shadow rays (0: no indirect light; the paper: 4).");
 
     /// <summary>Every option of the set, in help order.</summary>
     public IReadOnlyList<Option> All => [Passes, ShadowPasses, TieBreak, Neighbours, ShadowNeighbours, Stop, Lattice, AgreedMiss, PlannedMiss, AreaSamples, Vpl];

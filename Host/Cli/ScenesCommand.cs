@@ -7,7 +7,7 @@ namespace QuantumRayTracing.Cli;
 /// <summary>`scenes`: regenerate the scene files in Scenes/ and check any scene file.</summary>
 public sealed class ScenesCommand : Command
 {
-    public const string GenerateCommandLine = "qrt scenes generate";
+    public const string GenerateCommandText = "qrt scenes generate";
 
     public ScenesCommand() : base("scenes", "Generate the standard scenes, or check scene files.")
     {
@@ -28,7 +28,7 @@ public sealed class ScenesCommand : Command
             Options.Add(_directory);
             SetAction(parse =>
             {
-                StandardScenes.Write(parse.GetValue(_directory)!.FullName, GenerateCommandLine,
+                StandardScenes.Write(parse.GetValue(_directory)!.FullName, GenerateCommandText,
                     (path, primitives) => Console.WriteLine($"wrote {Path.GetRelativePath(Environment.CurrentDirectory, path)} ({primitives} primitives)"));
                 return ExitCodes.Success;
             });

@@ -37,10 +37,19 @@ public static class RenderDefaults
     public const int LatticePointsPerSide = 8;
 
     /// <summary>The options `render` uses with no options given, at a size.</summary>
-    public static RenderOptions CommandLine(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
+    public static RenderOptions Options(int width, int height, ulong seed = 1) => new(width, height, Iterations, Seed: seed,
         Neighbours: Neighbours, ShadowNeighbours: ShadowNeighbours, Stop: Stop,
         LatticeLevels: LatticeLevelsFor(width, height), AgreedMiss: AgreedMiss, PlannedMiss: PlannedMiss, RequiredMisses: null,
         Budget: AccuracyBudget.Target);
+
+    /// <summary>TracePass rounds of the paper's plain pipeline (<see cref="RenderOptions.PaperPipeline"/>): the paper's table 3 reaches its floor of wrong pixels on the Qornell box at 4 to 5 passes.</summary>
+    public const int PaperIterations = 4;
+
+    /// <summary>
+    /// The share of rays with 1..<see cref="RenderOptions.ConfirmationMaxT"/> hits left the cheap confirmation where lattice neighbours agree
+    /// may miss, when a render with a lattice names none and has no budget to size it (`render` names <see cref="AgreedMiss"/>).
+    /// </summary>
+    public const double FixedConfirmationMiss = 0.025;
 
     /// <summary>Shadow rays per surface point and area light: the paper's 32 (sec. 7, fig. 13).</summary>
     public const int AreaSamples = 32;

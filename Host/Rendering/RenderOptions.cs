@@ -18,12 +18,13 @@ namespace QuantumRayTracing.Rendering;
 /// held by budget rounds in the primary, specular and shadow passes, with rays settled classically where that is cheaper
 /// (<see cref="AccuracyBudget"/>); null for none (the searches run as configured, nothing more). <see cref="SizeConfirmation"/>:
 /// under a budget, each lattice level's cheap confirmation is sized by the budget (<see cref="CheapConfirmation"/>) rather
-/// than the fixed <see cref="AgreedMiss"/> list.
+/// than the fixed <see cref="AgreedMiss"/> list. The parameters' defaults are the paper's plain pipeline; every default lives in
+/// <see cref="RenderDefaults"/>, beside what `render` runs.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
     int Height,
-    int Iterations = RenderOptions.DefaultIterations,
+    int Iterations = RenderDefaults.PaperIterations,
     int ShadowIterations = DirectPass.DefaultIterations,
     TieBreak TieBreak = TieBreak.Strict,
     bool Neighbours = false,
@@ -31,7 +32,7 @@ public sealed record RenderOptions(
     StopMode Stop = StopMode.Off,
     ulong Seed = 1,
     int LatticeLevels = 0,
-    double AgreedMiss = RenderOptions.DefaultAgreedMiss,
+    double AgreedMiss = RenderDefaults.FixedConfirmationMiss,
     double? PlannedMiss = null,
     int AreaSamples = RenderDefaults.AreaSamples,
     int Vpl = RenderDefaults.Vpl,
@@ -39,18 +40,12 @@ public sealed record RenderOptions(
     double? Budget = null,
     bool SizeConfirmation = true)
 {
-    /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
-    public const double DefaultAgreedMiss = 0.025;
-
     /// <summary>The t a confirmation is planned for: at most ~6 primitives lie on a Qornell ray, 9 in Depth Complexity's deepest quadrant.</summary>
     public const int ConfirmationMaxT = 8;
 
     /// <summary>
     /// The paper's plain pipeline at a size: #IT TracePass and 2 DirectPass rounds, strict ties, no gathering, no
-    /// termination, no lattice. <see cref="RenderDefaults.CommandLine"/> is what `render` runs.
+    /// termination, no lattice. <see cref="RenderDefaults.Options"/> is what `render` runs.
     /// </summary>
     public static RenderOptions PaperPipeline(int width, int height, ulong seed = 1) => new(width, height, Seed: seed);
-
-    /// <summary>The paper's table 3 reaches its floor of wrong pixels on the Qornell box at 4 to 5 passes.</summary>
-    public const int DefaultIterations = 4;
 }

@@ -20,7 +20,7 @@ public sealed class BenchLightsCommandTests : IDisposable
     {
         Assert.Equal(0, ConsoleCapture.Run(Run("lights.md")).Code);
         var text = File.ReadAllText(Path.Combine(_scratch.Path, "lights.md"));
-        Assert.StartsWith(GeneratedReport.MarkdownMarker(BenchLightsCommand.CommandLine), text);
+        Assert.StartsWith(GeneratedReport.MarkdownMarker(BenchLightsCommand.CommandText), text);
         Assert.Contains("paper: 21.8 Int/Ray against 64.0", text);
         Assert.Contains("paper: 22.4 Int/Ray against 32.0", text);
         var images = Directory.GetFiles(_scratch.Path, "*.png").Select(Path.GetFileName).Order().ToArray();

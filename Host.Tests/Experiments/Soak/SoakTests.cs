@@ -178,7 +178,7 @@ public sealed class SoakTests : IDisposable
 
         Assert.Equal(0, ConsoleCaptureRun(arguments));
         var text = File.ReadAllText(_scratch.File("soak.md"));
-        Assert.StartsWith(GeneratedReport.MarkdownMarker(BenchSoakCommand.CommandLine), text);
+        Assert.StartsWith(GeneratedReport.MarkdownMarker(BenchSoakCommand.CommandText), text);
         Assert.Contains("| qornell-8 | 8 | classical | 4x4 | 4 |", text);
         Assert.Contains("2 ok, 0 FAILED, 0 skipped", text);
 

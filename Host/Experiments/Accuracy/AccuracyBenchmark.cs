@@ -45,9 +45,9 @@ public static class AccuracyBenchmark
     /// </summary>
     public static IReadOnlyList<AccuracyConfiguration> Standard { get; } =
     [
-        new("default", (size, seed) => RenderDefaults.CommandLine(size, size, seed), new QSearchOptions()),
-        new("no budget", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { Budget = null }, new QSearchOptions()),
-        new("--lattice 0", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { LatticeLevels = 0 }, new QSearchOptions()),
+        new("default", (size, seed) => RenderDefaults.Options(size, size, seed), new QSearchOptions()),
+        new("no budget", (size, seed) => RenderDefaults.Options(size, size, seed) with { Budget = null }, new QSearchOptions()),
+        new("--lattice 0", (size, seed) => RenderDefaults.Options(size, size, seed) with { LatticeLevels = 0 }, new QSearchOptions()),
         new("paper, plain", (size, seed) => RenderOptions.PaperPipeline(size, size, seed), new QSearchOptions(Rule: MSetRule.Round)),
     ];
 
@@ -59,9 +59,9 @@ public static class AccuracyBenchmark
     public static IReadOnlyList<AccuracyConfiguration> Alternatives { get; } =
     [
         Standard[0],
-        new("2 required misses", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { RequiredMisses = 2 }, new QSearchOptions()),
-        new("--agreed-miss 0.4", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with { SizeConfirmation = false }, new QSearchOptions()),
-        new("one lattice level more", (size, seed) => RenderDefaults.CommandLine(size, size, seed) with
+        new("2 required misses", (size, seed) => RenderDefaults.Options(size, size, seed) with { RequiredMisses = 2 }, new QSearchOptions()),
+        new("--agreed-miss 0.4", (size, seed) => RenderDefaults.Options(size, size, seed) with { SizeConfirmation = false }, new QSearchOptions()),
+        new("one lattice level more", (size, seed) => RenderDefaults.Options(size, size, seed) with
         {
             LatticeLevels = Math.Min(RenderDefaults.LatticeLevels, RenderDefaults.LatticeLevelsFor(size, size) + 1),
         }, new QSearchOptions()),

@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench accuracy`: options → <see cref="AccuracySettings"/> → <see cref="AccuracyExperiment"/> (docs/accuracy.md).</summary>
 public sealed class BenchAccuracyCommand : Command
 {
-    public const string CommandLine = "qrt bench accuracy";
+    public const string CommandText = "qrt bench accuracy";
 
     private readonly Option<int[]> _sizes = CommonOptions.SquareSizes("Square image sizes (space-separated).", [4, 8, 16, 32, 64, 128]);
 
@@ -24,7 +24,7 @@ public sealed class BenchAccuracyCommand : Command
 
     private readonly Option<bool> _growthOnly = new("--growth-only") { Description = "Measure only the table of where the budget spends its queries (--growth)." };
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/accuracy.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/accuracy.md");
 
     public BenchAccuracyCommand() : base("accuracy", "Wrong pixels and Int/Ray of the default pipeline on random scenes by size, beside --lattice 0 and the paper's plain pipeline (analytic engine).")
     {

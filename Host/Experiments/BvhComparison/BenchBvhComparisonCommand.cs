@@ -7,7 +7,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench bvh-comparison`: options → <see cref="BvhComparisonSettings"/> → <see cref="BvhComparisonExperiment"/> (docs/bvh-comparison.md).</summary>
 public sealed class BenchBvhComparisonCommand : Command
 {
-    public const string CommandLine = "qrt bench bvh-comparison";
+    public const string CommandText = "qrt bench bvh-comparison";
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of every render.", 64);
 
@@ -17,7 +17,7 @@ public sealed class BenchBvhComparisonCommand : Command
     private readonly Option<int[]> _random = CommonOptions.List("--random", "Scattered random scene sizes N (space-separated).",
         BvhComparisonSettings.DefaultRandomSizes, "N", 1, 8192);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/bvh-comparison.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/bvh-comparison.md");
 
     public BenchBvhComparisonCommand() : base("bvh-comparison", "Int/Ray against N for brute force, a BVH (SAH build, counted once per frame) and quantum search, on the Qornell box, Depth Complexity and random scenes.")
     {

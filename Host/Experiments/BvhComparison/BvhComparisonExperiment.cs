@@ -52,7 +52,7 @@ public static class BvhComparisonExperiment
         var plain = RenderOptions.PaperPipeline(settings.Size, settings.Size, settings.Seed);
         var brute = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), plain).Total;
         var bvh = Renderer.Render(scene, new EngineSetup(EngineKind.Bvh), plain).Total;
-        var quantum = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), RenderDefaults.CommandLine(settings.Size, settings.Size, settings.Seed)).Total;
+        var quantum = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), RenderDefaults.Options(settings.Size, settings.Size, settings.Seed)).Total;
         var hierarchy = BoundingVolumeHierarchy.Build(new SceneGeometry(scene));
         var build = (double)hierarchy.BuildWork / bvh.Rays;
         return new Row(name, scene.Rectangles.Count, bvh.Rays, brute.PerRayConservative, bvh.PerRayConservative - build, build,

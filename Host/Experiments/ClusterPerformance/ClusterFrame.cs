@@ -18,11 +18,11 @@ public sealed record ClusterFrame(int Size, TimeSpan Local, TimeSpan OnCluster, 
 
     public static ClusterFrame Measure(Scene scene, int size, ulong seed, BridgePool cluster)
     {
-        var options = RenderDefaults.CommandLine(size, size, seed);
+        var options = RenderDefaults.Options(size, size, seed);
         var engine = new EngineSetup(EngineKind.Analytic, new QSearchOptions());
         var onCluster = engine with { Pool = cluster, ImagePartsOnCluster = true };
         // A tiled warm-up on each side first, so that neither time pays for compiling the renderer.
-        var warmUp = RenderDefaults.CommandLine(WarmUpSide, WarmUpSide, seed);
+        var warmUp = RenderDefaults.Options(WarmUpSide, WarmUpSide, seed);
         Renderer.Render(scene, engine, warmUp);
         Renderer.Render(scene, onCluster, warmUp);
         var load = MachineLoad.OneMinute();

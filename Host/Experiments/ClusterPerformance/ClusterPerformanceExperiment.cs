@@ -19,7 +19,7 @@ public static class ClusterPerformanceExperiment
     public static Report Run(ClusterPerformanceSettings settings, Action<string> progress)
     {
         var (scene, size, seed, cluster) = (settings.Scene, settings.Size, settings.Seed, settings.Cluster);
-        var options = RenderDefaults.CommandLine(size, size, seed);
+        var options = RenderDefaults.Options(size, size, seed);
         progress($"classical reference of {scene.Name} at {size}x{size}");
         var reference = RenderMeasurement.Reference(scene, options);
         using var local = new BridgePool(settings.Workers);

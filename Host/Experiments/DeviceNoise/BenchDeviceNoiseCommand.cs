@@ -7,11 +7,11 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench device-noise`: options → <see cref="DeviceNoiseSettings"/> → <see cref="DeviceNoiseExperiment"/> (docs/device-noise.md).</summary>
 public sealed class BenchDeviceNoiseCommand : Command
 {
-    public const string CommandLine = "qrt bench device-noise";
+    public const string CommandText = "qrt bench device-noise";
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of the renders.", 128);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/device-noise.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/device-noise.md");
 
     public BenchDeviceNoiseCommand() : base("device-noise", "A device noise model (one-qubit and multi-qubit gate rates, readout error) on the searches: the analytic model against the lookup circuit evolved exactly, and Qornell-64 rendered under device models on both oracles, with and without noise-aware passes.")
     {

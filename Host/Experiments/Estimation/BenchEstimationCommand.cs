@@ -7,7 +7,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench estimation`: options → <see cref="EstimationSettings"/> → <see cref="EstimationExperiment"/>, composed by <see cref="EstimationReport"/> (docs/estimation.md).</summary>
 public sealed class BenchEstimationCommand : Command
 {
-    public const string CommandLine = "qrt bench estimation";
+    public const string CommandText = "qrt bench estimation";
 
     private readonly Option<int> _trials = CommonOptions.Trials("Uniform random means per point.", 1000, max: 1_000_000);
 
@@ -19,7 +19,7 @@ public sealed class BenchEstimationCommand : Command
 
     private readonly Option<bool> _noNoise = new("--no-noise") { Description = "Skip the sweep under depolarizing decay per Grover operator." };
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/estimation.md; the CSV goes beside it with the extension .csv, the plots as estimation-<name>.png");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/estimation.md; the CSV goes beside it with the extension .csv, the plots as estimation-<name>.png");
 
     public BenchEstimationCommand() : base("estimation", "Every mean estimator (MC, QCoin, MLAE, IQAE, FAE, BAE, power-law AE, QSS, QSS with Bayesian phase estimation) by error against queries, on random means and the Qornell box's pixels, with and without noise.")
     {

@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`estimate frame-sweep`: options → <see cref="FrameSweepSettings"/> → <see cref="FrameSweepExperiment"/> (docs/frame-sweep.md, with a plot of runtime per frame against N).</summary>
 public sealed class EstimateFrameSweepCommand : Command
 {
-    public const string CommandLine = "qrt estimate frame-sweep";
+    public const string CommandText = "qrt estimate frame-sweep";
 
     private readonly Option<int[]> _sizes = new("--sizes")
     {
@@ -61,7 +61,7 @@ public sealed class EstimateFrameSweepCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandLine);
+        var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandText);
         writer.EnsureWritable(FrameSweepExperiment.Pictures);
         var versions = ToolVersions.Detect();
         var machine = MachineDescription.Describe(versions.QsharpLang, versions.Node);

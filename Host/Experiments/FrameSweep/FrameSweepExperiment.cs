@@ -30,7 +30,7 @@ public static class FrameSweepExperiment
         {
             if (frames.TryGetValue((key, size), out var frame)) return frame;
             progress($"{scene.Name}, {size}x{size}: rendering and pricing");
-            var frameSettings = new FrameSettings(scene, RenderDefaults.CommandLine(size, size, settings.Seed) with { Budget = null }, new QSearchOptions(), settings.Construction, settings.Models, settings.ErrorBudget, settings.Qpus);
+            var frameSettings = new FrameSettings(scene, RenderDefaults.Options(size, size, settings.Seed) with { Budget = null }, new QSearchOptions(), settings.Construction, settings.Models, settings.ErrorBudget, settings.Qpus);
             frame = frames[(key, size)] = FrameEstimate.Run(frameSettings, pool, new TenthsProgress($"{scene.Name}, {size}x{size}", progress));
             progress($"{scene.Name}, {size}x{size}: {frame.Recording.Runs.Count} runs, {frame.EstimatorJobs} estimator jobs, render {frame.WallTimes.Render.TotalSeconds:0.0} s, pricing {frame.WallTimes.Pricing.TotalSeconds:0.0} s");
             return frame;

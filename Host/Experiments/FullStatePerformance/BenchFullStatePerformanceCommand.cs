@@ -8,9 +8,9 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench fullstate-performance`: options → <see cref="FullStatePerformanceSettings"/> → <see cref="FullStatePerformanceExperiment"/> (docs/fullstate-performance.md).</summary>
 public sealed class BenchFullStatePerformanceCommand : Command
 {
-    public const string CommandLine = "qrt bench fullstate-performance";
+    public const string CommandText = "qrt bench fullstate-performance";
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/fullstate-performance.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/fullstate-performance.md");
 
     private readonly Option<string[]> _sceneNames = new("--scene-names")
     {

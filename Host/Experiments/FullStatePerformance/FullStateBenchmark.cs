@@ -43,7 +43,7 @@ public static class FullStateBenchmark
     /// The `render` command's default pipeline at <paramref name="size"/>², seed <paramref name="seed"/>, without the accuracy
     /// budget: its classical settle would take the small images this measures off the simulator altogether.
     /// </summary>
-    public static RenderOptions DefaultPipeline(int size, ulong seed) => RenderDefaults.CommandLine(size, size, seed) with { Budget = null };
+    public static RenderOptions DefaultPipeline(int size, ulong seed) => RenderDefaults.Options(size, size, seed) with { Budget = null };
 
     /// <summary>
     /// The fixed cost of one call on this bridge: the median of <paramref name="repeats"/> calls that simulate one

@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench grover-performance`: options → <see cref="GroverPerformanceSettings"/> → <see cref="GroverPerformanceExperiment"/> (docs/grover-performance.md).</summary>
 public sealed class BenchGroverPerformanceCommand : Command
 {
-    public const string CommandLine = "qrt bench grover-performance";
+    public const string CommandText = "qrt bench grover-performance";
 
     private readonly Option<int[]> _sizes = CommonOptions.List("--sizes", "Search sizes N (space-separated).", [8, 64, 512], "N", 1, 4096);
 
@@ -19,7 +19,7 @@ public sealed class BenchGroverPerformanceCommand : Command
         AllowMultipleArgumentsPerToken = true,
     };
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/grover-performance.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/grover-performance.md");
 
     public BenchGroverPerformanceCommand() : base("grover-performance", "Cost per Grover run: fullstate (1 worker and all workers) and analytic, for each N and batch size.")
     {

@@ -7,7 +7,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench lights`: options → <see cref="LightsSettings"/> → <see cref="LightsExperiment"/> (docs/lights.md and its images).</summary>
 public sealed class BenchLightsCommand : Command
 {
-    public const string CommandLine = "qrt bench lights";
+    public const string CommandText = "qrt bench lights";
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of the measured renders (the paper: 128).", 128);
 
@@ -15,7 +15,7 @@ public sealed class BenchLightsCommand : Command
 
     private readonly Option<int> _referenceSamples = CommonOptions.ReferenceSamples("Area samples and VPLs per point of the converged classical reference (the paper: 512).", min: 1);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/lights.md; the images go beside it as <name>-<case>-<render>.png, and only with it");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/lights.md; the images go beside it as <name>-<case>-<render>.png, and only with it");
 
     public BenchLightsCommand() : base("lights", "Area light and VPL indirect light (the paper's sec. 7): Int/Ray and error of the quantum and classical pipelines, with images beside their classical references.")
     {

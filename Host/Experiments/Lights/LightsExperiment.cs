@@ -112,7 +112,7 @@ public static class LightsExperiment
     }
 
     // Our default pipeline: what `render` uses with no options.
-    private static RenderOptions Default(RenderOptions options) => RenderDefaults.CommandLine(options.Width, options.Height, options.Seed) with
+    private static RenderOptions Default(RenderOptions options) => RenderDefaults.Options(options.Width, options.Height, options.Seed) with
     {
         AreaSamples = options.AreaSamples, Vpl = options.Vpl,
     };

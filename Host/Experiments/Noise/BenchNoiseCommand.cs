@@ -11,9 +11,9 @@ namespace QuantumRayTracing.Experiments;
 /// </summary>
 public sealed class BenchNoiseCommand : Command
 {
-    public const string CommandLine = "qrt bench noise";
+    public const string CommandText = "qrt bench noise";
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/noise.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/noise.md");
 
     private readonly Option<int> _shots = new Option<int>("--shots")
     {

@@ -104,7 +104,7 @@ public static class NoisyRenderBenchmark
     public static RenderOptions RandomizedOptions(int size, int passes) => Defaults(size) with { Stop = StopMode.Off, Iterations = passes, ShadowIterations = passes, Budget = null };
 
     /// <summary>The pipeline `render` runs by default, at <paramref name="size"/> square.</summary>
-    public static RenderOptions Defaults(int size) => RenderDefaults.CommandLine(size, size);
+    public static RenderOptions Defaults(int size) => RenderDefaults.Options(size, size);
 
     /// <summary>
     /// A small render on the noisy gate engine (the gate-level oracle simulated) beside the analytic engine under the gate-level

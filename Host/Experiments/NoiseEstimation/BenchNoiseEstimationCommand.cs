@@ -11,7 +11,7 @@ namespace QuantumRayTracing.Experiments;
 /// </summary>
 public sealed class BenchNoiseEstimationCommand : Command
 {
-    public const string CommandLine = "qrt bench noise-estimation";
+    public const string CommandText = "qrt bench noise-estimation";
 
     private readonly Option<int> _trials = CommonOptions.Trials("Estimates per point: repeated runs at f = 0.5 (fig. 10), random pixels (QSS against QCoin, MLAE and the noisy mean coin) or random means (the noise-aware comparison).", 1000, max: 100_000);
 
@@ -27,7 +27,7 @@ public sealed class BenchNoiseEstimationCommand : Command
         DefaultValueFactory = _ => 64,
     }.Between(1, 256);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/noise-estimation.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/noise-estimation.md");
 
     public BenchNoiseEstimationCommand() : base("noise-estimation", "Mean estimation under noise: the QCoin paper's fig. 10 (k against noise) and fig. 1 right (QCoin image under noise), QSS against QCoin, MLAE and the noisy mean coin against the per-gate error, and the noise-aware MLAE; -o docs/noise-estimation.md.")
     {

@@ -7,11 +7,11 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench optimised-tracing`: options → <see cref="OptimisedTracingSettings"/> → <see cref="OptimisedTracingExperiment"/> (docs/optimised-tracing.md).</summary>
 public sealed class BenchOptimisedTracingCommand : Command
 {
-    public const string CommandLine = "qrt bench optimised-tracing";
+    public const string CommandText = "qrt bench optimised-tracing";
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size (the paper: 128).", 128);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/optimised-tracing.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/optimised-tracing.md");
 
     public BenchOptimisedTracingCommand() : base("optimised-tracing", "The paper's tables 5-8 (neighbour gathering, false-negative estimates, termination, randomized classical) and our default configuration, on the analytic engine.")
     {

@@ -27,7 +27,7 @@ public static class OptimisedTracingExperiment
         var plain = RenderOptions.PaperPipeline(size, size, seed);
         // The paper's optimised renderer: NeighOpt on primary and specular rays, termination with its p̄, up to 8 rounds.
         var paperOptimised = plain with { Iterations = 8, Neighbours = true, Stop = StopMode.Paper };
-        var best = RenderDefaults.CommandLine(size, size, seed);
+        var best = RenderDefaults.Options(size, size, seed);
         RenderMeasurement Measure(Scene scene, EngineKind kind, RenderOptions options, QSearchOptions qsearch) =>
             RenderMeasurement.Run(scene, new EngineSetup(kind, qsearch, settings.Workers), options, RenderMeasurement.Reference(scene, options));
 

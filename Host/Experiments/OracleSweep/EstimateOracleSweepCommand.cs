@@ -9,7 +9,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`estimate oracle-sweep`: options → <see cref="OracleSweepSettings"/> → <see cref="OracleSweepExperiment"/> (docs/oracle-sweep.md).</summary>
 public sealed class EstimateOracleSweepCommand : Command
 {
-    public const string CommandLine = "qrt estimate oracle-sweep";
+    public const string CommandText = "qrt estimate oracle-sweep";
 
     private readonly Option<int[]> _primitives = CommonOptions.List("--primitives", $"Primitive counts N of the sweep over N, on a {EstimateSweep.DefaultCoordinateBits}-bit grid (space-separated).",
         EstimateSweep.Primitives.ToArray(), "N", 1, 4096);
@@ -34,7 +34,7 @@ public sealed class EstimateOracleSweepCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandLine);
+        var writer = new ReportWriter(parse.GetValue(_output)?.FullName, CommandText);
         writer.EnsureWritable();
         var settings = new OracleSweepSettings(parse.GetValue(_primitives)!, parse.GetValue(_bits)!, parse.GetValue(_ablation)!,
             _options.QubitModels(parse), WithCircuits: !parse.GetValue(_options.NoCircuit), parse.GetValue(_options.Workers));

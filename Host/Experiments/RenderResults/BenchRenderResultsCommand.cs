@@ -7,13 +7,13 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench render-results`: options → <see cref="RenderResultsSettings"/> → <see cref="RenderResultsExperiment"/> (docs/render-results.md).</summary>
 public sealed class BenchRenderResultsCommand : Command
 {
-    public const string CommandLine = "qrt bench render-results";
+    public const string CommandText = "qrt bench render-results";
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size of the table 2 and 3 renders (the paper: 128).", 128);
 
     private readonly Option<int> _engineSize = CommonOptions.SquareSize("Square image size of the engine comparison (the full-state simulator is slow).", 32, "--engine-size");
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/render-results.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/render-results.md");
 
     public BenchRenderResultsCommand() : base("render-results", "Renders for the paper's tables 2 and 3 (Int/Ray, NRMSE, #Dpix), an engine comparison (wall time per ray) and the gate-level oracle against the lookup form.")
     {

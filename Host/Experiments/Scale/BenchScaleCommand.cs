@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench scale`: options → <see cref="ScaleSettings"/> → <see cref="ScaleExperiment"/> (docs/scale.md).</summary>
 public sealed class BenchScaleCommand : Command
 {
-    public const string CommandLine = "qrt bench scale";
+    public const string CommandText = "qrt bench scale";
 
     private readonly Option<int[]> _sizes = CommonOptions.List("--sizes", "Square image sizes (space-separated); from 1024 on a render is forecast and may be refused.",
         ScaleSettings.DefaultSizes, "size", 1, Scenes.SceneLoader.MaxImageSide);
@@ -16,7 +16,7 @@ public sealed class BenchScaleCommand : Command
     private readonly Option<EngineKind[]> _engines = CommonOptions.Engines("Engines measured (space- or comma-separated).",
         ScaleSettings.DefaultEngines, [EngineKind.Classical, EngineKind.Bvh, EngineKind.Analytic, EngineKind.Randomized]);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/scale.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/scale.md");
 
     public BenchScaleCommand() : base("scale", "Wall time and peak memory of render against the image size (128x128 to 8192x8192), per engine, each render in a process of its own (Linux).")
     {

@@ -8,12 +8,12 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench simulator-capacity`: options → <see cref="SimulatorCapacitySettings"/> → <see cref="SimulatorCapacityExperiment"/> (docs/simulator-capacity.md).</summary>
 public sealed class BenchSimulatorCapacityCommand : Command
 {
-    public const string CommandLine = "qrt bench simulator-capacity";
+    public const string CommandText = "qrt bench simulator-capacity";
 
     private readonly Option<int[]> _qubits = CommonOptions.List("--qubits", "Widths of the dense states measured (space-separated, 1..25; 25 takes about 15 s and 2.5 GB).",
         [16, 18, 20, 22, 24], "width", 1, 25, " (26 exhausts the simulator's 4 GiB WebAssembly heap)");
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/simulator-capacity.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/simulator-capacity.md");
 
     public BenchSimulatorCapacityCommand() : base("simulator-capacity", "Memory of the QDK full-state simulator per amplitude of a dense state, measured per width in a fresh bridge (Linux).")
     {

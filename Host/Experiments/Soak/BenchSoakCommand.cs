@@ -17,7 +17,7 @@ namespace QuantumRayTracing.Experiments;
 /// </summary>
 public sealed class BenchSoakCommand : Command
 {
-    public const string CommandLine = "qrt bench soak";
+    public const string CommandText = "qrt bench soak";
 
     // Not BenchReportOptions' scene directory, where experiments look scenes up by name: every scene in it is soaked.
     private readonly Option<DirectoryInfo?> _scenesToSoak = new("--scenes")
@@ -41,17 +41,17 @@ public sealed class BenchSoakCommand : Command
     };
 
     // Sizes and samples left out take the full or the short form's.
-    private readonly Option<int?> _size = new Option<int?>("--size") { Description = $"Square image size for every engine but gate. Default: {SoakSettings.DefaultSize} (short form: 4)." }
-        .Between(1, CommonOptions.MaxSquareSide);
+    private readonly Option<int> _size = CommonOptions.SquareSize("Square image size for every engine but gate (short form: 4).", SoakSettings.DefaultSize);
 
-    private readonly Option<int?> _gateSize = new Option<int?>("--gate-size") { Description = $"Square image size for the gate engine, which simulates its whole oracle. Default: {SoakSettings.DefaultGateSize} (short form: 2)." }
-        .Between(1, 64);
+    private readonly Option<int> _gateSize = new Option<int>("--gate-size")
+    {
+        Description = "Square image size for the gate engine, which simulates its whole oracle (short form: 2).",
+        DefaultValueFactory = _ => SoakSettings.DefaultGateSize,
+    }.Between(1, 64);
 
-    private readonly Option<int?> _areaSamples = new Option<int?>("--area-samples") { Description = $"Shadow rays per point and area light. Default: {RenderDefaults.AreaSamples}, as `render` (short form: 2)." }
-        .Between(1, CommonOptions.MaxSamples);
+    private readonly Option<int> _areaSamples = CommonOptions.AreaSamples("Shadow rays per point and area light, as `render` (short form: 2).");
 
-    private readonly Option<int> _vpl = new Option<int>("--vpl") { Description = "VPLs per surface point (0: no indirect light, as `render`).", DefaultValueFactory = _ => RenderDefaults.Vpl }
-        .Between(0, CommonOptions.MaxSamples);
+    private readonly Option<int> _vpl = CommonOptions.Vpl("VPLs per surface point (0: no indirect light, as `render`).");
 
     private readonly Option<double> _gateBudget = new("--gate-budget")
     {
@@ -59,13 +59,9 @@ public sealed class BenchSoakCommand : Command
         DefaultValueFactory = _ => SoakSettings.DefaultGateBudget.TotalSeconds,
     };
 
-    private readonly Option<int> _maxQubits = new Option<int>("--max-qubits")
-    {
-        Description = "Gate engine: a search needing more qubits at peak is refused before simulating; the soak reports the scene as skipped.",
-        DefaultValueFactory = _ => GateEngine.DefaultMaxQubits,
-    }.Between(1, 100_000);
+    private readonly Option<int?> _maxQubits = CommonOptions.MaxQubits($"Gate engine: a search needing more qubits at peak is refused before simulating; the soak reports the scene as skipped. Default: {GateEngine.DefaultMaxQubits}.");
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/soak.md");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/soak.md");
 
     public BenchSoakCommand() : base("soak", "Render every scene on every engine with two seeds; check each render (no exception, finite pixels, error against classical, same seed same bytes, another seed another render) and report failures.")
     {
@@ -101,12 +97,12 @@ public sealed class BenchSoakCommand : Command
         {
             Engines = parse.GetValue(_engines)!,
             Seeds = parse.GetValue(_seeds)!,
-            Size = parse.GetValue(_size) ?? settings.Size,
-            GateSize = parse.GetValue(_gateSize) ?? settings.GateSize,
-            AreaSamples = parse.GetValue(_areaSamples) ?? settings.AreaSamples,
+            Size = CommonOptions.Given(parse, _size) ?? settings.Size,
+            GateSize = CommonOptions.Given(parse, _gateSize) ?? settings.GateSize,
+            AreaSamples = CommonOptions.Given(parse, _areaSamples) ?? settings.AreaSamples,
             Vpl = parse.GetValue(_vpl),
             GateBudget = TimeSpan.FromSeconds(parse.GetValue(_gateBudget)),
-            MaxQubits = parse.GetValue(_maxQubits),
+            MaxQubits = parse.GetValue(_maxQubits) ?? GateEngine.DefaultMaxQubits,
             Pool = cluster,
         };
         AnsiConsole.WriteLine($"soak: {files.Length} scene files in {directory}, engines {string.Join(", ", settings.Engines.Select(EngineFactory.Name))}, seeds {string.Join(" ", settings.Seeds)}, {settings.Size}x{settings.Size} (gate {settings.GateSize}x{settings.GateSize})");

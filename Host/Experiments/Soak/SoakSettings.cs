@@ -73,7 +73,7 @@ public sealed record SoakSettings(
     public int SizeFor(EngineKind kind) => kind.SimulatesOracleGates ? GateSize : Size;
 
     /// <summary>`render`'s default pipeline without the accuracy budget at <paramref name="size"/> with <paramref name="seed"/>, as `render --seed --budget 0` sets it.</summary>
-    public RenderOptions Options(int size, ulong seed) => RenderDefaults.CommandLine(size, size, seed) with
+    public RenderOptions Options(int size, ulong seed) => RenderDefaults.Options(size, size, seed) with
     {
         Iterations = Iterations, ShadowIterations = ShadowIterations, AreaSamples = AreaSamples, Vpl = Vpl, Budget = null,
     };

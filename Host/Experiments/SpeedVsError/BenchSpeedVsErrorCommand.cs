@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench speed-vs-error`: options → <see cref="SpeedVsErrorSettings"/> → <see cref="SpeedVsErrorExperiment"/> (docs/speed-vs-error.md and its plots).</summary>
 public sealed class BenchSpeedVsErrorCommand : Command
 {
-    public const string CommandLine = "qrt bench speed-vs-error";
+    public const string CommandText = "qrt bench speed-vs-error";
 
     private readonly Option<FileInfo> _scene = new("--scene")
     {
@@ -18,7 +18,7 @@ public sealed class BenchSpeedVsErrorCommand : Command
 
     private readonly Option<int> _size = CommonOptions.SquareSize("Square image size (the full-state engine renders every configuration too).", 32);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/speed-vs-error.md; the plots go beside it as <name>-intray.png and <name>-walltime.png");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/speed-vs-error.md; the plots go beside it as <name>-intray.png and <name>-walltime.png");
 
     public BenchSpeedVsErrorCommand() : base("speed-vs-error", "Speed against error for every configuration of every engine (classical, randomized, analytic, fullstate), Pareto fronts marked, with PNG plots.")
     {

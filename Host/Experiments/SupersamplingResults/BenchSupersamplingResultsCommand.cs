@@ -7,11 +7,11 @@ namespace QuantumRayTracing.Experiments;
 /// <summary>`bench supersampling-results`: options → <see cref="SupersamplingResultsSettings"/> → <see cref="SupersamplingResultsExperiment"/> (docs/supersampling-results.md).</summary>
 public sealed class BenchSupersamplingResultsCommand : Command
 {
-    public const string CommandLine = "qrt bench supersampling-results";
+    public const string CommandText = "qrt bench supersampling-results";
 
     private readonly Option<int> _trials = CommonOptions.Trials("Uniform random means per point.", 3000, max: 1_000_000);
 
-    private readonly BenchReportOptions _report = new(CommandLine, "docs/supersampling-results.md; the CSV goes beside it with the extension .csv, the plots as <name>-error-vs-queries.png and <name>-qcoin-k.png");
+    private readonly BenchReportOptions _report = new(CommandText, "docs/supersampling-results.md; the CSV goes beside it with the extension .csv, the plots as <name>-error-vs-queries.png and <name>-qcoin-k.png");
 
     public BenchSupersamplingResultsCommand() : base("supersampling-results", "Mean estimation error against queries (analytic engine) and QSS lookup-table accuracy.")
     {
