@@ -18,7 +18,8 @@ namespace QuantumRayTracing.Rendering;
 /// held by budget rounds in the primary, specular and shadow passes, with rays settled classically where that is cheaper
 /// (<see cref="AccuracyBudget"/>); null for none (the searches run as configured, nothing more). <see cref="SizeConfirmation"/>:
 /// under a budget, each lattice level's cheap confirmation is sized by the budget (<see cref="CheapConfirmation"/>) rather
-/// than the fixed <see cref="AgreedMiss"/> list.
+/// than the fixed <see cref="AgreedMiss"/> list. <see cref="Light"/>: the area light estimated as a mean over each point's sample set
+/// (<see cref="LightEstimation"/>); null traces every sample's shadow ray.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -37,7 +38,8 @@ public sealed record RenderOptions(
     int Vpl = RenderDefaults.Vpl,
     int? RequiredMisses = 1,
     double? Budget = null,
-    bool SizeConfirmation = true)
+    bool SizeConfirmation = true,
+    LightEstimation? Light = null)
 {
     /// <summary>The cheap confirmation where lattice neighbours agree misses at most this share of rays with 1..<see cref="ConfirmationMaxT"/> hits left.</summary>
     public const double DefaultAgreedMiss = 0.025;
