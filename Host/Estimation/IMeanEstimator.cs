@@ -1,7 +1,7 @@
 namespace QuantumRayTracing.Estimation;
 
 /// <summary>
-/// Estimates the mean of each item's subpixel values F(i) ∈ [0, 1] with a fixed number of queries per item,
+/// Estimates the mean of each item's values F(i) ∈ [0, 1] (a pixel's subpixels, a shading point's light samples) with a fixed number of queries per item,
 /// advancing every item in lock step so each round is one engine batch.
 /// </summary>
 public interface IMeanEstimator
