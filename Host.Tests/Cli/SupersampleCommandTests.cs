@@ -2,6 +2,7 @@ using QuantumRayTracing.Cli;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Output;
 using static QuantumRayTracing.Tests.Intersection.TestScenes;

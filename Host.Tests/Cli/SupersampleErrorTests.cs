@@ -2,7 +2,7 @@ using MathNet.Numerics.Distributions;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Tests.Output;
 using QuantumRayTracing.Tests.Statistics;
-using QuantumRayTracing.Tests.Supersampling;
+using QuantumRayTracing.Tests.Estimation;
 
 namespace QuantumRayTracing.Tests.Cli;
 
@@ -120,7 +120,7 @@ public sealed class SupersampleErrorTests : IDisposable
     {
         const int t = 4;
         // Each readout's hit count: its row's most likely one, the first on a tie (thesis listing 3.1).
-        var columns = Enumerable.Range(0, Subpixels + 1).Select(h => FullStateSupersamplingTests.ExactReadout((double)h / Subpixels, t)).ToArray();
+        var columns = Enumerable.Range(0, Subpixels + 1).Select(h => FullStateCoinEngineTests.ExactReadout((double)h / Subpixels, t)).ToArray();
         var hitsOf = Enumerable.Range(0, 1 << t).Select(y => Enumerable.Range(0, Subpixels + 1).MaxBy(h => (columns[h][y], -h))).ToArray();
         AssertWithinExactError(ObservedErrors("qss"), item =>
         {

@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Tests.Export;

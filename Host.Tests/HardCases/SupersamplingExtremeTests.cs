@@ -1,4 +1,5 @@
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Engines;
 using QuantumRayTracing.Tests.Statistics;
@@ -58,9 +59,9 @@ public class SupersamplingExtremeTests(FullStateFixture fixture)
 
     private static (IMeanEstimator, int) Mlae(MaximumLikelihoodEstimator mlae) => (mlae, mlae.Iterations.Max());
 
-    private ISupersamplingEngine Engine(string name) => name == HardCaseEngines.Analytic
-        ? new AnalyticSupersamplingEngine(new SeededRandom(31))
-        : new FullStateSupersamplingEngine(fixture.Engine.Pool, ownsPool: false);
+    private ICoinEngine Engine(string name) => name == HardCaseEngines.Analytic
+        ? new AnalyticCoinEngine(new SeededRandom(31))
+        : new FullStateCoinEngine(fixture.Engine.Pool, ownsPool: false);
 
     [Theory]
     [MemberData(nameof(Data))]

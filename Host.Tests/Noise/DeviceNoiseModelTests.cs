@@ -1,5 +1,6 @@
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Statistics;
 
@@ -75,12 +76,12 @@ public class DeviceNoiseModelTests
         var device = new DeviceNoiseModel(1e-2, 5e-2, 0.02, 0.1);
         CoinRequest[] coins = [new(CoinKind.Direct, [0.6], 3, 500), new(CoinKind.Direct, [0.2], 0, 500)];
         QssRequest[] qss = [new([0.7], 2, 50, CoinKind.Direct)];
-        IReadOnlyList<int> Heads() => new AnalyticSupersamplingEngine(new SeededRandom(9), device: device).FlipCoins(coins);
+        IReadOnlyList<int> Heads() => new AnalyticCoinEngine(new SeededRandom(9), device: device).FlipCoins(coins);
         Assert.Equal(Heads(), Heads());
-        var engine = new AnalyticSupersamplingEngine(new SeededRandom(9), device: device);
-        Assert.Equal(new AnalyticSupersamplingEngine(new SeededRandom(9), device: device).ReadCounters(qss)[0], engine.ReadCounters(qss)[0]);
+        var engine = new AnalyticCoinEngine(new SeededRandom(9), device: device);
+        Assert.Equal(new AnalyticCoinEngine(new SeededRandom(9), device: device).ReadCounters(qss)[0], engine.ReadCounters(qss)[0]);
         var error = Assert.Throws<ArgumentException>(() => engine.FlipCoins([new CoinRequest(CoinKind.Mean, [0.5, 0.5], 1, 10)]));
-        Assert.Equal(AnalyticSupersamplingEngine.DeviceNeedsDirectCoins, error.Message);
-        Assert.Throws<ArgumentException>(() => new AnalyticSupersamplingEngine(new SeededRandom(1), NoiseModel.Depolarizing(1e-3), device: device));
+        Assert.Equal(AnalyticCoinEngine.DeviceNeedsDirectCoins, error.Message);
+        Assert.Throws<ArgumentException>(() => new AnalyticCoinEngine(new SeededRandom(1), NoiseModel.Depolarizing(1e-3), device: device));
     }
 }

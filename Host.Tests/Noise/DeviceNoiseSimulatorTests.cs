@@ -2,6 +2,7 @@ using System.Globalization;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Engines;
 using QuantumRayTracing.Tests.Statistics;
@@ -54,7 +55,7 @@ public class DeviceNoiseSimulatorTests(FullStateFixture fixture)
     public void NoiselessDirectQssReadsAsTheExactQssDistribution()
     {
         // f = 0.3, t = 3, 3000 runs: Pearson's chi-square against the Fejér-kernel distribution at false-failure 1e-8.
-        using var engine = new FullStateSupersamplingEngine(Pool, ownsPool: false);
+        using var engine = new FullStateCoinEngine(Pool, ownsPool: false);
         var readouts = engine.ReadCounters([new QssRequest([Math.Sqrt(0.3)], 3, 3000, CoinKind.Direct)])[0];
         var counts = new int[8];
         foreach (var y in readouts) counts[y]++;
@@ -68,7 +69,7 @@ public class DeviceNoiseSimulatorTests(FullStateFixture fixture)
         // 1e-8 (3 checks). At f = ½ and m = 0 only the readout moves the head from ½ (to 0.02 + 0.86/2 = 0.45): the model
         // without readout predicts ½, 14 standard errors off, and must fall outside the interval.
         var device = new DeviceNoiseModel(1e-2, 0, 0.02, 0.12);
-        using var engine = new FullStateSupersamplingEngine(Pool, ownsPool: false, device: device, readoutRandom: new SeededRandom(3));
+        using var engine = new FullStateCoinEngine(Pool, ownsPool: false, device: device, readoutRandom: new SeededRandom(3));
         (double Amplitude, int Iterations)[] cases = [(Math.Sqrt(0.5), 0), (Math.Sqrt(0.5), 4), (Math.Sqrt(0.1), 8)];
         const int flips = 20_000;
         var heads = engine.FlipCoins(cases.Select(c => new CoinRequest(CoinKind.Direct, [c.Amplitude], c.Iterations, flips)).ToArray());
@@ -89,7 +90,7 @@ public class DeviceNoiseSimulatorTests(FullStateFixture fixture)
         const double delta = 0.03, z = 4.8916;
         var device = new DeviceNoiseModel(1e-3, 5e-2, 0.02, 0.08);
         var noTwoQubit = new DeviceNoiseModel(1e-3, 0, 0.02, 0.08);
-        using var engine = new FullStateSupersamplingEngine(Pool, ownsPool: false, device: device, readoutRandom: new SeededRandom(4));
+        using var engine = new FullStateCoinEngine(Pool, ownsPool: false, device: device, readoutRandom: new SeededRandom(4));
         double[] means = [0.5, 0.1];
         const int shots = 3000;
         var readouts = engine.ReadCounters(means.Select(f => new QssRequest([Math.Sqrt(f)], 2, shots, CoinKind.Direct)).ToArray());

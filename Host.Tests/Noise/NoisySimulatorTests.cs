@@ -4,6 +4,7 @@ using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Engines;
 using QuantumRayTracing.Tests.Statistics;
@@ -174,10 +175,10 @@ public class NoisySimulatorTests(FullStateFixture fixture)
     {
         // A coin whose every amplitude is 0 never shows heads on an ideal machine; under p = 0.1 per gate,
         // and with qubit loss, it does. 200 flips: the chance of no heads at all is negligible.
-        using var noisy = new FullStateSupersamplingEngine(Pool, ownsPool: false, noise: new NoiseModel(0.05, 0, 0.05, 0.01));
+        using var noisy = new FullStateCoinEngine(Pool, ownsPool: false, noise: new NoiseModel(0.05, 0, 0.05, 0.01));
         var heads = noisy.FlipCoins([new CoinRequest(CoinKind.Mean, [0.0, 0.0, 0.0, 0.0], 1, 200)]);
         Assert.InRange(heads[0], 1, 200);
-        using var ideal = new FullStateSupersamplingEngine(Pool, ownsPool: false);
+        using var ideal = new FullStateCoinEngine(Pool, ownsPool: false);
         Assert.Equal(0, ideal.FlipCoins([new CoinRequest(CoinKind.Mean, [0.0, 0.0, 0.0, 0.0], 1, 200)])[0]);
     }
 }

@@ -2,6 +2,7 @@ using System.Globalization;
 using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Noise;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Engines;
 
@@ -18,9 +19,9 @@ public class NoisySupersamplingSimulatorTests(FullStateFixture fixture)
     private static readonly NoiseModel[] Levels = [NoiseModel.Depolarizing(1e-3), NoiseModel.Depolarizing(3e-3), NoiseModel.Depolarizing(1e-2)];
 
     // Mean 0.0955 = sin²(π/10): after two Grover operators a head is certain, as far from the ½ noise pulls to as a coin gets.
-    private static readonly double[] Mean = SubpixelValues.MeanCoin([0.05, 0.2, 0.1, 0.032]);
+    private static readonly double[] Mean = CoinValues.MeanCoin([0.05, 0.2, 0.1, 0.032]);
 
-    private static readonly double[] Shifted = SubpixelValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
+    private static readonly double[] Shifted = CoinValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
 
     private BridgePool Pool => fixture.Engine.Pool;
 

@@ -1,5 +1,6 @@
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Tests.Statistics;
 
@@ -8,9 +9,9 @@ namespace QuantumRayTracing.Tests.Noise;
 /// <summary>The analytic side of the supersampling noise model: no bridge, seeded.</summary>
 public class SupersamplingNoiseTests
 {
-    private static readonly double[] Mean = SubpixelValues.MeanCoin([0.1, 0.5, 0.3, 0.9]);
+    private static readonly double[] Mean = CoinValues.MeanCoin([0.1, 0.5, 0.3, 0.9]);
 
-    private static readonly double[] Shifted = SubpixelValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
+    private static readonly double[] Shifted = CoinValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
 
     private static readonly CoinRequest[] Coins =
     [
@@ -22,17 +23,17 @@ public class SupersamplingNoiseTests
         new(CoinKind.Mean, [0.0, 0.0, 0.0], 2, 50),
     ];
 
-    private static readonly QssRequest[] Readouts = [new(Mean, 3, 200), new(SubpixelValues.MeanCoin([1.0, 0.0, 1.0]), 4, 200)];
+    private static readonly QssRequest[] Readouts = [new(Mean, 3, 200), new(CoinValues.MeanCoin([1.0, 0.0, 1.0]), 4, 200)];
 
     [Fact]
     public void NoiselessEngineDrawsExactlyAsBefore()
     {
         // The ideal model, given or not, and a zero rate take the exact path draw for draw: same seed, same outcomes.
-        var plain = new AnalyticSupersamplingEngine(new SeededRandom(11));
+        var plain = new AnalyticCoinEngine(new SeededRandom(11));
         foreach (var noise in new[] { NoiseModel.None, NoiseModel.Depolarizing(0) })
         {
-            var other = new AnalyticSupersamplingEngine(new SeededRandom(11), noise);
-            var reference = new AnalyticSupersamplingEngine(new SeededRandom(11));
+            var other = new AnalyticCoinEngine(new SeededRandom(11), noise);
+            var reference = new AnalyticCoinEngine(new SeededRandom(11));
             Assert.Equal(reference.FlipCoins(Coins), other.FlipCoins(Coins));
             Assert.Equal(reference.ReadCounters(Readouts), other.ReadCounters(Readouts));
         }
@@ -44,7 +45,7 @@ public class SupersamplingNoiseTests
 
     [Fact]
     public void AnalyticEngineRefusesQubitLoss() =>
-        Assert.Throws<ArgumentException>(() => new AnalyticSupersamplingEngine(new SeededRandom(1), new NoiseModel(0, 0, 0, 0.01)));
+        Assert.Throws<ArgumentException>(() => new AnalyticCoinEngine(new SeededRandom(1), new NoiseModel(0, 0, 0, 0.01)));
 
     [Theory]
     [InlineData(CoinKind.Mean, 0)]
@@ -114,7 +115,7 @@ public class SupersamplingNoiseTests
         // 20000 flips per coin, each head count inside its binomial acceptance interval; 20000 QSS readouts against
         // the model's distribution by chi-square (false-failure 1e-8 per check).
         var noise = NoiseModel.Depolarizing(3e-3);
-        var engine = new AnalyticSupersamplingEngine(new SeededRandom(5), noise);
+        var engine = new AnalyticCoinEngine(new SeededRandom(5), noise);
         var coins = Coins.Take(4).Select(c => c with { Flips = 20000 }).ToArray();
         var heads = engine.FlipCoins(coins);
         for (var k = 0; k < coins.Length; k++)

@@ -3,6 +3,7 @@ using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
 using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Tests.Supersampling;

@@ -123,7 +123,7 @@ public static class CommonOptions
         };
 
     /// <summary>A pixel's subpixel values, space-separated: 1 to 64 values, each in [0, 1].</summary>
-    public static Option<double[]> SubpixelValues(string description, bool required = false)
+    public static Option<double[]> CoinValues(string description, bool required = false)
         => new Option<double[]>("--values") { Description = description, AllowMultipleArgumentsPerToken = true, HelpName = "F", Required = required }
             .Must(values => (values ?? []) switch
             {

@@ -13,7 +13,7 @@ public sealed class ExportCoinCommand : Command
         HelpName = "F",
     };
 
-    private readonly Option<double[]> _values = CommonOptions.SubpixelValues("The mean coin over these subpixel values, each in [0, 1], space-separated (1 to 64 values). Default: none; give --mean or --values.");
+    private readonly Option<double[]> _values = CommonOptions.CoinValues("The mean coin over these subpixel values, each in [0, 1], space-separated (1 to 64 values). Default: none; give --mean or --values.");
 
     private readonly Option<int> _iterations = new Option<int>("--k")
     {

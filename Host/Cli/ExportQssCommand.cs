@@ -6,7 +6,7 @@ namespace QuantumRayTracing.Cli;
 /// <summary>`export qss`: one QSS run over subpixel values up to the counter's measurement.</summary>
 public sealed class ExportQssCommand : Command
 {
-    private readonly Option<double[]> _values = CommonOptions.SubpixelValues("The subpixel values QSS averages, each in [0, 1], space-separated (1 to 64 values). Default: none, it is required.", required: true);
+    private readonly Option<double[]> _values = CommonOptions.CoinValues("The subpixel values QSS averages, each in [0, 1], space-separated (1 to 64 values). Default: none, it is required.", required: true);
 
     private readonly Option<int?> _counterBits = CommonOptions.CounterBits($"Counter qubits T (1 to {QssExport.MaxCounterBits}): 2^T - 1 controlled Grover operators; a run costs 2^(T+1) - 1 queries (15 at T = 3).",
         QssExport.MaxCounterBits, QssExport.DefaultCounterBits, helpName: "T");

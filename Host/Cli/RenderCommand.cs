@@ -28,6 +28,18 @@ public sealed class RenderCommand : Command
 
     private readonly Option<string?> _maxMemory = CommonOptions.MaxMemory($"Refuse a render of {RenderForecast.LargePixels:N0} pixels or more whose forecast peak memory exceeds SIZE (512M, 4G). Default: the memory this machine has available.");
 
+    private readonly Option<LightEstimator> _lightEstimator = new Option<LightEstimator>("--light-estimator")
+    {
+        Description = "How each shading point's area light is read from its fixed set of --area-samples samples (a power of two): mc (Monte Carlo; without --light-queries every sample's shadow ray is traced, as always), or a quantum estimator of the set's mean, qcoin, mlae, iqae or bae (analytic engine).",
+        DefaultValueFactory = _ => LightEstimator.Mc,
+        HelpName = "mc|qcoin|mlae|iqae|bae",
+    }.Choices();
+
+    private readonly Option<int?> _lightQueries = new Option<int?>("--light-queries")
+    {
+        Description = $"Queries per shading point and area light for --light-estimator (one query: one coherent evaluation of a sample's weight and visibility over all primitives; Monte Carlo: one sample drawn from the set). Default with a quantum estimator: {LightEstimation.DefaultQueries}.",
+    }.Between(LightEstimation.MinQueries, LightEstimation.MaxQueries);
+
     private readonly RenderOptionSet _render = new();
 
     private readonly EngineOptions _engine = new EngineOptions(EngineKind.Analytic,
@@ -43,6 +55,7 @@ public sealed class RenderCommand : Command
         this.AddOptions(_output, _size, _reference, _referenceSamples, _maxMemory);
         _render.AddTo(this);
         Options.Add(_render.Budget);
+        this.AddOptions(_lightEstimator, _lightQueries);
         _engine.AddTo(this);
         this.AddOptions(_engine.NoiseOracleOption, _idealPlan);
         _qsearch.AddTo(this);
@@ -69,13 +82,20 @@ public sealed class RenderCommand : Command
         return ExitCodes.Success;
     }
 
+    /// <summary>Light estimation, or null for today's tracing of every sample (mc without --light-queries).</summary>
+    private LightEstimation? Light(ParseResult parse) => (parse.GetValue(_lightEstimator), parse.GetValue(_lightQueries)) switch
+    {
+        (LightEstimator.Mc, null) => null,
+        var (estimator, queries) => new LightEstimation(estimator, queries ?? LightEstimation.DefaultQueries),
+    };
+
     /// <summary>The run the options ask for; the bridges are started after the outputs are checked.</summary>
     private RenderRunSettings Settings(ParseResult parse, FileInfo? sceneFile)
     {
         var scene = DefaultScene.Load(sceneFile);
         var kind = parse.GetValue(_engine.Engine);
         var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
-        var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse) };
+        var options = _render.Get(parse, width, height, parse.GetValue(_engine.Seed)) with { Budget = _render.BudgetShare(parse), Light = Light(parse) };
         var engine = _engine.GetSetup(parse, _qsearch.Get(parse), _engine.GetNoiseOracle(parse), parse.GetValue(_idealPlan));
         return new RenderRunSettings(scene, options, engine,
             parse.GetValue(_output) ?? $"{DefaultScene.StemOf(sceneFile?.Name)}-{EngineFactory.Name(kind)}.png", parse.GetValue(_reference), parse.GetValue(_referenceSamples),

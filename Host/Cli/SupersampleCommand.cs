@@ -4,6 +4,7 @@ using QuantumRayTracing.Views;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Scenes.Generation;
 

@@ -18,5 +18,5 @@ public sealed record EstimateSubject(OracleInput Oracle, int Iterations, string 
     /// The subpixel values the supersampling circuits are estimated for: half lit, alternating 0 and 1.
     /// Gate counts do not depend on the values, only on their number (each becomes one rotation).
     /// </summary>
-    public string SubpixelValues => "[" + string.Join(", ", Enumerable.Range(0, Subpixels).Select(k => k % 2 == 0 ? "0.0" : "1.0")) + "]";
+    public string CoinValues => "[" + string.Join(", ", Enumerable.Range(0, Subpixels).Select(k => k % 2 == 0 ? "0.0" : "1.0")) + "]";
 }

@@ -36,14 +36,14 @@ public static class EstimatedCircuits
     public static readonly EstimatedCircuit QssReadout = new(
         "QSS readout",
         "quantum supersampling: the subpixels in superposition, 2^i coin Grover operators controlled by counter bit i, inverse QFT, measure the counter",
-        s => $"{QSharpOperations.MeasureQssReadout}({s.SubpixelValues}, {s.CounterBits.ToString(CultureInfo.InvariantCulture)})",
+        s => $"{QSharpOperations.MeasureQssReadout}({s.CoinValues}, {s.CounterBits.ToString(CultureInfo.InvariantCulture)})",
         _ => null);
 
     /// <summary>One QCoin step: the shifted coin Q_F,E, one Grover operator G_F,E, one flip.</summary>
     public static readonly EstimatedCircuit QCoinStep = new(
         "QCoin step",
         "one QCoin step (i = 1): prepare the shifted coin Q_F,E, apply its Grover operator G_F,E once, flip (measure the coin)",
-        s => $"{QSharpOperations.CountCoinHeads}(true, {s.SubpixelValues}, 1, 1)",
+        s => $"{QSharpOperations.CountCoinHeads}(true, {s.CoinValues}, 1, 1)",
         _ => null);
 
     /// <summary>The circuits of one ray, for the oracle's tables and checks.</summary>

@@ -1,4 +1,5 @@
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using static QuantumRayTracing.Export.ExportNumber;
 
@@ -29,8 +30,8 @@ public static class CoinExport
 
     public static ExportSubject Mean(double[] values, int iterations)
     {
-        SubpixelValues.Check(values);
-        var amplitudes = SubpixelValues.MeanCoin(values);
+        CoinValues.Check(values);
+        var amplitudes = CoinValues.MeanCoin(values);
         var index = SubpixelQubits(values);
         return new ExportSubject(
             $"QCoin's mean coin over {values.Length} subpixel values, one flip ({Command} --values)",
@@ -49,7 +50,7 @@ public static class CoinExport
 
     /// <summary>The header line listing the subpixel values and their mean.</summary>
     public static string ValuesLine(double[] values) =>
-        $"subpixel values: {string.Join(' ', values.Select(v => Text(v)))} (mean {Text(SubpixelValues.Mean(values))})";
+        $"subpixel values: {string.Join(' ', values.Select(v => Text(v)))} (mean {Text(CoinValues.Mean(values))})";
 
     /// <summary>The header's description of the mean coin's preparation on <paramref name="index"/> subpixel qubits.</summary>
     public static string MeanCoinLine(int index) =>

@@ -1,4 +1,5 @@
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using static QuantumRayTracing.Export.ExportNumber;
 
@@ -22,10 +23,10 @@ public static class QssExport
 
     public static ExportSubject Subject(double[] values, int counterBits)
     {
-        SubpixelValues.Check(values);
+        CoinValues.Check(values);
         ArgumentOutOfRangeException.ThrowIfLessThan(counterBits, 1);
         ArgumentOutOfRangeException.ThrowIfGreaterThan(counterBits, MaxCounterBits);
-        var amplitudes = SubpixelValues.MeanCoin(values);
+        var amplitudes = CoinValues.MeanCoin(values);
         var index = CoinExport.SubpixelQubits(values);
         var operators = (1 << counterBits) - 1;
         return new ExportSubject(

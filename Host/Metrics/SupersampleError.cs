@@ -1,4 +1,5 @@
 using System.Text.Json.Serialization;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Metrics;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Noise;

@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Noise;

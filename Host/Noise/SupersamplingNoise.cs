@@ -1,4 +1,5 @@
 using QuantumRayTracing.Engines;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Noise;

@@ -24,6 +24,9 @@ public static class RandomStreams
     /// <summary>The area-light sample each VPL takes for its own direct light.</summary>
     public const ulong VplAreaLight = 7;
 
+    /// <summary>Light estimation in a render: the Monte Carlo draws and the coin engine's outcomes, each from a stream forked from this one.</summary>
+    public const ulong LightEstimation = 8;
+
     /// <summary>A tiled render's tiles: tile k's seed is drawn from stream Tiles + k (<see cref="Rendering.TiledRender"/>).</summary>
     public const ulong Tiles = 1UL << 16;
 

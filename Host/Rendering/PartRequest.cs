@@ -77,6 +77,7 @@ public static class PartRequest
             ["pixels"] = Convert.ToBase64String(part.Image.Pixels),
             ["passes"] = JsonSerializer.SerializeToNode(part.Passes, Json),
             ["budget"] = JsonSerializer.SerializeToNode(part.Budget, Json),
+            ["light"] = part.LightError is { } light ? JsonSerializer.SerializeToNode(light, Json) : null,
         };
     }
 
@@ -87,6 +88,6 @@ public static class PartRequest
     {
         var image = RgbImage.FromPixels(reply["width"]!.GetValue<int>(), reply["height"]!.GetValue<int>(), Convert.FromBase64String(reply["pixels"]!.GetValue<string>()));
         var passes = reply["passes"]!.Deserialize<PassMetrics[]>(Json)!;
-        return new RenderResult(image, passes) { Budget = reply["budget"]!.Deserialize<AccuracyBudget>(Json)! };
+        return new RenderResult(image, passes) { Budget = reply["budget"]!.Deserialize<AccuracyBudget>(Json)!, LightError = reply["light"]?.Deserialize<Metrics.LightError>(Json) };
     }
 }

@@ -62,7 +62,7 @@ public static class RenderDefaults
 
     /// <summary>The classical render of the same image: strict ties, no pipeline tricks (it needs none: its answers are certain).</summary>
     public static RenderOptions Reference(RenderOptions options) =>
-        options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off, LatticeLevels = 0, Budget = null };
+        options with { TieBreak = Intersection.TieBreak.Strict, Neighbours = false, ShadowNeighbours = false, Stop = StopMode.Off, LatticeLevels = 0, Budget = null, Light = null };
 
     /// <summary>
     /// The classical reference with <paramref name="samples"/> area samples and, when the render has

@@ -30,4 +30,8 @@ public sealed record RenderFigures(
     TimeSpan RenderTime,
     TimeSpan ReferenceTime,
     TimeSpan? ConvergedTime,
-    IReadOnlyList<string> Written);
+    IReadOnlyList<string> Written)
+{
+    /// <summary>With estimated light, its error against the exact mean of each point's samples (<see cref="RenderOptions.Light"/>); otherwise null.</summary>
+    public LightError? LightError { get; init; }
+}

@@ -19,7 +19,8 @@ namespace QuantumRayTracing.Rendering;
 /// (<see cref="AccuracyBudget"/>); null for none (the searches run as configured, nothing more). <see cref="SizeConfirmation"/>:
 /// under a budget, each lattice level's cheap confirmation is sized by the budget (<see cref="CheapConfirmation"/>) rather
 /// than the fixed <see cref="AgreedMiss"/> list. The parameters' defaults are the paper's plain pipeline; every default lives in
-/// <see cref="RenderDefaults"/>, beside what `render` runs.
+/// <see cref="RenderDefaults"/>, beside what `render` runs. <see cref="Light"/>: the area light estimated as a mean over each point's sample set
+/// (<see cref="LightEstimation"/>); null traces every sample's shadow ray.
 /// </summary>
 public sealed record RenderOptions(
     int Width,
@@ -38,7 +39,8 @@ public sealed record RenderOptions(
     int Vpl = RenderDefaults.Vpl,
     int? RequiredMisses = 1,
     double? Budget = null,
-    bool SizeConfirmation = true)
+    bool SizeConfirmation = true,
+    LightEstimation? Light = null)
 {
     /// <summary>The t a confirmation is planned for: at most ~6 primitives lie on a Qornell ray, 9 in Depth Complexity's deepest quadrant.</summary>
     public const int ConfirmationMaxT = 8;

@@ -14,5 +14,8 @@ public sealed record RenderResult(RgbImage Image, IReadOnlyList<PassMetrics> Pas
     /// <summary>The expected wrong pixels the render's searches allow (<see cref="AccuracyBudget"/>).</summary>
     public AccuracyBudget Budget { get; init; } = new(0, 0);
 
+    /// <summary>With estimated light (<see cref="RenderOptions.Light"/>), its error against the exact mean of each point's samples; otherwise null.</summary>
+    public Metrics.LightError? LightError { get; init; }
+
     public PassMetrics Total => PassMetrics.Total("total", Passes.ToArray());
 }

@@ -66,7 +66,7 @@ public static class RenderRun
             converged is null ? null : settings.ReferenceSamples,
             converged is null ? null : ImageError.Between(result.Image, converged.Image),
             converged is null ? null : ImageError.Between(reference.Image, converged.Image),
-            renderTime, referenceTime, converged is null ? null : convergedTime, images.Select(i => i.Item2).ToArray());
+            renderTime, referenceTime, converged is null ? null : convergedTime, images.Select(i => i.Item2).ToArray()) { LightError = result.LightError };
         // After the render: a cluster's place counts the chunks it had to send again.
         var ranOn = EngineFactory.Place(settings.Engine.Kind, settings.Engine.Pool, settings.Engine.Workers);
         return new RenderRunResult(figures, ranOn, result, reference, converged);

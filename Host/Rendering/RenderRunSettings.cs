@@ -58,6 +58,22 @@ public sealed record RenderRunSettings(
         if (Engine.IdealPlan && !Engine.Kind.ApproximatesNoise) throw new UserError("--ideal-plan: only the analytic engine plans with a noise model; use --engine analytic");
         if (Engine.IdealPlan && !IsNoisy) throw new UserError("--ideal-plan: without a noise model (--noise, --device-noise, --readout-error) the plan is the ideal one already");
         if (Engine.Kind.ApproximatesNoise && IsNoisy) EngineFactory.Approximation(Engine.NoiseOracle, Scene);
+        if (Options.Light is { } light) EnsureLightRunnable(light);
+    }
+
+    // One line for each setting light estimation cannot run with yet.
+    private void EnsureLightRunnable(LightEstimation light)
+    {
+        var option = $"--light-estimator {light.Name}";
+        if (Engine.Kind.RunsQSharp)
+            throw new UserError($"{option}: the {Engine.Kind.Name} engine cannot run light estimation yet (its coin needs every sample's visibility over all primitives as a circuit); use --engine analytic");
+        if (light.Estimator != LightEstimator.Mc && Engine.Kind != EngineKind.Analytic)
+            throw new UserError($"{option}: a quantum estimator's outcomes are drawn from its exact distributions on the analytic engine only; use --engine analytic");
+        if (IsNoisy) throw new UserError($"{option}: light estimation does not model noise yet; drop the noise model");
+        if (Scene.AreaLights.Count == 0) throw new UserError($"{option}: {Scene.Name} has no area lights to estimate");
+        if (Options.Vpl > 0) throw new UserError($"{option}: light estimation covers area lights only for now; use --vpl 0");
+        if (!LightEstimation.IsRegisterSize(Options.AreaSamples))
+            throw new UserError($"{option}: --area-samples {Options.AreaSamples} is not a power of two (the register a coin puts in superposition holds 2^k samples)");
     }
 
     /// <summary>Every PNG the run writes, in order: the render, then with <see cref="WithReference"/> the reference, the difference and the converged reference.</summary>

@@ -1,4 +1,5 @@
 using QuantumRayTracing.Intersection;
+using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
 using QuantumRayTracing.Randomness;
@@ -41,10 +42,10 @@ public static class SceneRenderer
         var visible = TraceShadowRays(plan, points, passes, Left(allowed, passes));
         var budgeted = passes.ToArray();
         var extra = DirectionalLight(scene, points, visible);
-        AddAreaLight(plan, points, extra, passes);
+        var lightError = AddAreaLight(plan, points, extra, passes);
         AddIndirectLight(plan, points, extra, passes);
         Shade(scene, points, visible, extra, radiance);
-        return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, pixels, options.Budget));
+        return Result(plan, radiance, passes, AccuracyBudget.From(budgeted, pixels, options.Budget)) with { LightError = lightError };
     }
 
     // The expected wrong rays of the passes so far: the budget left is what they did not spend (none, when a pass
@@ -161,12 +162,17 @@ public static class SceneRenderer
         return extra;
     }
 
-    private static void AddAreaLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)
+    // Every sample's shadow ray traced, or (with a light estimator) the mean over each point's samples estimated; the latter's
+    // error against the exact mean is returned.
+    private static LightError? AddAreaLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)
     {
-        if (plan.Scene.AreaLights.Count == 0) return;
-        var (area, metrics) = AreaLightPass.Run(plan, points.Points, points.PrimaryCount);
+        if (plan.Scene.AreaLights.Count == 0) return plan.Options.Light is null ? null : LightError.None;
+        var (area, error, metrics) = plan.Options.Light is { } light
+            ? AreaLightEstimatePass.Run(plan, points.Points, points.PrimaryCount, light)
+            : AreaLightPass.Run(plan, points.Points, points.PrimaryCount) is var (traced, tracedMetrics) ? (traced, (LightError?)null, tracedMetrics) : default;
         for (var k = 0; k < points.Count; k++) extra[k] += area[k];
         passes.Add(metrics);
+        return error;
     }
 
     private static void AddIndirectLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)

@@ -40,6 +40,7 @@ public static class TiledRender
         var image = new RgbImage(options.Width, options.Height);
         var passes = new PassMetrics[tiles.Count][];
         var expected = new double[tiles.Count];
+        var lightErrors = new Metrics.LightError?[tiles.Count];
         var stage = TileProgress.StageOf(tiles.Count);
         void Run(ImageTile tile, IRenderProgress? tileProgress)
         {
@@ -59,6 +60,7 @@ public static class TiledRender
                 }
             passes[tile.Index] = [.. part.Passes];
             expected[tile.Index] = part.Budget.ExpectedWrongPixels;
+            lightErrors[tile.Index] = part.LightError;
         }
         if (parts.Concurrency <= 1)
         {
@@ -94,7 +96,9 @@ public static class TiledRender
         var merged = Enumerable.Range(0, passes[0].Length).Select(k => PassMetrics.Total(passes[0][k].Name, [.. passes.Select(p => p[k])])).ToArray();
         var expectedWrong = 0.0;
         foreach (var e in expected) expectedWrong += e;
-        return new RenderResult(image, merged) { Budget = new AccuracyBudget(expectedWrong, (long)options.Width * options.Height, options.Budget) };
+        // Estimated light's error over every point each tile estimated (its apron's too).
+        var lightError = options.Light is null ? null : lightErrors.Aggregate(Metrics.LightError.None, (sum, e) => e is null ? sum : sum.Add(e));
+        return new RenderResult(image, merged) { Budget = new AccuracyBudget(expectedWrong, (long)options.Width * options.Height, options.Budget), LightError = lightError };
     }
 
     // The whole render as one stage, "n tiles": the tiles done, and of the running tile the share of its passes done (counted

@@ -28,15 +28,20 @@ public static class LightIrradiance
     /// One of <paramref name="count"/> samples of an area light at <paramref name="sample"/>:
     /// radiance · area · cos θ · cos θ' / d² / count, θ' at the light (both faces emit); zero behind the surface.
     /// </summary>
-    public static Vec3 AreaSample(Vec3 at, Vec3 normal, AreaLight light, Vec3 sample, int count)
+    public static Vec3 AreaSample(Vec3 at, Vec3 normal, AreaLight light, Vec3 sample, int count) =>
+        AreaGeometry(at, normal, light, sample) / count * light.Radiance;
+
+    /// <summary>
+    /// The scalar part of an area-light sample, without the radiance and the 1/count: area · cos θ · cos θ' / d²; zero
+    /// behind the surface. A sample's irradiance is this times the light's radiance.
+    /// </summary>
+    public static double AreaGeometry(Vec3 at, Vec3 normal, AreaLight light, Vec3 sample)
     {
         var toLight = sample - at;
         var distanceSquared = toLight.Dot(toLight);
         var distance = Math.Sqrt(distanceSquared);
         var cosine = toLight.Dot(normal) / distance;
         var cosineAtLight = Math.Abs(toLight.Dot(light.Normal)) / distance;
-        return cosine > 0 && distanceSquared > 0
-            ? light.Area * cosine * cosineAtLight / distanceSquared / count * light.Radiance
-            : Vec3.Zero;
+        return cosine > 0 && distanceSquared > 0 ? light.Area * cosine * cosineAtLight / distanceSquared : 0;
     }
 }

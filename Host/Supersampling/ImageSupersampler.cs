@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Passes;
 
@@ -14,7 +15,7 @@ public static class ImageSupersampler
     /// <summary>Items per estimator call: large enough to batch well on the simulator, small enough to report progress.</summary>
     public const int BlockItems = 2048;
 
-    public static SupersampleResult Run(SubpixelImage input, IMeanEstimator estimator, ISupersamplingEngine engine, IRenderProgress? progress = null)
+    public static SupersampleResult Run(SubpixelImage input, IMeanEstimator estimator, ICoinEngine engine, IRenderProgress? progress = null)
     {
         var channels = input.IsGrey ? 1 : 3;
         var items = input.Pixels * channels;

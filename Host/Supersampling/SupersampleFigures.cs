@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Metrics;
 
 namespace QuantumRayTracing.Supersampling;

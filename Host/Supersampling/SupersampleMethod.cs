@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using System.Runtime.Serialization;
 
 namespace QuantumRayTracing.Supersampling;

@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 namespace QuantumRayTracing.Supersampling;
 
 /// <summary>

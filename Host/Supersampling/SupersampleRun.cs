@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using System.Diagnostics;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
@@ -52,7 +53,7 @@ public static class SupersampleRun
         try
         {
             var supersampling = progress?.Start(EngineFactory.Name(kind));
-            using var engine = CreateEngine(kind, settings.Seed, engineSetup.Workers, engineSetup.MaxQubits, noise, engineSetup.Pool, engineSetup.Device);
+            using var engine = CoinEngines.Create(kind, settings.Seed, engineSetup.Workers, engineSetup.MaxQubits, noise, engineSetup.Pool, engineSetup.Device);
             result = ImageSupersampler.Run(input, estimator, engine, supersampling);
         }
         finally
@@ -74,22 +75,6 @@ public static class SupersampleRun
         // After the estimates: a cluster's place counts the chunks it had to send again.
         var ranOn = EngineFactory.Place(kind, engineSetup.Pool, engineSetup.Workers);
         return new SupersampleRunResult(figures, ranOn, input, result);
-    }
-
-    /// <remarks>
-    /// The fullstate engine runs on <paramref name="pool"/> when given, without stopping it, else on bridges of its own. Under
-    /// a <paramref name="device"/> model the coins are the single-qubit ones of the QCoin paper's device runs.
-    /// </remarks>
-    public static ISupersamplingEngine CreateEngine(EngineKind kind, ulong seed, int workers, int? maxQubits = null, NoiseModel? noise = null, BridgePool? pool = null,
-        DeviceNoiseModel? device = null)
-    {
-        var random = new SeededRandom(seed).Fork(RandomStreams.Engine);
-        ISupersamplingEngine engine = kind switch
-        {
-            EngineKind.FullState => new FullStateSupersamplingEngine(pool ?? new BridgePool(workers), ownsPool: pool is null, maxQubits: maxQubits, noise: noise, device: device, readoutRandom: random),
-            _ => new AnalyticSupersamplingEngine(random, noise, device: device),
-        };
-        return device is null ? engine : new DirectCoinEngine(engine);
     }
 
     private static SubpixelImage LoadImage(string path, int s, EngineKind kind)

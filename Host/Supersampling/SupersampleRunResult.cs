@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Output;
 
 namespace QuantumRayTracing.Supersampling;

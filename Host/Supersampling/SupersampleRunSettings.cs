@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;

@@ -20,7 +20,10 @@ public static class RenderRunView
         if (settings.SamplesLight)
         {
             var converged = settings.Converged;
-            AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? $"{options.AreaSamples} shadow rays per point and area light" : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
+            var area = options.Light is { } light
+                ? $"area light estimated by {light.Name} with {light.Queries} queries per point and area light over a fixed set of {options.AreaSamples} samples (no shadow rays)"
+                : $"{options.AreaSamples} shadow rays per point and area light";
+            AnsiConsole.WriteLine($"sampled light: {(scene.AreaLights.Count > 0 ? area : "no area lights")}, {(options.Vpl > 0 ? $"{options.Vpl} VPLs per point" : "no indirect light")}; "
                 + (settings.WithConverged ? $"converged reference: {converged.AreaSamples} area samples{(options.Vpl > 0 ? $", {converged.Vpl} VPLs" : "")}" : "no converged reference"));
         }
         AnsiConsole.WriteLine($"modelled per search: {plan.IndexQubits} index qubits + {plan.AuxiliaryQubits} auxiliaries, lookup table of {plan.Primitives} rows x {plan.CoordinateBits} coordinate bits per axis");
@@ -53,7 +56,9 @@ public static class RenderRunView
         if (noisy) engineName = $"{engineName} under {settings.NoiseDescription}";
         AnsiConsole.Write(MetricsTable(engineName, figures));
         var error = figures.Error;
-        var sameSamples = settings.SamplesLight ? " with the same samples (search error alone)" : "";
+        var sameSamples = !settings.SamplesLight ? ""
+            : settings.Options.Light is null ? " with the same samples (search error alone)"
+            : " with the same samples, every one traced (search and light-estimation error)";
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
         var budget = figures.Budget;
@@ -68,6 +73,8 @@ public static class RenderRunView
             : "(expected: an expectation from each search path's ideal miss rate and finds; noise raises the share, docs/noise.md)");
         if (figures is { ConvergedError: { } toConverged, ConvergedNoise: { } monteCarlo })
             AnsiConsole.WriteLine($"error against the converged classical reference ({figures.ConvergedSamples} samples): NRMSE {toConverged.Nrmse:P2}, #Dpix {toConverged.DifferentPixels}; the classical render with the same samples: NRMSE {monteCarlo.Nrmse:P2} (Monte Carlo noise alone)");
+        if (figures.LightError is { } lightError)
+            AnsiConsole.WriteLine($"light error against the exact mean of its samples: NRMSE {lightError.Nrmse:P2} (RMS over every shading point's area-light irradiance channels / the exact values' range; {settings.Options.Light!.Queries} queries per point and light, a flip 1, a Grover operator 2)");
         var convergedWall = figures.ConvergedTime is { } convergedTime ? $", converged reference {convergedTime.TotalSeconds:0.00} s" : "";
         AnsiConsole.WriteLine($"wall time: {engineName} {figures.RenderTime.TotalSeconds:0.00} s, classical reference {figures.ReferenceTime.TotalSeconds:0.00} s{convergedWall}");
         AnsiConsole.MarkupLine("[grey]#Eval: conservative counts r + 1 per Grover run with r ≥ 1 (state preparation included), paper counts r (docs/conventions.md); Int/Ray = (#Eval + #C_Int) / #Rays; table rows (eval-rpc: N per ray and pass, built once and kept compact between rounds) are not in Int/Ray.[/]");

@@ -2,6 +2,7 @@ using System.Globalization;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;
 
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Views;

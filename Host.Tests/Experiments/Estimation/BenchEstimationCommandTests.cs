@@ -1,3 +1,4 @@
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using QuantumRayTracing.Randomness;
 using System.Globalization;
@@ -54,7 +55,7 @@ public sealed class BenchEstimationCommandTests : IDisposable
 
         var random = new SeededRandom(3);
         var means = Enumerable.Range(0, 200).Select(_ => new[] { random.NextDouble() }).ToArray();
-        using var device = new DirectCoinEngine(new AnalyticSupersamplingEngine(random.Fork(1), device: EstimationSettings.DeviceRates));
+        using var device = new DirectCoinEngine(new AnalyticCoinEngine(random.Fork(1), device: EstimationSettings.DeviceRates));
         var biased = new MonteCarloEstimator(3200).Estimate(means, device).Select((e, j) => Math.Abs(e - means[j][0])).Average();
         Assert.InRange(biased, 0.035, 0.052);
     }

@@ -1,5 +1,6 @@
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Experiments;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using static QuantumRayTracing.Experiments.NoiseEstimationExperiment;
 
@@ -59,7 +60,7 @@ public class NoiseEstimationTests
         // z = 4.89 standard errors of the exact one (false-failure 1e-6).
         var random = new QuantumRayTracing.Randomness.SeededRandom(8);
         var means = Enumerable.Range(0, 20_000).Select(_ => new[] { random.NextDouble() }).ToArray();
-        using var engine = new DirectCoinEngine(new AnalyticSupersamplingEngine(new QuantumRayTracing.Randomness.SeededRandom(9)));
+        using var engine = new DirectCoinEngine(new AnalyticCoinEngine(new QuantumRayTracing.Randomness.SeededRandom(9)));
         var estimates = new QssEstimator(3).Estimate(means, engine);
         var errors = means.Select((v, j) => Math.Abs(estimates[j] - v[0])).ToArray();
         var mean = errors.Average();
@@ -75,7 +76,7 @@ public class NoiseEstimationTests
         var trials = Enumerable.Repeat(new[] { 0.5 }, 2000).ToArray();
         double Error(DeviceNoiseModel device)
         {
-            using var engine = new DirectCoinEngine(new AnalyticSupersamplingEngine(new QuantumRayTracing.Randomness.SeededRandom(3), device: device));
+            using var engine = new DirectCoinEngine(new AnalyticCoinEngine(new QuantumRayTracing.Randomness.SeededRandom(3), device: device));
             return new MonteCarloEstimator(10_000).Estimate(trials, engine).Average(e => Math.Abs(e - 0.5));
         }
         Assert.InRange(Error(new DeviceNoiseModel(1e-2, 0)), 0.0035, 0.0045);

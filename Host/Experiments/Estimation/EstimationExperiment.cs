@@ -1,4 +1,5 @@
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
@@ -98,14 +99,14 @@ public static class EstimationExperiment
         {
             var run = runs[i];
             var random = root.Fork(RandomStreams.Supersampling + (ulong)i);
-            ISupersamplingEngine inner = run.OnDevice
-                ? new DirectCoinEngine(new AnalyticSupersamplingEngine(random, device: EstimationSettings.DeviceRates))
+            ICoinEngine inner = run.OnDevice
+                ? new DirectCoinEngine(new AnalyticCoinEngine(random, device: EstimationSettings.DeviceRates))
                 : run.Decay == 0
-                    ? new AnalyticSupersamplingEngine(random)
-                    : new DirectCoinEngine(new AnalyticSupersamplingEngine(random, Noise.NoiseModel.Depolarizing(NoiseEstimationExperiment.RateForDecay(run.Decay))));
+                    ? new AnalyticCoinEngine(random)
+                    : new DirectCoinEngine(new AnalyticCoinEngine(random, Noise.NoiseModel.Depolarizing(NoiseEstimationExperiment.RateForDecay(run.Decay))));
             using var engine = new QueryCountingEngine(inner);
             var estimates = run.Create().Estimate(run.Values, engine);
-            var errors = run.Values.Select((v, j) => Math.Abs(estimates[j] - SubpixelValues.Mean(v))).Order().ToArray();
+            var errors = run.Values.Select((v, j) => Math.Abs(estimates[j] - CoinValues.Mean(v))).Order().ToArray();
             var median = Quantile(errors, 0.5);
             points[i] = new Point(run.Input, run.Decay, run.Label, run.Budget, (double)engine.Queries / errors.Length, (double)engine.GroverOperators / errors.Length,
                 errors.Average(), median, Quantile(errors, 0.95), errors.Count(e => e > 3 * median) / (double)errors.Length, run.OnDevice);

@@ -1,6 +1,7 @@
 using System.Globalization;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using Point = QuantumRayTracing.Experiments.EstimationExperiment.Point;
 

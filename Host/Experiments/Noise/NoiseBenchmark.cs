@@ -6,6 +6,7 @@ using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
@@ -154,9 +155,9 @@ public static class NoiseBenchmark
     /// </summary>
     public static IReadOnlyList<SupersamplingCheckCase> SupersamplingCheckCases()
     {
-        var mean = SubpixelValues.MeanCoin([0.05, 0.2, 0.1, 0.032]);
-        var shifted = SubpixelValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
-        var tile = SubpixelValues.MeanCoin(Enumerable.Range(0, 16).Select(i => (i * 7 % 16) / 20.0).ToArray());
+        var mean = CoinValues.MeanCoin([0.05, 0.2, 0.1, 0.032]);
+        var shifted = CoinValues.Shifted([0.3, 0.5, 0.2, 0.6], 0.2);
+        var tile = CoinValues.MeanCoin(Enumerable.Range(0, 16).Select(i => (i * 7 % 16) / 20.0).ToArray());
         double[] direct = [Math.Sqrt(0.1)];
         return
         [

@@ -4,6 +4,7 @@ using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Reports;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;

@@ -1,4 +1,5 @@
 using QuantumRayTracing.Bridge;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 using QuantumRayTracing.Noise;
@@ -69,7 +70,7 @@ public sealed record SupersamplingCheckRow(SupersamplingCheckCase Case, NoiseMod
 }
 
 /// <summary>
-/// Runs coin flips and QSS readouts on the noisy full-state simulator (<see cref="FullStateSupersamplingEngine"/>) and
+/// Runs coin flips and QSS readouts on the noisy full-state simulator (<see cref="FullStateCoinEngine"/>) and
 /// compares the share of counted outcomes with <see cref="SupersamplingNoise"/>, as <see cref="NoiseCheck"/> does for searches.
 /// </summary>
 public static class SupersamplingNoiseCheck
@@ -82,7 +83,7 @@ public static class SupersamplingNoiseCheck
         var qss = cases.Where(c => c.IsQss).ToArray();
         foreach (var noise in noises)
         {
-            using var engine = new FullStateSupersamplingEngine(pool, ownsPool: false, noise: noise);
+            using var engine = new FullStateCoinEngine(pool, ownsPool: false, noise: noise);
             var heads = engine.FlipCoins(coins.Select(c => new CoinRequest(c.Kind!.Value, c.Amplitudes, c.Iterations, shots)).ToArray());
             var readouts = engine.ReadCounters(qss.Select(c => new QssRequest(c.Amplitudes, c.CounterBits, shots)).ToArray());
             var measured = new Dictionary<SupersamplingCheckCase, int>();

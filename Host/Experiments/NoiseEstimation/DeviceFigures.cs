@@ -1,5 +1,6 @@
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
@@ -48,17 +49,17 @@ public static class DeviceFigures
     /// <summary>MC's mean absolute error at f = ½ with Q flips, for large Q: √(2/π) · ½ / √Q.</summary>
     public static double MonteCarloError(long queries) => Math.Sqrt(2 / Math.PI) * 0.5 / Math.Sqrt(queries);
 
-    public static Figures Measure(NoiseEstimationSettings settings, Func<DeviceNoiseModel?, ISupersamplingEngine> engine, SeededRandom inputs)
+    public static Figures Measure(NoiseEstimationSettings settings, Func<DeviceNoiseModel?, ICoinEngine> engine, SeededRandom inputs)
     {
         var fit = FitDevice(settings, engine);
         return new Figures(fit, FigureTen(settings, fit.Device, engine), FigureEleven(settings, fit.Device, engine), FigureTwelve(settings, engine, inputs));
     }
 
-    private static double Error(IMeanEstimator estimator, IReadOnlyList<double[]> values, ISupersamplingEngine engine)
+    private static double Error(IMeanEstimator estimator, IReadOnlyList<double[]> values, ICoinEngine engine)
     {
         using var _ = engine;
         var estimates = estimator.Estimate(values, engine);
-        return values.Select((v, j) => Math.Abs(estimates[j] - SubpixelValues.Mean(v))).Average();
+        return values.Select((v, j) => Math.Abs(estimates[j] - CoinValues.Mean(v))).Average();
     }
 
     private static IMeanEstimator StepsEstimator(int k, long queries) => k == 0 ? new MonteCarloEstimator(queries) : new QCoinEstimator(queries, k);
@@ -69,7 +70,7 @@ public static class DeviceFigures
     /// falling, with P0 assumed. Then the one-qubit rate is scanned with that readout for the k with the lowest error at the
     /// largest budget, and the fit is the rate whose best k is the paper's (the middle of such rates, else the nearest).
     /// </summary>
-    private static Fit FitDevice(NoiseEstimationSettings settings, Func<DeviceNoiseModel?, ISupersamplingEngine> engine)
+    private static Fit FitDevice(NoiseEstimationSettings settings, Func<DeviceNoiseModel?, ICoinEngine> engine)
     {
         var plateau = MonteCarloError(PaperPlateauQueries);
         var readOneAsZero = AssumedReadZeroAsOne + 2 * plateau;
@@ -87,7 +88,7 @@ public static class DeviceFigures
         return new Fit(new DeviceNoiseModel(chosen, 0, AssumedReadZeroAsOne, readOneAsZero), plateau, scan, Best(chosen));
     }
 
-    private static List<CurvePoint> FigureTen(NoiseEstimationSettings settings, DeviceNoiseModel device, Func<DeviceNoiseModel?, ISupersamplingEngine> engine)
+    private static List<CurvePoint> FigureTen(NoiseEstimationSettings settings, DeviceNoiseModel device, Func<DeviceNoiseModel?, ICoinEngine> engine)
     {
         var trials = Enumerable.Repeat(new[] { 0.5 }, settings.Trials).ToArray();
         var points = new List<CurvePoint>();
@@ -101,7 +102,7 @@ public static class DeviceFigures
         return points;
     }
 
-    private static List<ImageRow> FigureEleven(NoiseEstimationSettings settings, DeviceNoiseModel device, Func<DeviceNoiseModel?, ISupersamplingEngine> engine)
+    private static List<ImageRow> FigureEleven(NoiseEstimationSettings settings, DeviceNoiseModel device, Func<DeviceNoiseModel?, ICoinEngine> engine)
     {
         // Pixels of the three colours in equal shares, each pixel's 8x8 subpixels its colour.
         var pixels = Enumerable.Range(0, settings.Trials).Select(j => Enumerable.Repeat(FigureElevenColours[j % FigureElevenColours.Length], 64).ToArray()).ToArray();
@@ -124,7 +125,7 @@ public static class DeviceFigures
         return rows;
     }
 
-    private static List<TwelveRow> FigureTwelve(NoiseEstimationSettings settings, Func<DeviceNoiseModel?, ISupersamplingEngine> engine, SeededRandom inputs)
+    private static List<TwelveRow> FigureTwelve(NoiseEstimationSettings settings, Func<DeviceNoiseModel?, ICoinEngine> engine, SeededRandom inputs)
     {
         // QSS: its exact mean absolute error over uniform means (midpoint rule, 2000 means) for each t; QCoin: its measured error
         // over uniform random means with L flips per step for each k.

@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
@@ -122,9 +123,9 @@ public static class DeviceFiguresReport
         string Count(long value) => value.ToString("N0", CultureInfo.InvariantCulture);
         foreach (var row in figures.FigureTwelve)
             table.Row(G(row.Target), row.QssQubits > 0 ? row.QssQubits.ToString(CultureInfo.InvariantCulture) : "> 12", row.QssQubits > 0 ? Count(row.QssIterations) : "–",
-                row.QssQubits > 0 ? Count(Supersampling.QssRequest.QueriesPerRun(row.QssQubits)) : "–", row.QssQubits > 0 ? F(row.QssError) : "–", "0",
+                row.QssQubits > 0 ? Count(QssRequest.QueriesPerRun(row.QssQubits)) : "–", row.QssQubits > 0 ? F(row.QssError) : "–", "0",
                 row.QCoinSteps > 0 ? row.QCoinSteps.ToString(CultureInfo.InvariantCulture) : "> 10", row.QCoinSteps > 0 ? Count(row.QCoinIterations) : "–",
-                row.QCoinSteps > 0 ? Count(FigureTwelveFlips * Supersampling.QCoinEstimator.MinimumQueries(row.QCoinSteps)) : "–", row.QCoinSteps > 0 ? F(row.QCoinError) : "–");
+                row.QCoinSteps > 0 ? Count(FigureTwelveFlips * QCoinEstimator.MinimumQueries(row.QCoinSteps)) : "–", row.QCoinSteps > 0 ? F(row.QCoinError) : "–");
         report.Table(table);
         var rows = figures.FigureTwelve.Where(r => r.QssQubits > 0).ToArray();
         report.Plot("fig12", new PlotSpec("Fig. 12: register qubits and iterations per circuit against ε (no noise)", "error ε", "count", AxisScale.Log10, AxisScale.Log10,

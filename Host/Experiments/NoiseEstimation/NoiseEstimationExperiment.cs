@@ -2,6 +2,7 @@ using System.Diagnostics;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
@@ -83,23 +84,23 @@ public static class NoiseEstimationExperiment
         private readonly SeededRandom _root = new(seed);
         private ulong _next = RandomStreams.Supersampling;
 
-        public ISupersamplingEngine Engine(double rate, bool direct = false)
+        public ICoinEngine Engine(double rate, bool direct = false)
         {
-            var engine = new AnalyticSupersamplingEngine(_root.Fork(_next++), rate == 0 ? null : NoiseModel.Depolarizing(rate));
+            var engine = new AnalyticCoinEngine(_root.Fork(_next++), rate == 0 ? null : NoiseModel.Depolarizing(rate));
             return direct ? new DirectCoinEngine(engine) : engine;
         }
 
         public SeededRandom Inputs() => _root.Fork(_next++);
 
         /// <summary>The single-qubit coins of the paper's device runs under <paramref name="device"/> (null: noiseless).</summary>
-        public ISupersamplingEngine Device(DeviceNoiseModel? device) => new DirectCoinEngine(new AnalyticSupersamplingEngine(_root.Fork(_next++), device: device));
+        public ICoinEngine Device(DeviceNoiseModel? device) => new DirectCoinEngine(new AnalyticCoinEngine(_root.Fork(_next++), device: device));
     }
 
-    private static double MeanAbsoluteError(IMeanEstimator estimator, IReadOnlyList<double[]> values, ISupersamplingEngine engine)
+    private static double MeanAbsoluteError(IMeanEstimator estimator, IReadOnlyList<double[]> values, ICoinEngine engine)
     {
         using var _ = engine;
         var estimates = estimator.Estimate(values, engine);
-        return values.Select((v, j) => Math.Abs(estimates[j] - SubpixelValues.Mean(v))).Average();
+        return values.Select((v, j) => Math.Abs(estimates[j] - CoinValues.Mean(v))).Average();
     }
 
     private static List<StepsPoint> Steps(NoiseEstimationSettings settings, Streams streams)
@@ -141,7 +142,7 @@ public static class NoiseEstimationExperiment
             .Select(_ => Enumerable.Range(0, NoiseEstimationSettings.NisqSubpixels).Select(_ => random.NextDouble()).ToArray()).ToArray();
         var points = new List<MethodPoint>();
         // The baselines every rate's row shows: classical Monte Carlo (the noiseless engine's samples) and always answering ½.
-        var half = pixels.Average(v => Math.Abs(0.5 - SubpixelValues.Mean(v)));
+        var half = pixels.Average(v => Math.Abs(0.5 - CoinValues.Mean(v)));
         var classical = NoiseEstimationSettings.NisqCounterBits.Select(QssRequest.QueriesPerRun)
             .ToDictionary(q => q, q => MeanAbsoluteError(new MonteCarloEstimator(q), pixels, streams.Engine(0)));
         foreach (var rate in NoiseEstimationSettings.NisqRates)

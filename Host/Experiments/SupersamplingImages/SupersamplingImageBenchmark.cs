@@ -5,6 +5,7 @@ using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Scenes.Generation;
 using QuantumRayTracing.Search;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
@@ -41,7 +42,7 @@ public static class SupersamplingImageBenchmark
     {
         var table = settings.UsesLookupTable ? QssLookupTable.Exact(settings.Subpixels, settings.CounterBitsOrDefault) : null;
         var estimator = settings.CreateEstimator(table);
-        using var engine = SupersampleRun.CreateEngine(Engines.EngineKind.Analytic, seed, 1);
+        using var engine = CoinEngines.Create(Engines.EngineKind.Analytic, seed, 1);
         var result = ImageSupersampler.Run(input, estimator, engine);
         return new Run(image, input.Width, input.Side, Label(settings), estimator.Queries, seed, result, SupersampleError.Of(input, result));
     }

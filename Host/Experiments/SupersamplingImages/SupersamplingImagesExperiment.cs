@@ -2,6 +2,7 @@ using System.Globalization;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Reports;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 using static QuantumRayTracing.Experiments.SupersamplingImageBenchmark;
 

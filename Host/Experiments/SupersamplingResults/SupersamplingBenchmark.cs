@@ -1,4 +1,5 @@
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
@@ -24,7 +25,7 @@ public static class SupersamplingBenchmark
         var stream = 0UL;
         Point Run(IMeanEstimator estimator, string method, int parameter)
         {
-            var engine = new AnalyticSupersamplingEngine(root.Fork(RandomStreams.Supersampling + stream++));
+            var engine = new AnalyticCoinEngine(root.Fork(RandomStreams.Supersampling + stream++));
             var estimates = estimator.Estimate(values, engine);
             var error = estimates.Select((e, j) => Math.Abs(e - values[j][0])).Average();
             var point = new Point(method, parameter, estimator.Queries, error);
