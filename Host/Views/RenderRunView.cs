@@ -62,7 +62,9 @@ public static class RenderRunView
         AnsiConsole.WriteLine($"error against the classical render{sameSamples}: NRMSE {error.Nrmse:P2} (RMS of 8-bit channel differences / reference range), #Dpix {error.DifferentPixels}, %Dpix {error.DifferentShare:P2}");
         // Against the accuracy budget: the expected share the searches allow (docs/accuracy.md) and the measured one.
         var budget = figures.Budget;
-        AnsiConsole.WriteLine($"wrong pixels: expected {budget.ExpectedWrongPixels:0.0} ({budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}); "
+        // An estimated light differs from every sample traced wherever the area light falls: those pixels are not search errors.
+        var measured = settings.Options.Light is null ? "" : ", the light estimate's own differences included (the budget covers the searches)";
+        AnsiConsole.WriteLine($"wrong pixels: expected {budget.ExpectedWrongPixels:0.0} ({budget.ExpectedShare:P3}), measured {error.DifferentPixels} ({error.DifferentShare:P3}){measured}; "
             + (budget.Share is { } share ? $"budget {share:P1}" : "no budget (its searches run as configured)"));
         if (budget.Exceeded)
             AnsiConsole.WriteLine(settings.Engine.IdealPlan
