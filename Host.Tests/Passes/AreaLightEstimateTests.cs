@@ -34,7 +34,7 @@ public class AreaLightEstimateTests
     }
 
     private static PassPlan Plan(ulong seed, LightEstimation? light) =>
-        new(Area, new SceneGeometry(Area), new ClassicalHitSearch(), new RenderOptions(Size, Size, Seed: seed, AreaSamples: Samples, Light: light), null, null, null, null);
+        new(Area, new SceneGeometry(Area), new ClassicalHitSearch(), new RenderOptions(Size, Size, Seed: seed, AreaSamples: Samples, Light: light).ForPasses(), null, null, null, null);
 
     // Every sample traced with certain visibility: the exact mean of each point's set.
     private static Vec3[] Traced(ulong seed) => AreaLightPass.Run(Plan(seed, null), Points, Points.Count).Irradiance;

@@ -17,7 +17,7 @@ public sealed class CheapConfirmationTests
     // The per-ray share of a 64x64 primary pass's allowance: half of 0.1 % of the pixels over its 4,096 rays.
     private const double Share = 0.0005;
 
-    private static readonly QSearchSchedule Fixed = ConfirmationPlanner.Cheapest(N, RenderOptions.ConfirmationMaxT, 0.4)!;
+    private static readonly QSearchSchedule Fixed = ConfirmationPlanner.Cheapest(N, ConfirmationPlanner.MaxT, 0.4)!;
 
     private static QuantumHitSearch Search() => new(new AnalyticEngine(new SeededRandom(1)), new SeededRandom(2), new QSearchOptions());
 
@@ -40,11 +40,11 @@ public sealed class CheapConfirmationTests
         using var search = Search();
         var sized = new CheapConfirmation(Fixed, sized: true, search, N, full: null);
         var (many, few) = (sized.For(3072, Share), sized.For(24, Share));
-        double Miss(QSearchSchedule s) => AccuracyBudget.WorstMiss(search, N, s);
+        double Miss(QSearchSchedule s) => ConfirmationPlanner.WorstMiss(search, N, s);
         Assert.True(Miss(many) > 0.4, $"3,072 rays: {many}, miss {Miss(many):0.000}");
         Assert.True(search.EmptySearchCost(N, many) < search.EmptySearchCost(N, Fixed), $"3,072 rays: {many} costs as much as {Fixed}");
         Assert.True(Miss(few) < 0.4, $"24 rays: {few}, miss {Miss(few):0.000}");
         Assert.True(sized.Contains(many) && sized.Contains(few) && sized.Contains(Fixed));
-        Assert.False(sized.Contains(ConfirmationPlanner.Cheapest(N, RenderOptions.ConfirmationMaxT, 0.4)), "a round's own list is not the cheap path's");
+        Assert.False(sized.Contains(ConfirmationPlanner.Cheapest(N, ConfirmationPlanner.MaxT, 0.4)), "a round's own list is not the cheap path's");
     }
 }

@@ -132,7 +132,7 @@ public class SampledLightRenderTests
         var random = new SeededRandom(2);
         using var search = new QuantumHitSearch(new AnalyticEngine(random.Fork(RandomStreams.Engine)), random.Fork(RandomStreams.Search), new QSearchOptions());
         var options = new PassOptions(2, Neighbours: layout, Stop: new StopRule(0.05, random.Fork(RandomStreams.Stop)),
-            Lattice: new LatticePlan(2, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, 0.4)));
+            Lattice: new LatticePlan(2, ConfirmationPlanner.Cheapest(geometry.Count, ConfirmationPlanner.MaxT, 0.4)));
         var (occluded, metrics) = DirectPass.Run(AreaLightPass.Name, search, geometry, rays, options);
         var truth = rays.Select(r => RayTable.Build(geometry, r) is var t && t.Marked(t.FullRange).MarkedCount > 0).ToArray();
         for (var i = 0; i < rays.Length; i++)

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Views;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Output;

@@ -2,6 +2,7 @@ using System.CommandLine;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Passes;
 using QuantumRayTracing.Rendering;
+using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Cli;
 
@@ -57,13 +58,13 @@ public sealed class RenderOptionSet
 
     public readonly Option<double> AgreedMiss = new Option<double>("--agreed-miss")
     {
-        Description = $"Largest miss probability, for 1..{RenderOptions.ConfirmationMaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used). Under the accuracy budget each lattice level's list is sized by the budget unless this option is given.",
+        Description = $"Largest miss probability, for 1..{ConfirmationPlanner.MaxT} primitives left, of the cheap confirmation where lattice neighbours agree (the cheapest fixed list of Grover runs meeting it is used). Under the accuracy budget each lattice level's list is sized by the budget unless this option is given.",
         DefaultValueFactory = _ => RenderDefaults.AgreedMiss,
     }.StrictProbability();
 
     public readonly Option<double?> PlannedMiss = new Option<double?>("--planned-miss")
     {
-        Description = $"Replace Algorithm 1's random schedule in every search (but the cheap confirmations) by the cheapest fixed list of Grover runs that misses at most this share of rays with 1..{RenderOptions.ConfirmationMaxT} hits. Default: Algorithm 1.",
+        Description = $"Replace Algorithm 1's random schedule in every search (but the cheap confirmations) by the cheapest fixed list of Grover runs that misses at most this share of rays with 1..{ConfirmationPlanner.MaxT} hits. Default: Algorithm 1.",
         DefaultValueFactory = _ => RenderDefaults.PlannedMiss,
     }.StrictProbability();
 

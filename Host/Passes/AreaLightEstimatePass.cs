@@ -2,7 +2,6 @@ using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Randomness;
-using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Shading;
@@ -30,7 +29,7 @@ public static class AreaLightEstimatePass
     public static (Vec3[] Irradiance, LightError Error, PassMetrics Metrics) Run(PassPlan plan, IReadOnlyList<SurfacePoint> points, int primaryPoints, LightEstimation light)
     {
         var clock = System.Diagnostics.Stopwatch.StartNew();
-        var (scene, options) = (plan.Scene, plan.Options);
+        var (scene, options) = (plan.Scene, plan.Settings);
         var samples = options.AreaSamples;
         var lights = scene.AreaLights.Count;
         var sets = new SampleSet?[points.Count * lights];

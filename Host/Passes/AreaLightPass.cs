@@ -1,6 +1,5 @@
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
-using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Shading;
 
@@ -24,10 +23,10 @@ public static class AreaLightPass
     {
         var irradiance = new Vec3[points.Count];
         var chunks = new List<PassMetrics>();
-        var samples = plan.Options.AreaSamples;
+        var samples = plan.Settings.AreaSamples;
         for (var first = 0; first < samples; first += SamplesPerChunk)
         {
-            var connections = Connections(plan.Scene, points, primaryPoints, samples, first, Math.Min(samples, first + SamplesPerChunk), plan.Options.Seed);
+            var connections = Connections(plan.Scene, points, primaryPoints, samples, first, Math.Min(samples, first + SamplesPerChunk), plan.Settings.Seed);
             var rays = connections.Select(c => c.Sample.Ray).ToArray();
             var options = plan.Shadow(connections.Select(c => points[c.Point].Pixel).ToArray(), connections.Select(c => c.Channel).ToArray());
             var (occluded, metrics) = DirectPass.Run(Name, plan.Search, plan.Geometry, rays, options, plan.Progress);

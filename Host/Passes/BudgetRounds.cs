@@ -17,7 +17,7 @@ namespace QuantumRayTracing.Passes;
 /// </summary>
 public static class BudgetRounds
 {
-    /// <summary>Budget rounds at most; a pass still over its allowance after them says so (<see cref="Rendering.AccuracyBudget"/>).</summary>
+    /// <summary>Budget rounds at most; a pass still over its allowance after them says so.</summary>
     public const int MaxRounds = 8;
 
     /// <param name="name">The pass's name, for its metrics.</param>
@@ -45,7 +45,7 @@ public static class BudgetRounds
             // Nothing left to buy (no rays, or none that may be wrong): a pass left no allowance by earlier passes stops here too.
             if (rest <= allowance || rest <= 0) break;
             var schedule = Cheapest(search, count, full, cheap);
-            var miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule);
+            var miss = ConfirmationPlanner.WorstMiss(search, count, schedule);
             var cost = search.EmptySearchCost(count, schedule);
             var selected = new HashSet<int>();
             // A ray less likely wrong than the likeliest will still be after this round's confirmation waits: confirming
@@ -84,7 +84,7 @@ public static class BudgetRounds
     private static List<int>? Pool(IHitSearch search, IPooledSearch pooled, int count, double[] expected, double rest, double allowance, double price)
     {
         var open = expected.Count(q => q > 0);
-        var miss = Rendering.AccuracyBudget.WorstMiss(search, count, pooled.PooledSchedule(Math.Min(open, PooledRound.PoolSize(count)), count));
+        var miss = ConfirmationPlanner.WorstMiss(search, count, pooled.PooledSchedule(Math.Min(open, PooledRound.PoolSize(count)), count));
         var chosen = new List<int>();
         var (removed, wrong) = (0.0, 0.0);
         foreach (var i in Enumerable.Range(0, expected.Length).Where(i => expected[i] > 0).OrderByDescending(i => expected[i]).ThenBy(i => i))
@@ -113,10 +113,10 @@ public static class BudgetRounds
     /// </summary>
     public static QSearchSchedule? Cheapest(IHitSearch search, int count, QSearchSchedule? full, QSearchSchedule? cheap)
     {
-        double Gain(QSearchSchedule? s) => -Math.Log(Math.Max(1e-12, Rendering.AccuracyBudget.WorstMiss(search, count, s))) / search.EmptySearchCost(count, s);
+        double Gain(QSearchSchedule? s) => -Math.Log(Math.Max(1e-12, ConfirmationPlanner.WorstMiss(search, count, s))) / search.EmptySearchCost(count, s);
         var best = full;
         var bestGain = Gain(full);
-        IEnumerable<QSearchSchedule?> planned = PlannedMisses.Select(m => ConfirmationPlanner.Cheapest(count, Rendering.RenderOptions.ConfirmationMaxT, m));
+        IEnumerable<QSearchSchedule?> planned = PlannedMisses.Select(m => ConfirmationPlanner.Cheapest(count, ConfirmationPlanner.MaxT, m));
         foreach (var candidate in planned.Prepend(cheap).OfType<QSearchSchedule>())
             if (Gain(candidate) > bestGain) (best, bestGain) = (candidate, Gain(candidate));
         return best;

@@ -34,10 +34,10 @@ public sealed class CheapConfirmation
         First = first;
         (_search, _count) = (search, count);
         var round = BudgetRounds.Cheapest(search, count, full, first);
-        _roundRate = -Math.Log(Math.Max(1e-12, Rendering.AccuracyBudget.WorstMiss(search, count, round))) / search.EmptySearchCost(count, round);
+        _roundRate = -Math.Log(Math.Max(1e-12, ConfirmationPlanner.WorstMiss(search, count, round))) / search.EmptySearchCost(count, round);
         var lists = sized ? Planned.GetOrAdd(count, n => [.. Misses
-            .Select(m => ConfirmationPlanner.Cheapest(n, Rendering.RenderOptions.ConfirmationMaxT, m)).OfType<QSearchSchedule>()]) : [];
-        _ladder = [.. lists.Select(s => (s, Rendering.AccuracyBudget.WorstMiss(search, count, s), search.EmptySearchCost(count, s)))
+            .Select(m => ConfirmationPlanner.Cheapest(n, ConfirmationPlanner.MaxT, m)).OfType<QSearchSchedule>()]) : [];
+        _ladder = [.. lists.Select(s => (s, ConfirmationPlanner.WorstMiss(search, count, s), search.EmptySearchCost(count, s)))
             .OrderBy(l => l.Item3).ThenBy(l => l.Item2)];
         _schedules = [first, .. lists];
     }
@@ -94,7 +94,7 @@ public sealed class CheapConfirmation
     {
         if (_search is not IPooledSearch { PoolsRays: true } pooled || rays < 1) return _roundRate;
         var schedule = pooled.PooledSchedule(Math.Min(rays, PooledRound.PoolSize(_count)), _count);
-        var miss = Rendering.AccuracyBudget.WorstMiss(_search, _count, schedule);
+        var miss = ConfirmationPlanner.WorstMiss(_search, _count, schedule);
         return Math.Max(_roundRate, -Math.Log(Math.Max(1e-12, miss)) * schedule.Count / _count / _search.EmptySearchCost(_count, schedule));
     }
 }

@@ -1,6 +1,5 @@
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
-using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Shading;
 
@@ -25,7 +24,7 @@ public static class IndirectPass
 
     public static (Vec3[] Irradiance, PassMetrics Trace, PassMetrics Shadow) Run(PassPlan plan, IReadOnlyList<SurfacePoint> points, int primaryPoints)
     {
-        var (scene, options) = (plan.Scene, plan.Options);
+        var (scene, options) = (plan.Scene, plan.Settings);
         var vpls = options.Vpl;
         var sum = new Vec3[points.Count];
         var (traces, shadows) = (new List<PassMetrics>(), new List<PassMetrics>());

@@ -6,7 +6,7 @@ namespace QuantumRayTracing.Passes;
 /// One pass's record of every ray's searches, for the expected number of rays it leaves wrong. A ray is in an
 /// "episode" until a search finds something (a closer hit; for a shadow ray, an occluder, which ends it); the
 /// last episode ends with the ray's trailing empty searches, each missing with at most its schedule's worst miss
-/// m for t = 1..<see cref="Rendering.RenderOptions.ConfirmationMaxT"/>, so an episode that had something to find
+/// m for t = 1..<see cref="ConfirmationPlanner.MaxT"/>, so an episode that had something to find
 /// ends wrong with probability at most W = ∏ m. With π the share of episodes that have something to find,
 /// estimated per stratum from how often that stratum's searches found something (with half a find more, so a
 /// stratum that found nothing is not taken for right), a ray is wrong with probability π W / (1 − π + π W), the
@@ -86,8 +86,8 @@ public sealed class RayLedger
         double? own = null;
         return schedule =>
         {
-            if (schedule is null) return own ??= Rendering.AccuracyBudget.WorstMiss(search, count, null, machine);
-            if (!known.TryGetValue(schedule, out var miss)) known[schedule] = miss = Rendering.AccuracyBudget.WorstMiss(search, count, schedule, machine);
+            if (schedule is null) return own ??= ConfirmationPlanner.WorstMiss(search, count, null, machine);
+            if (!known.TryGetValue(schedule, out var miss)) known[schedule] = miss = ConfirmationPlanner.WorstMiss(search, count, schedule, machine);
             return miss;
         };
     }

@@ -37,7 +37,7 @@ public sealed record AccuracyBudget(double ExpectedWrongPixels, long Pixels, dou
     /// The consecutive empty searches a ray with no agreeing lattice neighbours needs before the stop rule
     /// may end it: the fewest s with n · m^s ≤ half the budget's wrong pixels, n the rays of the coarsest
     /// lattice (every ray without a lattice), which have no neighbour to go by, and m the full search's worst
-    /// miss for t ≤ <see cref="RenderOptions.ConfirmationMaxT"/>. A search that always answers (m = 0) needs one.
+    /// miss for t ≤ <see cref="ConfirmationPlanner.MaxT"/>. A search that always answers (m = 0) needs one.
     /// </summary>
     public static int RequiredMisses(double worstMiss, int width, int height, int latticeLevels)
     {
@@ -51,18 +51,4 @@ public sealed record AccuracyBudget(double ExpectedWrongPixels, long Pixels, dou
 
     /// <summary>The most consecutive empty searches the budget asks of a ray.</summary>
     public const int MaxRequiredMisses = 4;
-
-    /// <summary>The schedule's largest exact miss probability over t = 1..<see cref="RenderOptions.ConfirmationMaxT"/>.</summary>
-    /// <remarks>With <paramref name="machine"/>, the machine's misses (<see cref="IHitSearch.MachineMissProbability"/>) rather than the plan's.</remarks>
-    public static double WorstMiss(IHitSearch search, int count, QSearchSchedule? schedule, bool machine = false)
-    {
-        var worst = 0.0;
-        for (var t = 1; t <= Math.Min(count, RenderOptions.ConfirmationMaxT); t++)
-        {
-            var pt = new double[t + 1];
-            pt[t] = 1;
-            worst = Math.Max(worst, machine ? search.MachineMissProbability(count, pt, schedule) : search.MissProbability(count, pt, paperFormula: false, schedule));
-        }
-        return worst;
-    }
 }

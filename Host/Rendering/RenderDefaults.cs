@@ -46,7 +46,7 @@ public static class RenderDefaults
     public const int PaperIterations = 4;
 
     /// <summary>
-    /// The share of rays with 1..<see cref="RenderOptions.ConfirmationMaxT"/> hits left the cheap confirmation where lattice neighbours agree
+    /// The share of rays with 1..<see cref="Search.ConfirmationPlanner.MaxT"/> hits left the cheap confirmation where lattice neighbours agree
     /// may miss, when a render with a lattice names none and has no budget to size it (`render` names <see cref="AgreedMiss"/>).
     /// </summary>
     public const double FixedConfirmationMiss = 0.025;

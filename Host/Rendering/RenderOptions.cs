@@ -10,7 +10,7 @@ namespace QuantumRayTracing.Rendering;
 /// draws, and lattice-first tracing (levels of spacing 2, 4, …; 0 for none) with its cheap
 /// confirmation where neighbours agree; <see cref="PlannedMiss"/>, when set, replaces Algorithm 1's
 /// schedule in every other search by the cheapest fixed list missing at most that share of rays with
-/// 1..<see cref="ConfirmationMaxT"/> hits. <see cref="AreaSamples"/> is S, the shadow rays per surface point
+/// 1..<see cref="Search.ConfirmationPlanner.MaxT"/> hits. <see cref="AreaSamples"/> is S, the shadow rays per surface point
 /// and area light; <see cref="Vpl"/> the virtual point lights per surface point for single-bounce indirect light (0: none).
 /// <see cref="RequiredMisses"/>: the consecutive empty searches a ray its lattice neighbours do not vouch for needs before
 /// the stop rule may end it (1: the paper's rule); null leaves it to the budget: 1 when <see cref="Budget"/> holds the render (its
@@ -42,8 +42,10 @@ public sealed record RenderOptions(
     bool SizeConfirmation = true,
     LightEstimation? Light = null)
 {
-    /// <summary>The t a confirmation is planned for: at most ~6 primitives lie on a Qornell ray, 9 in Depth Complexity's deepest quadrant.</summary>
-    public const int ConfirmationMaxT = 8;
+    /// <summary>What the passes read of these options.</summary>
+    public PassSettings ForPasses() =>
+        new(Width, Height, Iterations, ShadowIterations, TieBreak, Neighbours, ShadowNeighbours, Budget is not null, AreaSamples, Vpl, Seed, Light);
+
 
     /// <summary>
     /// The paper's plain pipeline at a size: #IT TracePass and 2 DirectPass rounds, strict ties, no gathering, no

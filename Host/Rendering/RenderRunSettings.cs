@@ -1,3 +1,4 @@
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Noise;

@@ -57,14 +57,14 @@ public static class SceneRenderer
     {
         var geometry = new SceneGeometry(scene);
         var planned = options.PlannedMiss is { } miss
-            ? ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, miss)
+            ? ConfirmationPlanner.Cheapest(geometry.Count, ConfirmationPlanner.MaxT, miss)
             : null;
         var stop = StopRuleFor(search, geometry, cameraRays, options, planned, passes);
         var lattice = options.LatticeLevels > 0
-            ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, RenderOptions.ConfirmationMaxT, options.AgreedMiss),
+            ? new LatticePlan(options.LatticeLevels, ConfirmationPlanner.Cheapest(geometry.Count, ConfirmationPlanner.MaxT, options.AgreedMiss),
                 options.SizeConfirmation)
             : null;
-        return new PassPlan(scene, geometry, search, options, stop, lattice, planned, progress);
+        return new PassPlan(scene, geometry, search, options.ForPasses(), stop, lattice, planned, progress);
     }
 
     // Camera rays to their closest hits. Each hit is a surface point carrying 1 − mirror of its pixel; a mirror's
@@ -166,8 +166,8 @@ public static class SceneRenderer
     // error against the exact mean is returned.
     private static LightError? AddAreaLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)
     {
-        if (plan.Scene.AreaLights.Count == 0) return plan.Options.Light is null ? null : LightError.None;
-        var (area, error, metrics) = plan.Options.Light is { } light
+        if (plan.Scene.AreaLights.Count == 0) return plan.Settings.Light is null ? null : LightError.None;
+        var (area, error, metrics) = plan.Settings.Light is { } light
             ? AreaLightEstimatePass.Run(plan, points.Points, points.PrimaryCount, light)
             : AreaLightPass.Run(plan, points.Points, points.PrimaryCount) is var (traced, tracedMetrics) ? (traced, (LightError?)null, tracedMetrics) : default;
         for (var k = 0; k < points.Count; k++) extra[k] += area[k];
@@ -177,7 +177,7 @@ public static class SceneRenderer
 
     private static void AddIndirectLight(PassPlan plan, SurfacePoints points, Vec3[] extra, List<PassMetrics> passes)
     {
-        if (plan.Options.Vpl == 0) return;
+        if (plan.Settings.Vpl == 0) return;
         var (indirect, traceMetrics, shadowMetrics) = IndirectPass.Run(plan, points.Points, points.PrimaryCount);
         for (var k = 0; k < points.Count; k++) extra[k] += indirect[k];
         passes.AddRange([traceMetrics, shadowMetrics]);
@@ -196,7 +196,7 @@ public static class SceneRenderer
 
     private static RenderResult Result(PassPlan plan, Vec3[] radiance, List<PassMetrics> passes, AccuracyBudget budget)
     {
-        var options = plan.Options;
+        var options = plan.Settings;
         var image = RgbImage.FromLinear(options.Width, options.Height, (x, y) =>
         {
             var c = radiance[y * options.Width + x];
@@ -223,7 +223,7 @@ public static class SceneRenderer
         var miss = search.MissProbability(geometry.Count, pt, paperFormula: options.Stop == StopMode.Paper, planned);
         // With a budget its rounds search more where the expectation asks, cheaper than a fixed guard on every ray
         // (docs/rendering.md): the paper's one miss. Without one, the guard derived from the budget's target.
-        var guard = AccuracyBudget.RequiredMisses(AccuracyBudget.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
+        var guard = AccuracyBudget.RequiredMisses(ConfirmationPlanner.WorstMiss(search, geometry.Count, planned), options.Width, options.Height, options.LatticeLevels);
         var required = options.RequiredMisses ?? (options.Budget is not null ? 1 : guard);
         return new StopRule(miss, new SeededRandom(options.Seed).Fork(RandomStreams.Stop), required, options.Budget is not null ? guard : null);
     }

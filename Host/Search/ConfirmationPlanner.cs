@@ -12,6 +12,23 @@ namespace QuantumRayTracing.Search;
 /// </summary>
 public static class ConfirmationPlanner
 {
+    /// <summary>The t a confirmation is planned for: at most ~6 primitives lie on a Qornell ray, 9 in Depth Complexity's deepest quadrant.</summary>
+    public const int MaxT = 8;
+
+    /// <summary>The schedule's largest exact miss probability over t = 1..<see cref="MaxT"/>.</summary>
+    /// <remarks>With <paramref name="machine"/>, the machine's misses (<see cref="IHitSearch.MachineMissProbability"/>) rather than the plan's.</remarks>
+    public static double WorstMiss(IHitSearch search, int count, QSearchSchedule? schedule, bool machine = false)
+    {
+        var worst = 0.0;
+        for (var t = 1; t <= Math.Min(count, MaxT); t++)
+        {
+            var pt = new double[t + 1];
+            pt[t] = 1;
+            worst = Math.Max(worst, machine ? search.MachineMissProbability(count, pt, schedule) : search.MissProbability(count, pt, paperFormula: false, schedule));
+        }
+        return worst;
+    }
+
     public const int MaxRuns = 4;
 
     /// <summary>The cheapest list, smallest r first; null when no list of <see cref="MaxRuns"/> runs meets the bound.</summary>

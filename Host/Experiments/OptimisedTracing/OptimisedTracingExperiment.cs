@@ -85,7 +85,7 @@ public static class OptimisedTracingExperiment
         report.Text($"""
             *Paper's configuration*: NeighOpt on primary and specular rays, termination with the paper's p̄, up to 8 rounds, paper count.
             *Our default* (`render` with no options): NeighOpt, occluder gathering for shadow rays, termination with the exact p̄, up to {RenderDefaults.Iterations} rounds, a lattice of
-            {RenderDefaults.LatticeLevelsFor(size, size)} levels (from the image size) traced first with cheap confirmations (miss ≤ {RenderDefaults.AgreedMiss} for t ≤ {RenderOptions.ConfirmationMaxT}) where all coarser neighbours agree,
+            {RenderDefaults.LatticeLevelsFor(size, size)} levels (from the image size) traced first with cheap confirmations (miss ≤ {RenderDefaults.AgreedMiss} for t ≤ {ConfirmationPlanner.MaxT}) where all coarser neighbours agree,
             and rays no neighbour vouches for stopped only after the misses the {AccuracyBudget.Target:P1} accuracy budget asks (docs/rendering.md), conservative count. *Classical, same pipeline*:
             the classical engine through our default configuration — what the pipeline saves without any quantum search (docs/conventions.md).
             """);

@@ -1,6 +1,6 @@
 using QuantumRayTracing.Rays;
 
-namespace QuantumRayTracing.Rendering;
+namespace QuantumRayTracing.Passes;
 
 /// <summary>A mirror's reflection ray, queued for the specular pass: the pixel it lights and its mirror share.</summary>
 public readonly record struct SpecularRayWorkItem(int Pixel, double Mirror, Ray Ray);

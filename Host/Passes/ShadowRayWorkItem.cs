@@ -2,7 +2,7 @@ using QuantumRayTracing.Rays;
 using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Shading;
 
-namespace QuantumRayTracing.Rendering;
+namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// A shadow ray queued for the shadow pass: from surface point <paramref name="Point"/> towards light <paramref name="Light"/>

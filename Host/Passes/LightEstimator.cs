@@ -1,4 +1,4 @@
-namespace QuantumRayTracing.Rendering;
+namespace QuantumRayTracing.Passes;
 
 /// <summary>How `render` estimates each shading point's area light from its fixed set of samples (docs/rendering.md).</summary>
 public enum LightEstimator

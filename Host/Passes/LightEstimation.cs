@@ -1,7 +1,7 @@
 using QuantumRayTracing.Estimation;
 using QuantumRayTracing.Randomness;
 
-namespace QuantumRayTracing.Rendering;
+namespace QuantumRayTracing.Passes;
 
 /// <summary>
 /// Area light estimated as a mean over each shading point's fixed set of samples, read by <paramref name="Estimator"/>
