@@ -13,7 +13,7 @@ public sealed record Scene(
     double Ambient,
     IReadOnlyList<Material> Materials,
     IReadOnlyList<PointLight> Lights,
-    IReadOnlyList<Rectangle> Rectangles)
+    IReadOnlyList<Primitive> Primitives)
 {
     public IReadOnlyList<AreaLight> AreaLights { get; init; } = [];
 

@@ -37,5 +37,5 @@ public static class SceneCheck
 
     /// <summary>Name, primitives with their index register, lights by kind, size and grid.</summary>
     public static string Summary(Scene scene) =>
-        $"'{scene.Name}', {scene.Rectangles.Count} rectangles ({SearchRegisters.For(scene.Rectangles.Count).IndexQubits} index qubits), {scene.Lights.Count} point, {scene.AreaLights.Count} area and {scene.DirectionalLights.Count} directional lights, {scene.Width}x{scene.Height}, {scene.Grid}";
+        $"'{scene.Name}', {scene.Primitives.Count} rectangles ({SearchRegisters.For(scene.Primitives.Count).IndexQubits} index qubits), {scene.Lights.Count} point, {scene.AreaLights.Count} area and {scene.DirectionalLights.Count} directional lights, {scene.Width}x{scene.Height}, {scene.Grid}";
 }
