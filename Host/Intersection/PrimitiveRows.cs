@@ -8,7 +8,7 @@ namespace QuantumRayTracing.Intersection;
 /// scene, as a ray's lookup table and the classical tests see them on the scene's fixed-point grid. A kind gives its
 /// table row (eval-rpc), its shape test on the row (verify-rpc without the window), the rows of every primitive at
 /// once (the vectorised kernel), and the box a BVH bounds it with. One file per kind: <see cref="RectangleRows"/>,
-/// TriangleRows; <see cref="For"/> is where a kind is registered.
+/// <see cref="TriangleRows"/>; <see cref="For"/> is where a kind is registered.
 /// </summary>
 /// <remarks>
 /// Every kind follows the same depth and tie rule: a row's depth is quantised along the ray's principal axis in grid
@@ -32,6 +32,7 @@ public abstract class PrimitiveRows(CoordinateGrid grid, int first, int count)
     public static PrimitiveRows For(CoordinateGrid grid, int first, IReadOnlyList<Primitive> run) => run[0] switch
     {
         Rectangle => new RectangleRows(grid, first, [.. run.Cast<Rectangle>()]),
+        Triangle => new TriangleRows(grid, first, [.. run.Cast<Triangle>()]),
         _ => throw new ArgumentException($"no classical test for a {run[0].GetType().Name}", nameof(run)),
     };
 
