@@ -18,4 +18,7 @@ public sealed record Scene(
     public IReadOnlyList<AreaLight> AreaLights { get; init; } = [];
 
     public IReadOnlyList<DirectionalLight> DirectionalLights { get; init; } = [];
+
+    /// <summary>How the scene's triangles were put on <see cref="Grid"/>; null for a scene of rectangles alone.</summary>
+    public TriangleQuantisation? Quantisation { get; init; }
 }
