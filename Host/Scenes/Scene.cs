@@ -21,4 +21,7 @@ public sealed record Scene(
 
     /// <summary>How the scene's triangles were put on <see cref="Grid"/>; null for a scene of rectangles alone.</summary>
     public TriangleQuantisation? Quantisation { get; init; }
+
+    /// <summary>For a scene framed around a bare model file, the scene file it was loaded from, for the user to copy; null otherwise.</summary>
+    public string? FramingText { get; init; }
 }

@@ -17,6 +17,8 @@ public static class RenderRunView
     {
         var (scene, options) = (settings.Scene, settings.Options);
         AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives{Kinds(scene)}, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
+        if (scene.FramingText is { } framing)
+            AnsiConsole.WriteLine($"the model framed as a scene (save it as a scene file to edit the camera, floor and light):{Environment.NewLine}{framing}");
         if (scene.Quantisation is { } quantisation)
         {
             foreach (var warning in quantisation.Warnings) Console.Error.WriteLine($"warning: {warning}");
