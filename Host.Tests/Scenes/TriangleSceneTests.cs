@@ -80,6 +80,20 @@ public sealed class TriangleSceneTests : IDisposable
         Assert.Contains("largest vertex displacement 0.2 (0.4 steps)", SceneCheck.Summary(scene));
     }
 
+    /// <summary>A scene of rectangles and triangles as a cluster worker receives it (JSON) comes back the same, each primitive of its kind.</summary>
+    [Fact]
+    public void RectanglesAndTrianglesGoToAWorkerAndBack()
+    {
+        Obj("square.obj", Square);
+        var scene = SceneLoader.Load(Scene("""
+            "rectangles": [ { "min": [0, 0, 12], "max": [8, 8, 12], "material": "white" } ],
+            "meshes": [ { "file": "square.obj", "material": "white", "translate": [2, 3, 8] } ]
+            """));
+        var back = System.Text.Json.JsonSerializer.Deserialize<Scene>(QuantumRayTracing.Rendering.PartRequest.SceneText(scene))!;
+        Assert.Equal(scene.Primitives, back.Primitives);
+        Assert.Equal(scene.Quantisation!.LargestDisplacement, back.Quantisation!.LargestDisplacement);
+    }
+
     /// <summary>Element → phrase: each scene is one defect away from a valid one.</summary>
     public static TheoryData<string, string, string, string?> BadCases => new()
     {
