@@ -1,6 +1,7 @@
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Intersection;
 using QuantumRayTracing.Metrics;
+using QuantumRayTracing.Noise;
 using QuantumRayTracing.Randomness;
 using QuantumRayTracing.Rays;
 using QuantumRayTracing.Rendering;
@@ -192,7 +193,10 @@ public class TriangleRowsTests
         Assert.True(upper <= AccuracyBudget.Target, $"{wrong} of {pixels} wrong, upper limit {upper:P3}");
     }
 
-    /// <summary>The gate engine, whose oracle compares points with rectangles' bounds, refuses a scene with triangles in one line before any work; the other engines take it.</summary>
+    /// <summary>
+    /// The gate engine, whose oracle compares points with rectangles' bounds, refuses a scene with triangles in one line
+    /// before any work, and so does the gate-level noise oracle; the other engines, and the lookup noise oracle, take it.
+    /// </summary>
     [Fact]
     public void TheGateEngineRefusesATriangleSceneBeforeAnyWork()
     {
@@ -202,6 +206,10 @@ public class TriangleRowsTests
         Assert.DoesNotContain('\n', error.Message);
         foreach (var kind in Enum.GetValues<EngineKind>().Where(k => k != EngineKind.Gate))
             EngineFactory.CheckPrimitives(kind, scene);
+        // Under noise, the gate-level oracle's traced harm is a rectangle circuit's: a triangle scene takes the lookup oracle's.
+        var noisy = Assert.Throws<QuantumRayTracing.Output.UserError>(() => EngineFactory.Approximation(NoiseOracle.GateLevel, scene));
+        Assert.Contains("rectangles only", noisy.Message);
+        Assert.Equal(DepolarizingApproximation.Default, EngineFactory.Approximation(NoiseOracle.Lookup, scene));
     }
 
     // Swaps y and z: the floor and the pyramid lie in a horizontal plane, the pyramid's apex up.

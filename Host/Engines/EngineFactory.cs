@@ -89,6 +89,8 @@ public static class EngineFactory
     public static DepolarizingApproximation Approximation(NoiseOracle oracle, Scenes.Scene scene)
     {
         if (oracle == NoiseOracle.Lookup) return DepolarizingApproximation.Default;
+        if (scene.Primitives.Any(p => p is not Rectangle))
+            throw new UserError($"--noise-oracle gate-level: the gate-level oracle takes rectangles only, and {scene.Name} holds triangles, so no traced circuit is theirs; use --noise-oracle lookup");
         var traced = GateLevelExposureTable.For(scene) ?? throw new UserError(
             $"--noise-oracle gate-level: the gate-level circuit of {scene.Name} ({GateLevelExposure.KeyOf(scene)}) is not among the traced shapes ({string.Join("; ", GateLevelExposureTable.Keys)}); trace it with `qrt bench noise --parts exposure`, or use --noise-oracle lookup");
         return new DepolarizingApproximation(GateLevel: traced);
