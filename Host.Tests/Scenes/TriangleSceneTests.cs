@@ -156,6 +156,17 @@ public sealed class TriangleSceneTests : IDisposable
         Assert.Contains("65538 primitives; at most 65536", error.Problem);
     }
 
+    /// <summary>`estimate` and `export search` price and write the gate-level oracle, which takes rectangles only: a scene with triangles is refused in one line.</summary>
+    [Fact]
+    public void TheGateLevelOracleCommandsRefuseTriangles()
+    {
+        var scene = Scene(""" "triangles": [ { "a": [1, 1, 9], "b": [9, 1, 9], "c": [1, 9, 9], "material": "white" }, { "a": [1, 1, 10], "b": [9, 1, 10], "c": [1, 9, 10], "material": "white" } ] """);
+        Outcome.Of("estimate", scene, "--frame").AssertBadInput("scene scene", "takes rectangles only");
+        Outcome.Of("estimate", scene).AssertBadInput("scene scene", "takes rectangles only");
+        Outcome.Of("export", "search", scene, "--pixel", "0,0", "-o", _dir.File("out.qasm")).AssertBadInput("scene scene", "takes rectangles only");
+        Assert.False(File.Exists(_dir.File("out.qasm")));
+    }
+
     /// <summary>`render` on a scene whose mesh file is missing: exit code 2, one line naming the scene, the element and the mesh file, no image.</summary>
     [Fact]
     public void RenderRefusesAMissingMeshWithoutWritingAnImage()
