@@ -375,7 +375,7 @@ public partial class GateOracleTests(FullStateFixture fixture)
         for (var r = 0; r < rays; r++)
         {
             var origin = new Vec3(random.NextDouble() * side, random.NextDouble() * side, random.NextDouble() * side);
-            var target = geometry.Rectangles[random.NextInt(geometry.Count)];
+            var target = (Rectangle)geometry.Primitives[random.NextInt(geometry.Count)];
             var aim = new Vec3(
                 target.Min.X + random.NextDouble() * (target.Max.X - target.Min.X),
                 target.Min.Y + random.NextDouble() * (target.Max.Y - target.Min.Y),

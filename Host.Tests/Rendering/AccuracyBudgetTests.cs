@@ -36,7 +36,7 @@ public sealed class BudgetSample
     {
         var reference = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Reference(options));
         var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), options);
-        return new BudgetRender(scene.Name, options.Width, scene.Rectangles.Count, (long)options.Width * options.Height,
+        return new BudgetRender(scene.Name, options.Width, scene.Primitives.Count, (long)options.Width * options.Height,
             ImageError.Between(result.Image, reference.Image).DifferentPixels, result.Budget, result.Total.PerRayConservative);
     }
 }
@@ -180,7 +180,7 @@ public sealed class AccuracyBudgetTests(BudgetSample sample) : IClassFixture<Bud
         var scene = BroadRandomScene.Scattered(37, 3);
         var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), RenderDefaults.Options(4, 4));
         Assert.Equal(result.Total.Rays, result.Total.SettledRays);
-        Assert.Equal(scene.Rectangles.Count, result.Total.PerRayConservative, 9);
+        Assert.Equal(scene.Primitives.Count, result.Total.PerRayConservative, 9);
         Assert.Equal(0, result.Budget.ExpectedWrongPixels);
     }
 

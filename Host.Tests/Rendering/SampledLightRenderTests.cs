@@ -125,7 +125,7 @@ public class SampledLightRenderTests
         var points = new List<SurfacePoint>();
         for (var pixel = 0; pixel < camera.Length; pixel++)
             if (BruteForceClosest(RayTable.Build(geometry, camera[pixel])) is { } p)
-                points.Add(SurfacePoint.Of(pixel, camera[pixel], Hit.From(RayTable.Build(geometry, camera[pixel]), p), Area.Rectangles[p], 1));
+                points.Add(SurfacePoint.Of(pixel, camera[pixel], Hit.From(RayTable.Build(geometry, camera[pixel]), p), Area.Primitives[p], 1));
         var connections = AreaLightPass.Connections(Area, points, points.Count, 8, 0, 8, 1);
         var rays = connections.Select(c => c.Sample.Ray).ToArray();
         var layout = new PixelLayout(size, size, connections.Select(c => points[c.Point].Pixel).ToArray(), connections.Select(c => c.Channel).ToArray());

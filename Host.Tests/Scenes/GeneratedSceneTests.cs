@@ -28,11 +28,11 @@ public class GeneratedSceneTests
     {
         var lit = Load("qornell-64-area.json");
         var plain = Load("qornell-64.json");
-        Assert.Equal(plain.Rectangles.Select(r => (r.Min, r.Max, r.Material.Name)), lit.Rectangles.Select(r => (r.Min, r.Max, r.Material.Name)));
+        Assert.Equal(plain.Rectangles().Select(r => (r.Min, r.Max, r.Material.Name)), lit.Rectangles().Select(r => (r.Min, r.Max, r.Material.Name)));
         Assert.Empty(lit.Lights);
         Assert.Empty(lit.DirectionalLights);
         var light = Assert.Single(lit.AreaLights);
-        var ceiling = plain.Rectangles[1];
+        var ceiling = plain.Rectangles()[1];
         Assert.Equal((1, 1), (light.FlatAxis, ceiling.FlatAxis));
         Assert.Equal(ceiling.PlaneOffset, light.Min.Y);
         Assert.True(light.Min.X > ceiling.Min.X && light.Max.X < ceiling.Max.X && light.Min.Z > ceiling.Min.Z && light.Max.Z < ceiling.Max.Z);
@@ -41,7 +41,7 @@ public class GeneratedSceneTests
     [Fact]
     public void TempleIsLitOnlyBySunlightWithoutAmbient()
     {
-        Assert.Equal(32, Temple.Rectangles.Count);
+        Assert.Equal(32, Temple.Rectangles().Count);
         Assert.Single(Temple.DirectionalLights);
         Assert.Empty(Temple.Lights);
         Assert.Empty(Temple.AreaLights);
@@ -63,7 +63,7 @@ public class GeneratedSceneTests
             var table = RayTable.Build(geometry, new Ray(origin, direction));
             if (BruteForceClosest(table) is { } hit)
             {
-                Assert.NotEqual("filler", Temple.Rectangles[hit].Material.Name);
+                Assert.NotEqual("filler", Temple.Rectangles()[hit].Material.Name);
                 continue;
             }
             escaped++;

@@ -19,7 +19,7 @@ public sealed class RandomSceneTests
     [Fact]
     public void ScatteredHasACountThatIsNotAPowerOfTwo()
     {
-        var count = RandomScene.Build(RandomSceneKind.Scattered, 1).Rectangles.Count;
+        var count = RandomScene.Build(RandomSceneKind.Scattered, 1).Rectangles().Count;
         Assert.NotEqual(0, count & (count - 1));
     }
 
@@ -27,7 +27,7 @@ public sealed class RandomSceneTests
     public void TiesOverlapAtEqualDepth()
     {
         // Two rectangles facing the camera at one z whose extents overlap: rays through the overlap meet equal depths.
-        var rectangles = RandomScene.Build(RandomSceneKind.Ties, 1).Rectangles;
+        var rectangles = RandomScene.Build(RandomSceneKind.Ties, 1).Rectangles();
         var overlapping = rectangles.SelectMany((a, i) => rectangles.Skip(i + 1).Select(b => (a, b)))
             .Count(p => p.a.Min.Z == p.b.Min.Z && p.a.Min.X < p.b.Max.X && p.b.Min.X < p.a.Max.X && p.a.Min.Y < p.b.Max.Y && p.b.Min.Y < p.a.Max.Y);
         Assert.True(overlapping > 0);
@@ -37,7 +37,7 @@ public sealed class RandomSceneTests
     public void SharedEdgesMeetAlongWholeSides()
     {
         // Every box face shares each of its four edges with another rectangle of the scene.
-        var rectangles = RandomScene.Build(RandomSceneKind.SharedEdges, 1).Rectangles;
+        var rectangles = RandomScene.Build(RandomSceneKind.SharedEdges, 1).Rectangles();
         var edges = rectangles.SelectMany(Edges).GroupBy(e => e).Count(g => g.Count() >= 2);
         Assert.True(edges >= 4 * 12, $"{edges} shared edges");
     }
@@ -46,7 +46,7 @@ public sealed class RandomSceneTests
     public void DeepHasFourThousandRectanglesAndDozensOnARay()
     {
         var scene = RandomScene.Build(RandomSceneKind.Deep, 1);
-        Assert.Equal(4000, scene.Rectangles.Count);
+        Assert.Equal(4000, scene.Rectangles().Count);
         var centre = Rays.CameraRays.For(scene.Camera, 1, 1)[0];
         var table = RayTable.Build(new SceneGeometry(scene), centre);
         Assert.True(table.Marked(table.FullRange).MarkedCount >= 16, $"{table.Marked(table.FullRange).MarkedCount} on the centre ray");
@@ -57,12 +57,12 @@ public sealed class RandomSceneTests
     {
         var scene = RandomScene.Build(RandomSceneKind.Fractional, 1);
         Assert.Equal(2, scene.Grid.FractionBits);
-        Assert.Contains(scene.Rectangles, r => new[] { r.Min.X, r.Min.Y, r.Min.Z, r.Max.X, r.Max.Y, r.Max.Z }.Any(c => c != Math.Floor(c)));
+        Assert.Contains(scene.Rectangles(), r => new[] { r.Min.X, r.Min.Y, r.Min.Z, r.Max.X, r.Max.Y, r.Max.Z }.Any(c => c != Math.Floor(c)));
     }
 
     public static TheoryData<RandomSceneKind> Kinds() => [.. RandomScene.Kinds];
 
-    private static string Corners(Scene scene) => string.Join(";", scene.Rectangles.Select(r => $"{r.Min}-{r.Max}"));
+    private static string Corners(Scene scene) => string.Join(";", scene.Rectangles().Select(r => $"{r.Min}-{r.Max}"));
 
     private static IEnumerable<(Vec3, Vec3)> Edges(Rectangle r)
     {

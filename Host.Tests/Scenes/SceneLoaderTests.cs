@@ -30,11 +30,11 @@ public class SceneLoaderTests
         var scene = SceneLoader.Parse(Valid, "ok.json");
         Assert.Equal((16, 8), (scene.Width, scene.Height));
         Assert.Equal(new CoordinateGrid(4, 1), scene.Grid);
-        Assert.Equal(2, scene.Rectangles.Count);
-        Assert.Equal(2, scene.Rectangles[0].FlatAxis);
-        Assert.Equal(0, scene.Rectangles[1].FlatAxis);
-        Assert.True(scene.Rectangles[1].Material.IsMirror);
-        Assert.Equal(1, scene.Rectangles[1].Id);
+        Assert.Equal(2, scene.Rectangles().Count);
+        Assert.Equal(2, scene.Rectangles()[0].FlatAxis);
+        Assert.Equal(0, scene.Rectangles()[1].FlatAxis);
+        Assert.True(scene.Rectangles()[1].Material.IsMirror);
+        Assert.Equal(1, scene.Rectangles()[1].Id);
     }
 
     [Fact]
@@ -42,7 +42,7 @@ public class SceneLoaderTests
     {
         var files = Directory.GetFiles(RepositoryPaths.Scenes, "*.json");
         Assert.NotEmpty(files);
-        foreach (var file in files) Assert.NotEmpty(SceneLoader.Load(file).Rectangles);
+        foreach (var file in files) Assert.NotEmpty(SceneLoader.Load(file).Rectangles());
     }
 
     [Fact]

@@ -88,10 +88,10 @@ public class ShadingTests
     {
         var scene = With(4, 0, Rect(0, 0, 0, 8, 0, 8), Rect(9, 0, 0, 9, 8, 8), Rect(0, 0, 8, 8, 8, 8));
         var origin = new Vec3(1, 1, 1);
-        Assert.Equal(new Vec3(0, 1, 0), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(0.1, -1, 0)), scene.Rectangles[0]));
-        Assert.Equal(new Vec3(0, -1, 0), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(0.1, 1, 0)), scene.Rectangles[0]));
-        Assert.Equal(new Vec3(-1, 0, 0), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(1, 0.2, 0)), scene.Rectangles[1]));
-        Assert.Equal(new Vec3(0, 0, 1), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(0, 0, -2)), scene.Rectangles[2]));
+        Assert.Equal(new Vec3(0, 1, 0), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(0.1, -1, 0)), scene.Primitives[0]));
+        Assert.Equal(new Vec3(0, -1, 0), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(0.1, 1, 0)), scene.Primitives[0]));
+        Assert.Equal(new Vec3(-1, 0, 0), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(1, 0.2, 0)), scene.Primitives[1]));
+        Assert.Equal(new Vec3(0, 0, 1), SurfacePoint.FacingNormal(new Ray(origin, new Vec3(0, 0, -2)), scene.Primitives[2]));
     }
 
     [Fact]
@@ -101,7 +101,7 @@ public class ShadingTests
         // Down onto the floor mirror (id 1): normal +y, (1, −2, 3) → (1, 2, 3).
         var down = new Ray(new Vec3(1, 4, 1), new Vec3(1, -2, 3));
         var floorHit = new Hit(1, 4, 2, down.At(2));
-        var reflected = SecondaryRays.Specular(down, SurfacePoint.Of(0, down, floorHit, scene.Rectangles[1], 0.5));
+        var reflected = SecondaryRays.Specular(down, SurfacePoint.Of(0, down, floorHit, scene.Primitives[1], 0.5));
         Assert.Equal(new Vec3(1, 2, 3), reflected.Direction);
         Assert.Equal(new Vec3(3, 0, 7), reflected.Origin);
         Assert.Equal(1, reflected.ExcludedPrimitive);
@@ -109,7 +109,7 @@ public class ShadingTests
         // Onto the wall x = 9 (id 0) from the +x side: normal +x, (−1, 2, 0.5) → (1, 2, 0.5).
         var back = new Ray(new Vec3(11, 1, 1), new Vec3(-1, 2, 0.5));
         var wallHit = new Hit(0, 2, 2, back.At(2));
-        var bounced = SecondaryRays.Specular(back, SurfacePoint.Of(0, back, wallHit, scene.Rectangles[0], 0.5));
+        var bounced = SecondaryRays.Specular(back, SurfacePoint.Of(0, back, wallHit, scene.Primitives[0], 0.5));
         Assert.Equal(new Vec3(1, 2, 0.5), bounced.Direction);
         Assert.Equal(0, bounced.ExcludedPrimitive);
     }

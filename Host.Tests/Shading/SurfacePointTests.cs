@@ -5,7 +5,7 @@ using QuantumRayTracing.Shading;
 
 namespace QuantumRayTracing.Tests.Shading;
 
-/// <summary>A surface point keeps its normal as a byte: every axis normal comes back as given, anything else is refused.</summary>
+/// <summary>A surface point keeps its unit normal in single precision: every axis normal comes back exactly, any other unit normal to single precision, a vector that is not a unit one is refused.</summary>
 public class SurfacePointTests
 {
     private static readonly Material Grey = new("grey", new Vec3(0.5, 0.5, 0.5), 0);
@@ -44,11 +44,19 @@ public class SurfacePointTests
             }
     }
 
+    [Fact]
+    public void AUnitNormalOffTheAxesComesBackToSinglePrecision()
+    {
+        var normal = new Vec3(0.6, 0.8, 0);
+        var back = new SurfacePoint(0, AHit, normal, 1).Normal;
+        Assert.True((back - normal).Length < 1e-7, $"{back} is not {normal}");
+        Assert.NotEqual(normal, back);
+    }
+
     [Theory]
-    [InlineData(0.6, 0.8, 0)]
     [InlineData(1, 1, 0)]
     [InlineData(0, 0, 0)]
     [InlineData(0, 0, 2)]
-    public void ANormalOffTheAxesIsRefused(double x, double y, double z) =>
+    public void ANormalThatIsNotAUnitVectorIsRefused(double x, double y, double z) =>
         Assert.Throws<ArgumentException>(() => new SurfacePoint(0, AHit, new Vec3(x, y, z), 1));
 }

@@ -30,7 +30,7 @@ public static class CommonOptions
     /// <summary>The scene file argument; left out, the built-in Qornell box.</summary>
     public static Argument<FileInfo?> SceneFile() => new("scene")
     {
-        Description = $"Scene file (see docs/scenes.md). Default: the Qornell box with {DefaultScene.QornellPrimitives} primitives, built in.",
+        Description = $"Scene file (see docs/scenes.md), or a model file (.obj, .gltf, .glb) framed on a floor with a camera and a light. Default: the Qornell box with {DefaultScene.QornellPrimitives} primitives, built in.",
         Arity = ArgumentArity.ZeroOrOne,
     };
 

@@ -109,6 +109,8 @@ public sealed class EstimateCommand : Command
         _json.EnsureWritable(parse, parse.GetValue(_scene) is { } sceneFile ? [sceneFile.FullName] : []);
         checkOutputs?.Invoke();
         var scene = Scenes.Generation.DefaultScene.Load(parse.GetValue(_scene));
+        if (scene.Primitives.Any(p => p is not Scenes.Rectangle))
+            throw new UserError($"scene {scene.Name}: estimate prices the gate-level oracle, which takes rectangles only, and the scene holds triangles");
         var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
         return (scene, width, height);
     }

@@ -20,6 +20,12 @@ public static class EngineCapabilities
         /// <summary>Simulates the gate-level intersection oracle: exact, slow, tiny images only.</summary>
         public bool SimulatesOracleGates => kind == EngineKind.Gate;
 
+        /// <summary>
+        /// Searches scenes of any primitive kind: every engine whose tables are computed classically. The gate-level
+        /// oracle's circuits compare a point with a rectangle's bounds, so the gate engine takes rectangles only.
+        /// </summary>
+        public bool TakesAnyPrimitive => !kind.SimulatesOracleGates;
+
         /// <summary>Runs the QDK's qubit-loss model.</summary>
         public bool ModelsQubitLoss => kind == EngineKind.FullState;
 

@@ -2,6 +2,7 @@ using QuantumRayTracing.Bridge;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Randomness;
+using QuantumRayTracing.Scenes;
 using QuantumRayTracing.Search;
 using QuantumRayTracing.Search.Bvh;
 
@@ -88,9 +89,23 @@ public static class EngineFactory
     public static DepolarizingApproximation Approximation(NoiseOracle oracle, Scenes.Scene scene)
     {
         if (oracle == NoiseOracle.Lookup) return DepolarizingApproximation.Default;
+        if (scene.Primitives.Any(p => p is not Rectangle))
+            throw new UserError($"--noise-oracle gate-level: the gate-level oracle takes rectangles only, and {scene.Name} holds triangles, so no traced circuit is theirs; use --noise-oracle lookup");
         var traced = GateLevelExposureTable.For(scene) ?? throw new UserError(
             $"--noise-oracle gate-level: the gate-level circuit of {scene.Name} ({GateLevelExposure.KeyOf(scene)}) is not among the traced shapes ({string.Join("; ", GateLevelExposureTable.Keys)}); trace it with `qrt bench noise --parts exposure`, or use --noise-oracle lookup");
         return new DepolarizingApproximation(GateLevel: traced);
+    }
+
+    /// <summary>
+    /// Refuses, before any work, a scene whose primitives the engine cannot search: one line naming the scene, the engine
+    /// and what it takes.
+    /// </summary>
+    public static void CheckPrimitives(EngineKind kind, Scene scene)
+    {
+        if (kind.TakesAnyPrimitive) return;
+        var others = scene.Primitives.Count(p => p is not Rectangle);
+        if (others > 0)
+            throw new UserError($"scene {scene.Name}: the {kind.Name} engine's gate-level oracle takes rectangles only, and the scene holds {others} other primitives (triangles); use --engine analytic, fullstate, classical or bvh");
     }
 
     /// <summary>

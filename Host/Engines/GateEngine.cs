@@ -124,7 +124,7 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
         text.Append("], Near = ").Append(constants.Near.ToString(CultureInfo.InvariantCulture))
             .Append(", Limit = ").Append(constants.Limit.ToString(CultureInfo.InvariantCulture)).Append(", FlatAxes = [");
         for (var p = 0; p < n; p++)
-            text.Append(p > 0 ? ", " : "").Append(Int(geometry.Rectangles[p].FlatAxis));
+            text.Append(p > 0 ? ", " : "").Append(Int(geometry.FlatAxis(p)));
         var construction = input.Construction;
         return text.Append("], Construction = new ").Append(QSharpTypes.OracleConstruction)
             .Append(" { InPlaneAxes = ").Append(Bool(construction.InPlaneAxes))

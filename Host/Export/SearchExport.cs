@@ -21,7 +21,7 @@ public static class SearchExport
     /// <summary>The search of the camera ray through pixel (x, y) of a width × height image of <paramref name="scene"/>.</summary>
     public static ExportSubject ForPixel(Scene scene, int width, int height, int x, int y, OracleConstruction construction, int? iterations)
     {
-        if (scene.Rectangles.Count < 2) throw new Output.UserError($"scene {scene.Name}: a search needs at least 2 primitives");
+        if (scene.Primitives.Count < 2) throw new Output.UserError($"scene {scene.Name}: a search needs at least 2 primitives");
         var (input, label) = EstimateRay.Pixel(scene, new SceneGeometry(scene), width, height, x, y, construction);
         return Subject("qrt export search", scene.Name, $"camera ray through {label}", input, iterations);
     }

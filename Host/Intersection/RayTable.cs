@@ -34,7 +34,7 @@ public sealed class RayTable
     private readonly KeptRow[]? _kept;
 
     /// <summary>A compact table's row: the primitive, its quantised depth and its ray parameter t.</summary>
-    internal readonly record struct KeptRow(int Primitive, int Depth, double Distance);
+    public readonly record struct KeptRow(int Primitive, int Depth, double Distance);
 
     private RayTable(SceneGeometry geometry, Ray ray)
     {
@@ -74,29 +74,8 @@ public sealed class RayTable
         _kept = kept;
     }
 
-    /// <summary>One row of a ray's table: eval-rpc for primitive <paramref name="p"/> alone, O(1).</summary>
-    /// <remarks>Written out per axis, without vector indexers: it runs N times for every ray of every pass.</remarks>
-    public static TableRow EvaluateRow(SceneGeometry geometry, Ray ray, int p)
-    {
-        var flat = geometry.FlatAxis(p);
-        var (origin, direction) = (ray.Origin, ray.Direction);
-        var along = flat == 0 ? direction.X : flat == 1 ? direction.Y : direction.Z;
-        if (p == ray.ExcludedPrimitive || Math.Abs(along) < 1e-12) return default;
-        var t = (geometry.PlaneOffset(p) - (flat == 0 ? origin.X : flat == 1 ? origin.Y : origin.Z)) / along;
-        if (!(t > SnapTolerance) || t >= ray.MaxDistance) return default;
-        var scale = geometry.Scale;
-        var limit = 1 << geometry.Grid.Bits;
-        var x = flat == 0 ? geometry.Min(p, 0) : Quantise(origin.X + t * direction.X, scale);
-        if (x < 0 || x >= limit) return default;
-        var y = flat == 1 ? geometry.Min(p, 1) : Quantise(origin.Y + t * direction.Y, scale);
-        if (y < 0 || y >= limit) return default;
-        var z = flat == 2 ? geometry.Min(p, 2) : Quantise(origin.Z + t * direction.Z, scale);
-        if (z < 0 || z >= limit) return default;
-        // |direction| along the principal axis is the largest absolute component.
-        var principal = Math.Max(Math.Abs(direction.X), Math.Max(Math.Abs(direction.Y), Math.Abs(direction.Z)));
-        var depth = Quantise(t * principal, scale);
-        return depth < 0 ? default : new TableRow(true, x, y, z, depth, t);
-    }
+    /// <summary>One row of a ray's table: eval-rpc for primitive <paramref name="p"/> alone, O(1), by its kind's test.</summary>
+    public static TableRow EvaluateRow(SceneGeometry geometry, Ray ray, int p) => geometry.KindOf(p).Row(ray, p);
 
     /// <summary>
     /// One classical ray/primitive intersection test (what #C_Int counts): eval-rpc and verify-rpc for
@@ -108,11 +87,8 @@ public sealed class RayTable
         return row.Valid && window.Accepts(row.Depth, p) && Inside(geometry, p, row.X, row.Y, row.Z) ? row : null;
     }
 
-    /// <summary>verify-rpc's bounds test: the quantised point lies in primitive <paramref name="p"/>'s cells on every axis.</summary>
-    internal static bool Inside(SceneGeometry geometry, int p, int x, int y, int z) =>
-        x >= geometry.Min(p, 0) && x <= geometry.Max(p, 0)
-        && y >= geometry.Min(p, 1) && y <= geometry.Max(p, 1)
-        && z >= geometry.Min(p, 2) && z <= geometry.Max(p, 2);
+    /// <summary>verify-rpc's shape test, by primitive <paramref name="p"/>'s kind: the quantised point lies in it.</summary>
+    internal static bool Inside(SceneGeometry geometry, int p, int x, int y, int z) => geometry.KindOf(p).Inside(p, x, y, z);
 
     public static RayTable Build(SceneGeometry geometry, Ray ray)
     {
@@ -130,7 +106,8 @@ public sealed class RayTable
         // It runs for every ray of every pass: the rows go into per-thread scratch, then into one array of their exact size.
         var n = geometry.Count;
         if (_scratch is null || _scratch.Length < n) _scratch = new KeptRow[n];
-        var count = CompactRows.Evaluate(geometry, ray, _scratch, out var maxDepth);
+        var (count, maxDepth) = (0, 0);
+        foreach (var kind in geometry.Kinds) kind.AppendInside(ray, _scratch, ref count, ref maxDepth);
         return new RayTable(geometry, ray, Math.Max(1, 32 - int.LeadingZeroCount(maxDepth)), _scratch.AsSpan(0, count).ToArray());
     }
 

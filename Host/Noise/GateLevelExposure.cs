@@ -176,7 +176,7 @@ public sealed record GateLevelExposure(string Shape, NoiseExposure Outside, Nois
     public static string KeyOf(int primitives, int coordinateBits) =>
         string.Create(CultureInfo.InvariantCulture, $"N={primitives},bits={coordinateBits}");
 
-    public static string KeyOf(Scene scene) => KeyOf(scene.Rectangles.Count, scene.Grid.Bits);
+    public static string KeyOf(Scene scene) => KeyOf(scene.Primitives.Count, scene.Grid.Bits);
 
     public JsonObject ToJson()
     {

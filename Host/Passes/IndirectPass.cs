@@ -54,7 +54,7 @@ public static class IndirectPass
             {
                 if (hits[i] is not { } hit) continue;
                 var (k, v) = owners[i];
-                var vpl = SurfacePoint.Of(points[k].Pixel, rays[i], hit, scene.Rectangles[hit.Primitive], 1);
+                var vpl = SurfacePoint.Of(points[k].Pixel, rays[i], hit, scene.Primitives[hit.Primitive], 1);
                 foreach (var (light, sample) in DirectSamples(scene, vpl, options.Seed, Kind(k, primaryPoints), v))
                     connections.Add((i, (v * lights + light) * 2 + Kind(k, primaryPoints), sample));
             }
@@ -68,7 +68,7 @@ public static class IndirectPass
             {
                 if (occluded[j]) continue;
                 var ray = connections[j].Ray;
-                var albedo = scene.Rectangles[hits[ray]!.Value.Primitive].Material.Diffuse;
+                var albedo = scene.Primitives[hits[ray]!.Value.Primitive].Material.Diffuse;
                 sum[owners[ray].Point] += albedo * connections[j].Sample.Irradiance;
             }
         }

@@ -55,7 +55,8 @@ public sealed record RenderRunSettings(
     /// </summary>
     public void EnsureRunnable()
     {
-        EngineFactory.CheckNoise(Engine.Kind, Engine.NoiseModel, Engine.Device, Scene.Rectangles.Count);
+        EngineFactory.CheckPrimitives(Engine.Kind, Scene);
+        EngineFactory.CheckNoise(Engine.Kind, Engine.NoiseModel, Engine.Device, Scene.Primitives.Count);
         if (Engine.IdealPlan && !Engine.Kind.ApproximatesNoise) throw new UserError("--ideal-plan: only the analytic engine plans with a noise model; use --engine analytic");
         if (Engine.IdealPlan && !IsNoisy) throw new UserError("--ideal-plan: without a noise model (--noise, --device-noise, --readout-error) the plan is the ideal one already");
         if (Engine.Kind.ApproximatesNoise && IsNoisy) EngineFactory.Approximation(Engine.NoiseOracle, Scene);

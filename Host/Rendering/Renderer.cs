@@ -13,7 +13,8 @@ public static class Renderer
 {
     public static RenderResult Render(Scene scene, EngineSetup engine, RenderOptions options, Passes.IRenderProgress? progress = null)
     {
-        EngineFactory.CheckNoise(engine.Kind, engine.NoiseModel, engine.Device, scene.Rectangles.Count);
+        EngineFactory.CheckPrimitives(engine.Kind, scene);
+        EngineFactory.CheckNoise(engine.Kind, engine.NoiseModel, engine.Device, scene.Primitives.Count);
         // The simulator engines run the searches as configured: their renders exist to run the circuits (validation,
         // clusters, the qubit guard), and the budget's classical settle would take the small images they can simulate
         // off the simulator altogether.

@@ -82,8 +82,8 @@ public static class SceneRenderer
             var ray = cameraRays[pixel];
             if (SeenLight(plan.Scene, ray, hits[pixel]) is { } light) return new HitResult(light, null, null);
             if (hits[pixel] is not { } hit) return default;
-            var material = plan.Scene.Rectangles[hit.Primitive].Material;
-            var point = SurfacePoint.Of(pixel, ray, hit, plan.Scene.Rectangles[hit.Primitive], 1 - material.Mirror);
+            var material = plan.Scene.Primitives[hit.Primitive].Material;
+            var point = SurfacePoint.Of(pixel, ray, hit, plan.Scene.Primitives[hit.Primitive], 1 - material.Mirror);
             return new HitResult(null, point, material.IsMirror ? new(pixel, material.Mirror, SecondaryRays.Specular(ray, point)) : null);
         }, (pixel, result) =>
         {
@@ -112,8 +112,8 @@ public static class SceneRenderer
             var (pixel, mirror, ray) = queue[k];
             if (SeenLight(plan.Scene, ray, hits[k]) is { } light) return new HitResult(mirror * light, null, null);
             if (hits[k] is not { } hit) return default;
-            var rectangle = plan.Scene.Rectangles[hit.Primitive];
-            return new HitResult(null, SurfacePoint.Of(pixel, ray, hit, rectangle, mirror * (1 - rectangle.Material.Mirror)), null);
+            var primitive = plan.Scene.Primitives[hit.Primitive];
+            return new HitResult(null, SurfacePoint.Of(pixel, ray, hit, primitive, mirror * (1 - primitive.Material.Mirror)), null);
         }, (k, result) =>
         {
             if (result.Light is { } light) radiance[queue[k].Pixel] += light;
@@ -190,7 +190,7 @@ public static class SceneRenderer
         {
             var point = points[k];
             var local = WhittedShading.Radiance(scene, point, l => visible[k, l]);
-            if (extra[k] != Vec3.Zero) local += scene.Rectangles[point.Hit.Primitive].Material.Diffuse * extra[k];
+            if (extra[k] != Vec3.Zero) local += scene.Primitives[point.Hit.Primitive].Material.Diffuse * extra[k];
             return point.Weight * local;
         }, (k, shaded) => radiance[points[k].Pixel] += shaded);
 

@@ -13,9 +13,15 @@ public sealed record Scene(
     double Ambient,
     IReadOnlyList<Material> Materials,
     IReadOnlyList<PointLight> Lights,
-    IReadOnlyList<Rectangle> Rectangles)
+    IReadOnlyList<Primitive> Primitives)
 {
     public IReadOnlyList<AreaLight> AreaLights { get; init; } = [];
 
     public IReadOnlyList<DirectionalLight> DirectionalLights { get; init; } = [];
+
+    /// <summary>How the scene's triangles were put on <see cref="Grid"/>; null for a scene of rectangles alone.</summary>
+    public TriangleQuantisation? Quantisation { get; init; }
+
+    /// <summary>For a scene framed around a bare model file, the scene file it was loaded from, for the user to copy; null otherwise.</summary>
+    public string? FramingText { get; init; }
 }

@@ -24,7 +24,12 @@ public static class SceneCheck
                     foreach (var warning in mesh.File.Warnings) errors.WriteLine($"warning: {warning}");
                     output.WriteLine($"{file}: ok: {MeshCheck.Summary(mesh)}");
                 }
-                else output.WriteLine($"{file}: ok: {Summary(SceneLoader.Load(file.FullName))}");
+                else
+                {
+                    var scene = SceneLoader.Load(file.FullName);
+                    foreach (var warning in scene.Quantisation?.Warnings ?? []) errors.WriteLine($"warning: {warning}");
+                    output.WriteLine($"{file}: ok: {Summary(scene)}");
+                }
             }
             catch (Exception e) when (e is SceneError or MeshError)
             {
@@ -35,7 +40,13 @@ public static class SceneCheck
         return failures;
     }
 
-    /// <summary>Name, primitives with their index register, lights by kind, size and grid.</summary>
-    public static string Summary(Scene scene) =>
-        $"'{scene.Name}', {scene.Rectangles.Count} rectangles ({SearchRegisters.For(scene.Rectangles.Count).IndexQubits} index qubits), {scene.Lights.Count} point, {scene.AreaLights.Count} area and {scene.DirectionalLights.Count} directional lights, {scene.Width}x{scene.Height}, {scene.Grid}";
+    /// <summary>Name, primitives by kind with their index register, lights by kind, size and grid; for triangles, how they reached the grid.</summary>
+    public static string Summary(Scene scene)
+    {
+        var rectangles = scene.Primitives.Count(p => p is Rectangle);
+        var triangles = scene.Primitives.Count - rectangles;
+        var kinds = triangles == 0 ? $"{rectangles} rectangles" : $"{rectangles} rectangles and {triangles} triangles";
+        return $"'{scene.Name}', {kinds} ({SearchRegisters.For(scene.Primitives.Count).IndexQubits} index qubits), {scene.Lights.Count} point, {scene.AreaLights.Count} area and {scene.DirectionalLights.Count} directional lights, {scene.Width}x{scene.Height}, {scene.Grid}"
+            + (scene.Quantisation is { } q ? $"; {q.Describe(scene.Grid)}" : "");
+    }
 }

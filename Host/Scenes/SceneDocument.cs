@@ -19,6 +19,8 @@ public sealed class SceneDocument
     public List<AreaLightDocument>? AreaLights { get; set; }
     public List<DirectionalLightDocument>? DirectionalLights { get; set; }
     public List<RectangleDocument>? Rectangles { get; set; }
+    public List<TriangleDocument>? Triangles { get; set; }
+    public List<MeshDocument>? Meshes { get; set; }
 
     [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]
     public sealed class ImageDocument
@@ -78,5 +80,24 @@ public sealed class SceneDocument
         public double[]? Min { get; set; }
         public double[]? Max { get; set; }
         public string? Material { get; set; }
+    }
+
+    [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]
+    public sealed class TriangleDocument
+    {
+        public double[]? A { get; set; }
+        public double[]? B { get; set; }
+        public double[]? C { get; set; }
+        public string? Material { get; set; }
+    }
+
+    [JsonUnmappedMemberHandling(JsonUnmappedMemberHandling.Disallow)]
+    public sealed class MeshDocument
+    {
+        public string? File { get; set; }
+        public string? Material { get; set; }
+        public double[]? Translate { get; set; }
+        public double? Scale { get; set; }
+        public double[]? Rotate { get; set; }
     }
 }

@@ -1,4 +1,6 @@
+using System.Globalization;
 using System.Text.Json;
+using QuantumRayTracing.Scenes.Meshes;
 
 namespace QuantumRayTracing.Scenes;
 
@@ -9,6 +11,9 @@ namespace QuantumRayTracing.Scenes;
 public static class SceneLoader
 {
     public const int MaxRectangles = 4096;
+
+    /// <summary>The most primitives a scene may hold: 2^16, a 16-qubit index register.</summary>
+    public const int MaxPrimitives = 65_536;
     public const int MaxImageSide = 8192;
 
     private static readonly JsonSerializerOptions Json = new()
@@ -103,11 +108,6 @@ public static class SceneLoader
             var width = Int(image.Width, "image.width", 1, MaxImageSide);
             var height = Int(image.Height, "image.height", 1, MaxImageSide);
 
-            var gridDocument = d.Grid ?? throw Error("grid", "missing");
-            var integerBits = Int(gridDocument.IntegerBits, "grid.integerBits", 1, CoordinateGrid.MaxBits);
-            var fractionBits = Int(gridDocument.FractionBits ?? 0, "grid.fractionBits", 0, CoordinateGrid.MaxBits - integerBits);
-            var grid = new CoordinateGrid(integerBits, fractionBits);
-
             var camera = Camera(d.Camera ?? throw Error("camera", "missing"));
             var ambient = Number(d.Ambient ?? 0, "ambient", 0, 1);
 
@@ -131,21 +131,149 @@ public static class SceneLoader
                 lights.Add(new PointLight(Vector(l.Position, $"{element}.position"), intensity));
             }
 
-            var documents = d.Rectangles ?? throw Error("rectangles", "missing");
-            if (documents.Count == 0) throw Error("rectangles", "the scene has no primitives; at least one rectangle is needed");
+            var triangles = (d.Triangles ?? []).Select((t, k) => Triangle(t, k, materials)).ToArray();
+            var meshes = (d.Meshes ?? []).Select((m, k) => Mesh(m, k, materials)).ToArray();
+            var hasTriangles = triangles.Length + meshes.Length > 0;
+            var documents = d.Rectangles ?? (hasTriangles ? [] : throw Error("rectangles", "missing"));
+            if (documents.Count == 0 && !hasTriangles) throw Error("rectangles", "the scene has no primitives; at least one rectangle, triangle or mesh is needed");
             if (documents.Count > MaxRectangles) throw Error("rectangles", $"{documents.Count} rectangles; at most {MaxRectangles} are supported");
+            var total = (long)documents.Count + triangles.Length + meshes.Sum(m => (long)m.Mesh.Triangles.Count);
+            if (total > MaxPrimitives) throw Error(hasTriangles ? "meshes" : "rectangles", $"the scene holds {total} primitives; at most {MaxPrimitives} are supported (a 16-qubit index register)");
+
+            var grid = d.Grid is { } gridDocument ? Grid(gridDocument) : hasTriangles ? ChosenGrid(documents, triangles, meshes) : throw Error("grid", "missing");
             var rectangles = documents.Select((r, k) => Rectangle(r, k, grid, materials)).ToArray();
-            CameraOffPrimitives(camera.Position, rectangles);
+            var (onGrid, quantisation) = hasTriangles ? OnGrid(grid, d.Grid is null, rectangles.Length, triangles, meshes) : ([], null);
+            Primitive[] primitives = [.. rectangles, .. onGrid];
+            CameraOffPrimitives(camera.Position, primitives);
 
             var areaLights = (d.AreaLights ?? []).Select(AreaLight).ToArray();
             var directionalLights = (d.DirectionalLights ?? []).Select(DirectionalLight).ToArray();
 
             return new Scene(d.Name ?? Path.GetFileNameWithoutExtension(file), width, height, grid, camera, ambient,
-                materials.Values.ToArray(), lights, rectangles)
+                materials.Values.ToArray(), lights, primitives)
             {
                 AreaLights = areaLights,
                 DirectionalLights = directionalLights,
+                Quantisation = quantisation,
             };
+        }
+
+        private CoordinateGrid Grid(SceneDocument.GridDocument g)
+        {
+            var integerBits = Int(g.IntegerBits, "grid.integerBits", 1, CoordinateGrid.MaxBits);
+            var fractionBits = Int(g.FractionBits ?? 0, "grid.fractionBits", 0, CoordinateGrid.MaxBits - integerBits);
+            return new CoordinateGrid(integerBits, fractionBits);
+        }
+
+        // A scene's triangles as written: corners and material, each checked, not yet on a grid.
+        private sealed record TriangleEntry(string Element, Vec3 A, Vec3 B, Vec3 C, Material Material);
+
+        // A mesh as placed by its transform, zero-area triangles dropped, not yet on a grid.
+        private sealed record MeshEntry(string Element, string Path, TriangleMesh Mesh, Material Material, IReadOnlyList<string> Warnings);
+
+        private TriangleEntry Triangle(SceneDocument.TriangleDocument? t, int k, Dictionary<string, Material> materials)
+        {
+            var element = $"triangles[{k}]";
+            if (t is null) throw Error(element, "is null");
+            var (a, b, c) = (Vector(t.A, $"{element}.a"), Vector(t.B, $"{element}.b"), Vector(t.C, $"{element}.c"));
+            if ((b - a).Cross(c - a) == Vec3.Zero) throw Error(element, "has no area: its corners coincide or lie on one line");
+            return new TriangleEntry(element, a, b, c, MaterialOf(t.Material, element, materials));
+        }
+
+        private MeshEntry Mesh(SceneDocument.MeshDocument? m, int k, Dictionary<string, Material> materials)
+        {
+            var element = $"meshes[{k}]";
+            if (m is null) throw Error(element, "is null");
+            var name = m.File ?? throw Error($"{element}.file", "missing");
+            var material = MaterialOf(m.Material, element, materials);
+            var transform = new MeshTransform(m.Translate is null ? Vec3.Zero : Vector(m.Translate, $"{element}.translate"),
+                Number(m.Scale ?? 1, $"{element}.scale", double.Epsilon, double.MaxValue),
+                m.Rotate is null ? Vec3.Zero : Vector(m.Rotate, $"{element}.rotate"));
+            // Relative to the scene file, as an image's path in an HTML page is to the page.
+            var path = Path.Combine(Path.GetDirectoryName(Path.GetFullPath(file)) ?? "", name);
+            try
+            {
+                var read = MeshReader.Read(path);
+                var (mesh, zeroArea) = transform.Apply(read.Mesh).WithoutDegenerate();
+                if (mesh.Triangles.Count == 0)
+                    throw new MeshError(path, "triangles", zeroArea == 1 ? "the only triangle has zero area" : $"all {zeroArea} triangles have zero area");
+                return new MeshEntry(element, path, mesh, material, read.Warnings);
+            }
+            catch (MeshError e)
+            {
+                throw Error(element, e.Message);
+            }
+        }
+
+        // The grid from the primitives where they stand: the largest coordinate and the smallest triangle edge (GridChoice).
+        private CoordinateGrid ChosenGrid(IReadOnlyList<SceneDocument.RectangleDocument?> rectangles, TriangleEntry[] triangles, MeshEntry[] meshes)
+        {
+            var corners = triangles.SelectMany(t => new[] { t.A, t.B, t.C })
+                .Concat(meshes.SelectMany(m => m.Mesh.Triangles.SelectMany(t => new[] { m.Mesh.Corner(t, 0), m.Mesh.Corner(t, 1), m.Mesh.Corner(t, 2) })))
+                .Concat(rectangles.SelectMany(r => new[] { r?.Min, r?.Max }).OfType<double[]>().Where(v => v.Length == 3).Select(v => new Vec3(v[0], v[1], v[2])));
+            var reach = corners.Max(v => Math.Max(v.X, Math.Max(v.Y, v.Z)));
+            var edges = triangles.Select(t => Math.Min((t.B - t.A).Length, Math.Min((t.C - t.B).Length, (t.A - t.C).Length)))
+                .Concat(meshes.Select(m => m.Mesh.SmallestEdge)).Where(e => e > 0);
+            try
+            {
+                return GridChoice.InPlace(reach, edges.Min(), file).Grid;
+            }
+            catch (MeshError e)
+            {
+                throw Error("grid", $"{e.Problem}, or give a grid");
+            }
+        }
+
+        // The triangles and meshes rounded to the grid, ids after the rectangles', and what the rounding did.
+        private (Triangle[] Triangles, TriangleQuantisation Quantisation) OnGrid(CoordinateGrid grid, bool chosen, int first, TriangleEntry[] entries, MeshEntry[] meshes)
+        {
+            var triangles = new List<Triangle>();
+            var (largest, collapsed) = (0.0, 0);
+            foreach (var t in entries)
+            {
+                var corners = new[] { ("a", t.A), ("b", t.B), ("c", t.C) }.Select(c => OnGrid(grid, c.Item2, $"{t.Element}.{c.Item1}")).ToArray();
+                largest = Math.Max(largest, Math.Max((corners[0] - t.A).Length, Math.Max((corners[1] - t.B).Length, (corners[2] - t.C).Length)));
+                if ((corners[1] - corners[0]).Cross(corners[2] - corners[0]) == Vec3.Zero)
+                    throw Error(t.Element, $"collapses to a line or a point on the {grid}: its corners are too close for the grid's step; give a grid with more fraction bits");
+                triangles.Add(new Triangle(first + triangles.Count, corners[0], corners[1], corners[2], t.Material));
+            }
+            foreach (var m in meshes)
+            {
+                foreach (var t in m.Mesh.Triangles)
+                    for (var k = 0; k < 3; k++) OnGrid(grid, m.Mesh.Corner(t, k), m.Element);
+                QuantisedMesh quantised;
+                try
+                {
+                    quantised = new GridChoice(grid, Vec3.Zero, 0, m.Mesh.SmallestEdge).Quantise(m.Mesh, m.Path);
+                }
+                catch (MeshError e)
+                {
+                    throw Error(m.Element, e.Message);
+                }
+                (largest, collapsed) = (Math.Max(largest, quantised.LargestDisplacement), collapsed + quantised.Collapsed);
+                var (mesh, start) = (quantised.Mesh, first + triangles.Count);
+                triangles.AddRange(mesh.Triangles.Select((t, k) => new Triangle(start + k, mesh.Corner(t, 0), mesh.Corner(t, 1), mesh.Corner(t, 2), m.Material)).ToArray());
+            }
+            return ([.. triangles], new TriangleQuantisation(chosen, largest, collapsed, [.. meshes.SelectMany(m => m.Warnings)]));
+        }
+
+        // A corner rounded to the nearest grid value (halves away from zero, as GridChoice rounds), which must lie on the grid.
+        private Vec3 OnGrid(CoordinateGrid grid, Vec3 corner, string element)
+        {
+            var scale = (double)(1 << grid.FractionBits);
+            var rounded = new Vec3(Math.Round(corner.X * scale, MidpointRounding.AwayFromZero) / scale,
+                Math.Round(corner.Y * scale, MidpointRounding.AwayFromZero) / scale, Math.Round(corner.Z * scale, MidpointRounding.AwayFromZero) / scale);
+            for (var axis = 0; axis < 3; axis++)
+                if (rounded[axis] < 0 || rounded[axis] > grid.Max)
+                    throw Error(element, string.Create(CultureInfo.InvariantCulture,
+                        $"corner {corner} lies outside the grid 0..{grid.Max} ({grid}) on axis {axis}; move it (translate) or scale it into the grid"));
+            return rounded;
+        }
+
+        private Material MaterialOf(string? name, string element, Dictionary<string, Material> materials)
+        {
+            if (name is null) throw Error($"{element}.material", "missing");
+            return materials.TryGetValue(name, out var material) ? material : throw Error($"{element}.material", $"'{name}' is not defined in materials");
         }
 
         // An emitter, not a primitive: any finite corners (no grid), flat on exactly one axis.
@@ -200,14 +328,12 @@ public static class SceneLoader
 
         // Primitives are flat, so a camera "inside" one lies in its plane within its bounds (edges included):
         // every primary ray would start on the surface, and which side it sees is undefined.
-        private void CameraOffPrimitives(Vec3 position, Rectangle[] rectangles)
+        private void CameraOffPrimitives(Vec3 position, IReadOnlyList<Primitive> primitives)
         {
-            foreach (var r in rectangles)
-            {
-                var on = Enumerable.Range(0, 3).All(axis => r.Min[axis] <= position[axis] && position[axis] <= r.Max[axis]);
-                if (on)
-                    throw Error("camera.position", $"[{position.X}, {position.Y}, {position.Z}] lies on rectangles[{r.Id}] (min [{r.Min.X}, {r.Min.Y}, {r.Min.Z}], max [{r.Max.X}, {r.Max.Y}, {r.Max.Z}]); move the camera off it");
-            }
+            foreach (var p in primitives.Where(p => p.Contains(position)))
+                throw Error("camera.position", p is Rectangle r
+                    ? $"[{position.X}, {position.Y}, {position.Z}] lies on rectangles[{r.Id}] (min [{r.Min.X}, {r.Min.Y}, {r.Min.Z}], max [{r.Max.X}, {r.Max.Y}, {r.Max.Z}]); move the camera off it"
+                    : $"[{position.X}, {position.Y}, {position.Z}] lies on triangle {p.Id} (corners {((Triangle)p).A}, {((Triangle)p).B}, {((Triangle)p).C}); move the camera off it");
         }
 
         private Rectangle Rectangle(SceneDocument.RectangleDocument? r, int id, CoordinateGrid grid, Dictionary<string, Material> materials)

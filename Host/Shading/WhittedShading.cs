@@ -11,7 +11,7 @@ public static class WhittedShading
     /// <summary>The radiance a surface point sends to the eye, before its pixel weight; <paramref name="visible"/>(l) says whether light l reaches it.</summary>
     public static Vec3 Radiance(Scene scene, SurfacePoint point, Func<int, bool> visible)
     {
-        var albedo = scene.Rectangles[point.Hit.Primitive].Material.Diffuse;
+        var albedo = scene.Primitives[point.Hit.Primitive].Material.Diffuse;
         var irradiance = new Vec3(scene.Ambient, scene.Ambient, scene.Ambient);
         for (var l = 0; l < scene.Lights.Count; l++)
         {

@@ -16,7 +16,14 @@ public static class RenderRunView
     public static void PrintModel(RenderRunSettings settings, ModelledRegisters plan)
     {
         var (scene, options) = (settings.Scene, settings.Options);
-        AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
+        AnsiConsole.WriteLine($"{scene.Name}: N = {plan.Primitives} primitives{Kinds(scene)}, {LightSummary(scene)}, {options.Width}x{options.Height} pixels, {scene.Grid}");
+        if (scene.FramingText is { } framing)
+            AnsiConsole.WriteLine($"the model framed as a scene (save it as a scene file to edit the camera, floor and light):{Environment.NewLine}{framing}");
+        if (scene.Quantisation is { } quantisation)
+        {
+            foreach (var warning in quantisation.Warnings) Console.Error.WriteLine($"warning: {warning}");
+            AnsiConsole.WriteLine($"triangles on the grid: {quantisation.Describe(scene.Grid)}; the classical reference renders the same quantised scene");
+        }
         if (settings.SamplesLight)
         {
             var converged = settings.Converged;
@@ -31,6 +38,13 @@ public static class RenderRunView
             AnsiConsole.WriteLine($"noise model: {settings.NoiseDescription}");
         if (plan.GateRegisters is { } registers)
             AnsiConsole.WriteLine($"gate-level oracle ({OracleConstruction.Default}), centre ray: {registers.RegisterQubits} register qubits ({registers.IndexQubits} index, {1 + registers.BoundRegisters} x {registers.CoordinateQubits} coordinate, {registers.DepthQubits} depth, {registers.FlagQubits} flags, 1 phase), {registers.PeakQubits} at peak with library auxiliaries");
+    }
+
+    // " (R rectangles, T triangles)" for a scene with triangles; nothing for rectangles alone.
+    private static string Kinds(Scene scene)
+    {
+        var rectangles = scene.Primitives.Count(p => p is Rectangle);
+        return rectangles == scene.Primitives.Count ? "" : $" ({rectangles} rectangles, {scene.Primitives.Count - rectangles} triangles)";
     }
 
     /// <summary>The run on <paramref name="pool"/> (null: local bridges): its plan first, its progress on standard error, its figures after.</summary>

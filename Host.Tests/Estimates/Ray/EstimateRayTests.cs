@@ -51,7 +51,7 @@ public sealed class EstimateRayTests
     public void SweepScenesHaveTheirSizeAndGrid(int primitives, int bits)
     {
         var scene = SceneLoader.Parse(SweepScene.Build(primitives, bits).ToJson(), "sweep.json");
-        Assert.Equal(primitives, scene.Rectangles.Count);
+        Assert.Equal(primitives, scene.Primitives.Count);
         Assert.Equal(new CoordinateGrid(bits, 0), scene.Grid);
         // Camera rays must meet primitives, or the estimates would be of an empty search.
         var geometry = new SceneGeometry(scene);

@@ -13,6 +13,8 @@ public static class EstimateRay
     /// <summary>The oracle input of the camera ray through pixel (x, y) of a width × height image.</summary>
     public static (OracleInput Input, string Label) Pixel(Scene scene, SceneGeometry geometry, int width, int height, int x, int y, OracleConstruction construction)
     {
+        if (!geometry.RectanglesOnly)
+            throw new Output.UserError($"scene {scene.Name}: the gate-level oracle takes rectangles only, and the scene holds triangles");
         var ray = CameraRays.For(scene.Camera, width, height)[y * width + x];
         var table = RayTable.Build(geometry, ray);
         return (new OracleInput(table, table.FullRange) { Construction = construction }, $"pixel ({x}, {y}) of {width}x{height}");

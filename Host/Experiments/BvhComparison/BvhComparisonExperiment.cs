@@ -55,7 +55,7 @@ public static class BvhComparisonExperiment
         var quantum = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), RenderDefaults.Options(settings.Size, settings.Size, settings.Seed)).Total;
         var hierarchy = BoundingVolumeHierarchy.Build(new SceneGeometry(scene));
         var build = (double)hierarchy.BuildWork / bvh.Rays;
-        return new Row(name, scene.Rectangles.Count, bvh.Rays, brute.PerRayConservative, bvh.PerRayConservative - build, build,
+        return new Row(name, scene.Primitives.Count, bvh.Rays, brute.PerRayConservative, bvh.PerRayConservative - build, build,
             quantum.PerRayConservative, hierarchy.Nodes.Count, hierarchy.BuildWork);
     }
 

@@ -104,7 +104,7 @@ public static class DeviceNoiseExperiment
                 }
         report.Table(renders);
         report.Text(FormattableString.Invariant($"""
-            Seed {settings.Seed}; brute force costs {settings.Scene.Rectangles.Count} Int/Ray. The noiseless render pools its searches (docs/rendering.md); under any
+            Seed {settings.Seed}; brute force costs {settings.Scene.Primitives.Count} Int/Ray. The noiseless render pools its searches (docs/rendering.md); under any
             noise they run one by one, each with its own noise, and the row at p = {Negligible:0e0}, where noise changes nothing, shows what that alone costs:
             compare the device rows with it, not with the noiseless one. The noise-aware lookup rows evolve the lookup circuit for every
             marked count the planner weighs (up to N), each as deep as its schedule goes: that, not the render, is their wall time.

@@ -83,7 +83,7 @@ public sealed class BenchNoiseCommand : Command
         var exposureScenes = parts.Contains("exposure") || parts.Contains("render")
             ? parse.GetValue(_report.SceneDirectory)!.GetFiles("*.json").OrderBy(f => f.Name, StringComparer.Ordinal)
                 .Select(f => (Path.GetFileNameWithoutExtension(f.Name), Scenes.SceneLoader.Load(f.FullName)))
-                .Where(s => s.Item2.Rectangles.Count <= NoiseBenchSettings.MaxExposurePrimitives).ToArray()
+                .Where(s => s.Item2.Primitives.Count <= NoiseBenchSettings.MaxExposurePrimitives).ToArray()
             : [];
         var settings = new NoiseBenchSettings(parts, parse.GetValue(_shots), parse.GetValue(_deviceShots), scenes, parse.GetValue(_size),
             parse.GetValue(_confirmSize), parse.GetValue(_confirmRates)!, parse.GetValue(_report.Workers), ExposureScenes: exposureScenes,

@@ -26,5 +26,5 @@ public static class GateCostEstimate
     }
 
     public static TimeSpan Of(Scene scene, RenderOptions options) =>
-        TimeSpan.FromSeconds(Rays(scene, options) * Math.Pow(scene.Rectangles.Count, 2.5) * SecondsPerRayUnit);
+        TimeSpan.FromSeconds(Rays(scene, options) * Math.Pow(scene.Primitives.Count, 2.5) * SecondsPerRayUnit);
 }

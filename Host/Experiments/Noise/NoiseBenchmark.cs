@@ -48,7 +48,7 @@ public static class NoiseBenchmark
                 }
                 Say($"gate-level noise exposure of {group.Key} ({name})");
                 exposures.Add((group.Key, names, GateLevelExposure.Trace(pool, GateLevelExposure.RepresentativeRay(scene), $"{name}'s circuit, {group.Key}",
-                    NoiseBenchSettings.HarmTraces(scene.Rectangles.Count), NoiseBenchSettings.GradedFraction(scene.Rectangles.Count))));
+                    NoiseBenchSettings.HarmTraces(scene.Primitives.Count), NoiseBenchSettings.GradedFraction(scene.Primitives.Count))));
             }
             if (settings.Parts.Contains("model"))
             {

@@ -99,9 +99,9 @@ public static class OptimisedTracingExperiment
             var o = Measure(scene, EngineKind.Analytic, best, ours);
             var c = Measure(scene, EngineKind.Classical, best, ours);
             var (publishedIntPerRay, publishedDpix) = PaperNumbers.Optimised[stem];
-            table7.Row(stem, N(scene.Rectangles.Count), F(p.Result.Total.PerRayPaper), N(p.Error.DifferentPixels), F(publishedIntPerRay), N(publishedDpix),
+            table7.Row(stem, N(scene.Primitives.Count), F(p.Result.Total.PerRayPaper), N(p.Error.DifferentPixels), F(publishedIntPerRay), N(publishedDpix),
                 F(o.Result.Total.PerRayConservative), N(o.Error.DifferentPixels), F(c.Result.Total.PerRayConservative), P(o.WallTime / c.WallTime, "0.0") + "x");
-            if (stem.StartsWith("qornell", StringComparison.Ordinal)) fit.Add((scene.Rectangles.Count, o.Result.Total.PerRayConservative));
+            if (stem.StartsWith("qornell", StringComparison.Ordinal)) fit.Add((scene.Primitives.Count, o.Result.Total.PerRayConservative));
         }
         progress("table 7: qornell-4096 (built in)");
         var large = SceneLoader.Parse(QornellBox.Build(4096).ToJson(), "built-in qornell-4096");

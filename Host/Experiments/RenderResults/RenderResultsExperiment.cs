@@ -42,7 +42,7 @@ public static class RenderResultsExperiment
             var paper = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, paperRule, workers), options, reference);
             var ours = RenderMeasurement.Run(scene, new EngineSetup(EngineKind.Analytic, ourRule, workers), options, reference);
             var published = PaperNumbers.Scalability[stem];
-            table2.Row(stem, N(scene.Rectangles.Count), N(options.Iterations), F(reference.Result.Total.PerRayConservative), F(paper.Result.Total.PerRayPaper), F(published),
+            table2.Row(stem, N(scene.Primitives.Count), N(options.Iterations), F(reference.Result.Total.PerRayConservative), F(paper.Result.Total.PerRayPaper), F(published),
                 (paper.Result.Total.PerRayPaper / published).ToString("0.00", CultureInfo.InvariantCulture), N(paper.Error.DifferentPixels),
                 F(ours.Result.Total.PerRayConservative), N(ours.Error.DifferentPixels), (ours.WallTime / reference.WallTime).ToString("0.0", CultureInfo.InvariantCulture) + "x");
         }

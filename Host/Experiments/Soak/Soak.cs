@@ -30,9 +30,9 @@ public static class Soak
     public static IReadOnlyList<SoakRow> Run(IReadOnlyList<string> sceneFiles, SoakSettings settings, Func<Scene, EngineKind, RenderOptions, IRenderProgress?, RenderResult> render,
         Func<string, IRenderProgress?>? progress = null, Action<SoakRow>? onRow = null)
     {
-        var scenes = sceneFiles.Select(Load).OrderBy(s => s.Scene is null).ThenBy(s => s.Scene?.Rectangles.Count ?? 0)
+        var scenes = sceneFiles.Select(Load).OrderBy(s => s.Scene is null).ThenBy(s => s.Scene?.Primitives.Count ?? 0)
             .ThenBy(s => s.Stem, StringComparer.Ordinal).ToArray();
-        var smallest = scenes.Where(s => s.Scene is not null).Select(s => s.Scene!.Rectangles.Count).DefaultIfEmpty(0).Min();
+        var smallest = scenes.Where(s => s.Scene is not null).Select(s => s.Scene!.Primitives.Count).DefaultIfEmpty(0).Min();
         var rows = new List<SoakRow>();
         void Add(SoakRow row)
         {
@@ -77,7 +77,7 @@ public static class Soak
     {
         private readonly List<string> _failures = [];
         private readonly List<TimeSpan> _times = [];
-        private int Primitives => scene.Rectangles.Count;
+        private int Primitives => scene.Primitives.Count;
 
         public SoakRow Row(int smallest)
         {

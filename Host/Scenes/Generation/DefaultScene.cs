@@ -1,3 +1,5 @@
+using QuantumRayTracing.Scenes.Meshes;
+
 namespace QuantumRayTracing.Scenes.Generation;
 
 /// <summary>The scene rendered when none is named: the Qornell box of the paper's figure 1.</summary>
@@ -11,8 +13,8 @@ public static class DefaultScene
     /// <summary>The stem default output names start with: the input file's name without extension, or the built-in scene's.</summary>
     public static string StemOf(string? inputFile) => inputFile is null ? Stem : Path.GetFileNameWithoutExtension(inputFile);
 
-    /// <summary>The scene file, or the built-in Qornell box when none is named.</summary>
+    /// <summary>The scene file, a bare model file framed as a scene (<see cref="ModelScene"/>), or the built-in Qornell box when none is named.</summary>
     public static Scene Load(FileInfo? file) => file is null
         ? SceneLoader.Parse(QornellBox.Build(QornellPrimitives).ToJson(), $"built-in {Stem}")
-        : SceneLoader.Load(file.FullName);
+        : MeshReader.IsMeshFile(file.FullName) ? ModelScene.Load(file.FullName) : SceneLoader.Load(file.FullName);
 }

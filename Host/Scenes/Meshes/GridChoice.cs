@@ -32,17 +32,28 @@ public sealed record GridChoice(CoordinateGrid Grid, Vec3 Offset, double Extent,
     public static GridChoice For(TriangleMesh mesh, string file)
     {
         var (min, _) = mesh.Bounds;
-        var extent = mesh.Extent;
+        // Zero minus the corner, not its negation: a corner at 0 gives an offset of 0, not −0.
+        return Choose(mesh.Extent, mesh.SmallestEdge, Vec3.Zero - min, file, "bounds", "the mesh spans");
+    }
+
+    /// <summary>
+    /// The grid for a scene's primitives where they stand (no placement, <see cref="Offset"/> zero): the integer bits reach
+    /// <paramref name="reach"/>, the largest coordinate of any primitive, and the fraction bits follow
+    /// <paramref name="smallestEdge"/>, the smallest triangle edge, by the rule above. <paramref name="file"/> names the scene in errors.
+    /// </summary>
+    public static GridChoice InPlace(double reach, double smallestEdge, string file) =>
+        Choose(reach, smallestEdge, Vec3.Zero, file, "grid", "the scene reaches");
+
+    private static GridChoice Choose(double extent, double smallestEdge, Vec3 offset, string file, string element, string reaches)
+    {
         var integerBits = 1;
         while (integerBits <= CoordinateGrid.MaxBits && Math.Pow(2, integerBits) - 1 < extent) integerBits++;
         if (integerBits > CoordinateGrid.MaxBits)
-            throw new MeshError(file, "bounds", string.Create(CultureInfo.InvariantCulture,
-                $"the mesh spans {extent:G6} units; a {CoordinateGrid.MaxBits}-bit grid reaches {(1 << CoordinateGrid.MaxBits) - 1}: scale it down"));
-        var smallestEdge = mesh.SmallestEdge;
+            throw new MeshError(file, element, string.Create(CultureInfo.InvariantCulture,
+                $"{reaches} {extent:G6} units; a {CoordinateGrid.MaxBits}-bit grid reaches {(1 << CoordinateGrid.MaxBits) - 1}: scale it down"));
         var fractionBits = 0;
         while (fractionBits < CoordinateGrid.MaxBits - integerBits && smallestEdge * Math.Pow(2, fractionBits) < StepsPerSmallestEdge) fractionBits++;
-        // Zero minus the corner, not its negation: a corner at 0 gives an offset of 0, not −0.
-        return new GridChoice(new CoordinateGrid(integerBits, fractionBits), Vec3.Zero - min, extent, smallestEdge);
+        return new GridChoice(new CoordinateGrid(integerBits, fractionBits), offset, extent, smallestEdge);
     }
 
     /// <summary>

@@ -6,8 +6,8 @@ namespace QuantumRayTracing.Search.Bvh;
 public readonly record struct BoundingBox(Vec3 Min, Vec3 Max)
 {
     /// <summary>
-    /// How far a primitive's box reaches past the rectangle on every side. A quantised hit point may sit a snap
-    /// tolerance outside the rectangle (<see cref="Intersection.RayTable.SnapTolerance"/>), and a node must never
+    /// How far a primitive's box reaches past its kind's bounds on every side. A quantised hit point may sit a snap
+    /// tolerance outside a rectangle (<see cref="Intersection.RayTable.SnapTolerance"/>), and a node must never
     /// cull a hit that brute force accepts.
     /// </summary>
     public const double Margin = 1e-6;
@@ -15,8 +15,9 @@ public readonly record struct BoundingBox(Vec3 Min, Vec3 Max)
     public static BoundingBox Empty => new(new Vec3(double.PositiveInfinity, double.PositiveInfinity, double.PositiveInfinity),
         new Vec3(double.NegativeInfinity, double.NegativeInfinity, double.NegativeInfinity));
 
-    public static BoundingBox Of(Rectangle rectangle) =>
-        new(rectangle.Min - new Vec3(Margin, Margin, Margin), rectangle.Max + new Vec3(Margin, Margin, Margin));
+    /// <summary>The box of primitive bounds (<see cref="Intersection.PrimitiveRows.Bounds"/>), widened by <see cref="Margin"/>.</summary>
+    public static BoundingBox Of((Vec3 Min, Vec3 Max) bounds) =>
+        new(bounds.Min - new Vec3(Margin, Margin, Margin), bounds.Max + new Vec3(Margin, Margin, Margin));
 
     public BoundingBox Union(BoundingBox other) => new(
         new Vec3(Math.Min(Min.X, other.Min.X), Math.Min(Min.Y, other.Min.Y), Math.Min(Min.Z, other.Min.Z)),

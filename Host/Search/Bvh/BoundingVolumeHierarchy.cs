@@ -3,7 +3,7 @@ using QuantumRayTracing.Intersection;
 namespace QuantumRayTracing.Search.Bvh;
 
 /// <summary>
-/// A bounding-volume hierarchy over a scene's rectangles: the spatial structure a classical renderer would use
+/// A bounding-volume hierarchy over a scene's primitives: the spatial structure a classical renderer would use
 /// (the ray tracing paper's sec. 2 leaves it out on purpose: O(log N) queries after an O(N log N) build).
 /// Built top-down with the surface area heuristic over <see cref="Bins"/> centroid bins per axis, a box test and
 /// a primitive test each costing 1, as they do in #C_Int.
@@ -28,7 +28,7 @@ public sealed class BoundingVolumeHierarchy
     private BoundingVolumeHierarchy(SceneGeometry geometry)
     {
         Geometry = geometry;
-        _boxes = [.. geometry.Rectangles.Select(BoundingBox.Of)];
+        _boxes = [.. Enumerable.Range(0, geometry.Count).Select(p => BoundingBox.Of(geometry.KindOf(p).Bounds(p)))];
         _order = [.. Enumerable.Range(0, geometry.Count)];
         if (geometry.Count > 0) Build(0, geometry.Count);
         Nodes = [.. _nodes];
