@@ -61,7 +61,7 @@ public class TriangleRowsTests
     [Fact]
     public void ASplitSquareAndAFanRenderAsTheRectangle()
     {
-        var options = RenderDefaults.Reference(RenderDefaults.CommandLine(48, 48));
+        var options = RenderDefaults.Reference(RenderDefaults.Options(48, 48));
         Scene Of(IReadOnlyList<Primitive> primitives) => With(primitives, eye: new Vec3(12, 20, -10));
         var rectangle = Renderer.Render(Of([new Rectangle(0, new Vec3(Lo, Lo, Plane), new Vec3(Hi, Hi, Plane), 2, White)]), new EngineSetup(EngineKind.Classical), options);
         foreach (var triangles in new[] { SplitSquare(Lo, Hi, Plane), Fan(Lo, Hi, Plane) })
@@ -176,7 +176,7 @@ public class TriangleRowsTests
         var (wrong, pixels) = (0L, 0L);
         foreach (var seed in new ulong[] { 1, 2, 3 })
         {
-            var options = RenderDefaults.CommandLine(64, 64, seed);
+            var options = RenderDefaults.Options(64, 64, seed);
             var reference = Renderer.Render(scene, new EngineSetup(EngineKind.Classical), RenderDefaults.Reference(options));
             var result = Renderer.Render(scene, new EngineSetup(EngineKind.Analytic), options);
             wrong += ImageError.Between(result.Image, reference.Image).DifferentPixels;
@@ -201,7 +201,7 @@ public class TriangleRowsTests
     public void TheGateEngineRefusesATriangleSceneBeforeAnyWork()
     {
         var scene = With(SplitSquare(Lo, Hi, Plane));
-        var error = Assert.Throws<QuantumRayTracing.Output.UserError>(() => Renderer.Render(scene, new EngineSetup(EngineKind.Gate), RenderDefaults.CommandLine(4, 4)));
+        var error = Assert.Throws<QuantumRayTracing.Output.UserError>(() => Renderer.Render(scene, new EngineSetup(EngineKind.Gate), RenderDefaults.Options(4, 4)));
         Assert.Contains("rectangles only", error.Message);
         Assert.DoesNotContain('\n', error.Message);
         foreach (var kind in Enum.GetValues<EngineKind>().Where(k => k != EngineKind.Gate))

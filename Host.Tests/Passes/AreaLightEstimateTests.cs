@@ -29,7 +29,7 @@ public class AreaLightEstimateTests
         var points = new List<SurfacePoint>();
         for (var pixel = 0; pixel < camera.Length; pixel++)
             if (BruteForceClosest(RayTable.Build(geometry, camera[pixel])) is { } p)
-                points.Add(SurfacePoint.Of(pixel, camera[pixel], Hit.From(RayTable.Build(geometry, camera[pixel]), p), Area.Rectangles[p], 1));
+                points.Add(SurfacePoint.Of(pixel, camera[pixel], Hit.From(RayTable.Build(geometry, camera[pixel]), p), Area.Primitives[p], 1));
         return points;
     }
 
