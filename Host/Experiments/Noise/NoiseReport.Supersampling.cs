@@ -1,11 +1,7 @@
-using System.Globalization;
-using QuantumRayTracing.Engines;
 using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Search;
 using QuantumRayTracing.Estimation;
-using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
 

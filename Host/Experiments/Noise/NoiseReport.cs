@@ -1,11 +1,6 @@
 using System.Globalization;
-using QuantumRayTracing.Engines;
-using QuantumRayTracing.Estimates;
 using QuantumRayTracing.Noise;
 using QuantumRayTracing.Reports;
-using QuantumRayTracing.Search;
-using QuantumRayTracing.Estimation;
-using QuantumRayTracing.Supersampling;
 
 namespace QuantumRayTracing.Experiments;
 /// <summary>The report `qrt bench noise` writes (docs/noise.md): a section per part measured, with its tables and plots.</summary>
