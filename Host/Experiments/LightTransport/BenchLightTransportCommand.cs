@@ -23,8 +23,8 @@ public sealed class BenchLightTransportCommand : Command
     private readonly Option<int[]> _queries = CommonOptions.List("--queries", "Queries per point and light, space-separated; at least two distinct counts for the fits.",
         [16, 32, 64, 128, 256, 512, 1024, 2048, 4096], "count", LightEstimation.MinQueries, LightEstimation.MaxQueries);
 
-    private readonly Option<int> _imageQueries = new Option<int>("--image-queries") { Description = "Queries per point and light of the images at equal queries.", DefaultValueFactory = _ => 256 }
-        .Between(LightEstimation.MinQueries, LightEstimation.MaxQueries);
+    private readonly Option<int[]> _imageQueries = CommonOptions.List("--image-queries", "Queries per point and light of the images at equal queries, one row of images each.",
+        [64, 1024], "count", LightEstimation.MinQueries, LightEstimation.MaxQueries);
 
     private readonly Option<int> _seeds = CommonOptions.SeedCount("Seeds 1..S of every estimator and query count; the slopes' intervals are over them.", 8, max: 100);
 
@@ -46,10 +46,11 @@ public sealed class BenchLightTransportCommand : Command
         var queries = parse.GetValue(_queries)!.Distinct().Order().ToArray();
         if (queries.Length < 2) throw new UserError("--queries: the fits need at least two distinct query counts");
         var writer = _report.Writer(parse);
-        writer.EnsureWritable(LightTransportExperiment.Pictures);
+        var imageQueries = parse.GetValue(_imageQueries)!.Distinct().Order().ToArray();
+        writer.EnsureWritable(LightTransportExperiment.Pictures(imageQueries));
         var images = parse.GetValue(_report.Output) is not null;
         var settings = new LightTransportSettings(_report.Load(parse, SceneStem), $"Scenes/{SceneStem}.json", parse.GetValue(_size), samples, queries,
-            parse.GetValue(_seeds), parse.GetValue(_referenceSamples), images ? parse.GetValue(_imageSize) : null, parse.GetValue(_imageQueries));
+            parse.GetValue(_seeds), parse.GetValue(_referenceSamples), images ? parse.GetValue(_imageSize) : null, imageQueries);
         var report = LightTransportExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
         return ExitCodes.Success;

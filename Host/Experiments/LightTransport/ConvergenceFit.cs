@@ -31,4 +31,17 @@ public sealed record ConvergenceFit(double Slope, double? HalfWidth, double Inte
 
     /// <summary>The queries at which the line reaches <paramref name="error"/>; null when the line does not fall.</summary>
     public double? QueriesTo(double error) => Slope < 0 ? Math.Pow(10, (Math.Log10(error) - Intercept) / Slope) : null;
+
+    /// <summary>
+    /// The error at which this line needs <paramref name="ratio"/> times the queries <paramref name="other"/> needs for the same
+    /// error; null when either line does not fall or their slopes are equal.
+    /// </summary>
+    public double? ErrorAtQueriesRatio(ConvergenceFit other, double ratio)
+    {
+        ArgumentNullException.ThrowIfNull(other);
+        if (Slope >= 0 || other.Slope >= 0 || Slope == other.Slope) return null;
+        // log10 Q = (log10 e − intercept) / slope on each line; the difference of the two is log10 ratio.
+        var log = (Math.Log10(ratio) + Intercept / Slope - other.Intercept / other.Slope) / (1 / Slope - 1 / other.Slope);
+        return Math.Pow(10, log);
+    }
 }

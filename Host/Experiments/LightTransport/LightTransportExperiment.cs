@@ -20,10 +20,9 @@ public static class LightTransportExperiment
     /// <summary>Monte Carlo first: the quantum estimators' spent queries are measured against its (it spends exactly its budget).</summary>
     public static readonly LightEstimator[] Estimators = [LightEstimator.Mc, LightEstimator.QCoin, LightEstimator.Mlae, LightEstimator.Iqae, LightEstimator.Bae];
 
-    /// <summary>The report's plots and images, by name, for checking their files before the work.</summary>
-    public static readonly string[] Pictures = ["exact", "converged", .. ImageKinds.Select(k => $"image-{k}")];
-
-    private static string[] ImageKinds => ["mc", "quantum", "traced", "converged"];
+    /// <summary>The report's plots and images at <paramref name="imageQueries"/>, by name, for checking their files before the work.</summary>
+    public static string[] Pictures(IEnumerable<int> imageQueries) =>
+        ["exact", "converged", "image-traced", "image-converged", .. imageQueries.SelectMany(q => new[] { $"image-{q}-mc", $"image-{q}-quantum" })];
 
     /// <summary>
     /// One render: its light NRMSE against the exact mean of each point's samples, its image NRMSE against the converged
@@ -34,8 +33,11 @@ public static class LightTransportExperiment
     /// <summary>The classical render with every sample of each set traced: its image NRMSE against the converged reference, per seed.</summary>
     public sealed record Traced(ulong Seed, double Converged);
 
-    /// <summary>Images at equal queries: Monte Carlo's and the best quantum estimator's render, the exact means, the converged reference.</summary>
-    public sealed record Images(int Queries, LightEstimator Best, RenderResult Mc, RenderResult Quantum, RgbImage Traced, RgbImage Converged);
+    /// <summary>Monte Carlo's and the best quantum estimator's render at <paramref name="Queries"/> each.</summary>
+    public sealed record EqualQueries(int Queries, RenderResult Mc, RenderResult Quantum);
+
+    /// <summary>Images at equal queries beside the exact means (every sample traced) and the converged reference.</summary>
+    public sealed record Images(LightEstimator Best, IReadOnlyList<EqualQueries> Pairs, RgbImage Traced, RgbImage Converged);
 
     public static Report Run(LightTransportSettings settings, Action<string> progress)
     {
@@ -94,8 +96,8 @@ public static class LightTransportExperiment
         progress($"images at {size}x{size}");
         var (scene, classical, analytic) = (settings.Scene, new EngineSetup(EngineKind.Classical), new EngineSetup(EngineKind.Analytic));
         var options = Options(settings, size, 1);
-        RenderResult At(LightEstimator estimator) => Renderer.Render(scene, analytic, options with { Light = new LightEstimation(estimator, settings.ImageQueries) });
-        return new Images(settings.ImageQueries, best, At(LightEstimator.Mc), At(best),
+        RenderResult At(LightEstimator estimator, int queries) => Renderer.Render(scene, analytic, options with { Light = new LightEstimation(estimator, queries) });
+        return new Images(best, [.. settings.ImageQueries.Select(q => new EqualQueries(q, At(LightEstimator.Mc, q), At(best, q)))],
             Renderer.Render(scene, classical, RenderDefaults.Reference(options)).Image,
             Renderer.Render(scene, classical, RenderDefaults.Converged(options, settings.ReferenceSamples)).Image);
     }

@@ -1,5 +1,4 @@
 using System.Globalization;
-using QuantumRayTracing.Metrics;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;
@@ -123,25 +122,33 @@ public static class LightTransportReport
         report.Text($"""
             **Against the targets** set for this comparison, from the fits above ({settings.Size}x{settings.Size}, {settings.Seeds} seed{(settings.Seeds == 1 ? "" : "s")}):
             a quantum slope of at most −0.9 — {string.Join("; ", steep)}. Monte Carlo about −0.5 — {Slope(mc)}. 1 % reached with at least
-            10 times fewer queries than Monte Carlo — the best quantum estimator, {Name(best)}, needs {(ratio is { } r ? $"{r.ToString("0.0", CultureInfo.InvariantCulture)} times fewer: {(r >= 10 ? "met" : "not met")}" : "no fitted crossing: not met")}.
+            10 times fewer queries than Monte Carlo — the best quantum estimator, {Name(best)}, needs {(ratio is { } r ? $"{r.ToString("0.0", CultureInfo.InvariantCulture)} times fewer: {(r >= 10 ? "met" : "not met")}" : "no fitted crossing: not met")}.{TenTimes(mc, fits[best], best)}
             """);
     }
+
+    // Where, on the fitted lines, Monte Carlo would need ten times the queries of the best quantum estimator (an extrapolation when outside the measured range).
+    private static string TenTimes(ConvergenceFit mc, ConvergenceFit? best, LightEstimator name) =>
+        best?.QueriesTo(Target) is not null && mc.ErrorAtQueriesRatio(best, 10) is { } error && best.QueriesTo(error) is { } queries
+            ? $" On the fitted lines the ratio reaches 10 at an NRMSE of {P(error)}, where {Name(name)} needs about {N((long)Math.Round(queries))} queries (read on the lines, not measured)."
+            : "";
 
     private static void ImageSection(Report report, LightTransportSettings settings, Images images)
     {
         var size = images.Traced.Width;
-        var mc = images.Mc.LightError!.Nrmse;
-        var quantum = images.Quantum.LightError!.Nrmse;
+        var best = Name(images.Best);
         report.Heading("Images at equal queries");
         report.Text($"""
-            {size}x{size}, seed 1, {N(images.Queries)} queries per point and light: Monte Carlo and the quantum estimator with the fewest queries
-            to 1 % on its fitted line ({Name(images.Best)}), the classical render with every sample of each set traced (the exact means the
-            light error is measured against) and the converged reference. Light NRMSE against the exact mean: Monte Carlo {P(mc)},
-            {Name(images.Best)} {P(quantum)}.
+            {size}x{size}, seed 1: Monte Carlo and the quantum estimator with the fewest queries to 1 % on its fitted line ({best}) at equal
+            queries per point and light, one row per count, then the classical render with every sample of each set traced (the exact means
+            the light error is measured against) and the converged reference. Light NRMSE against the exact mean:
+            {string.Join("; ", images.Pairs.Select(p => $"at {N(p.Queries)} queries Monte Carlo {P(p.Mc.LightError!.Nrmse)}, {best} {P(p.Quantum.LightError!.Nrmse)}"))}.
             """);
+        foreach (var pair in images.Pairs)
+            report.ImageRow([
+                new ReportImage($"image-{pair.Queries}-mc", pair.Mc.Image, $"Monte Carlo, {N(pair.Queries)} queries"),
+                new ReportImage($"image-{pair.Queries}-quantum", pair.Quantum.Image, $"{best}, {N(pair.Queries)} queries"),
+            ]);
         report.ImageRow([
-            new ReportImage("image-mc", images.Mc.Image, $"Monte Carlo, {N(images.Queries)} queries"),
-            new ReportImage("image-quantum", images.Quantum.Image, $"{Name(images.Best)}, {N(images.Queries)} queries"),
             new ReportImage("image-traced", images.Traced, $"every sample traced ({settings.AreaSamples} per point)"),
             new ReportImage("image-converged", images.Converged, $"converged reference ({settings.ReferenceSamples} samples)"),
         ]);
