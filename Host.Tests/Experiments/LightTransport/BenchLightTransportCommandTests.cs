@@ -77,14 +77,14 @@ public sealed class BenchLightTransportCommandTests : IDisposable
     [Theory]
     [InlineData("--area-samples", "12", "not a power of two")]
     [InlineData("--queries", "16", "at least two distinct")]
-    public void BadSettingsStopTheRunWithNothingWritten(string option, string value, string message)
+    public void BadSettingsAreUsageErrorsWithNothingWritten(string option, string value, string message)
     {
         var args = Run().ToList();
         var at = args.IndexOf(option);
         args.RemoveRange(at + 1, option == "--queries" ? 2 : 1);
         args.Insert(at + 1, value);
         var (code, error) = ConsoleCapture.Run([.. args]);
-        Assert.Equal(ExitCodes.BadInput, code);
+        Assert.Equal(ExitCodes.UsageError, code);
         Assert.Contains(message, error);
         Assert.Empty(Directory.GetFiles(_scratch.Path));
     }

@@ -1,6 +1,5 @@
 using System.CommandLine;
 using QuantumRayTracing.Cli;
-using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;
 
@@ -18,10 +17,12 @@ public sealed class BenchLightTransportCommand : Command
 
     private readonly Option<int> _imageSize = CommonOptions.SquareSize("Square size of the images at equal queries written beside the report (rendered apart, seed 1).", 64, "--image-size");
 
-    private readonly Option<int> _areaSamples = CommonOptions.AreaSamples("Samples in each shading point's set (a power of two: the register a coin puts in superposition).");
+    private readonly Option<int> _areaSamples = CommonOptions.AreaSamples("Samples in each shading point's set (a power of two: the register a coin puts in superposition).")
+        .Must(n => LightEstimation.IsRegisterSize(n) ? null : $"--area-samples {n} is not a power of two (the register a coin puts in superposition holds 2^k samples)");
 
     private readonly Option<int[]> _queries = CommonOptions.List("--queries", "Queries per point and light, space-separated; at least two distinct counts for the fits.",
-        [16, 32, 64, 128, 256, 512, 1024, 2048, 4096], "count", LightEstimation.MinQueries, LightEstimation.MaxQueries);
+        [16, 32, 64, 128, 256, 512, 1024, 2048, 4096], "count", LightEstimation.MinQueries, LightEstimation.MaxQueries)
+        .Must(values => (values ?? []).Distinct().Count() < 2 ? "--queries: the fits need at least two distinct query counts" : null);
 
     private readonly Option<int[]> _imageQueries = CommonOptions.List("--image-queries", "Queries per point and light of the images at equal queries, one row of images each.",
         [64, 1024], "count", LightEstimation.MinQueries, LightEstimation.MaxQueries);
@@ -41,15 +42,12 @@ public sealed class BenchLightTransportCommand : Command
 
     private int Execute(ParseResult parse)
     {
-        var samples = parse.GetValue(_areaSamples);
-        if (!LightEstimation.IsRegisterSize(samples)) throw new UserError($"--area-samples {samples} is not a power of two (the register a coin puts in superposition holds 2^k samples)");
         var queries = parse.GetValue(_queries)!.Distinct().Order().ToArray();
-        if (queries.Length < 2) throw new UserError("--queries: the fits need at least two distinct query counts");
         var writer = _report.Writer(parse);
         var imageQueries = parse.GetValue(_imageQueries)!.Distinct().Order().ToArray();
         writer.EnsureWritable(LightTransportExperiment.Pictures(imageQueries));
         var images = parse.GetValue(_report.Output) is not null;
-        var settings = new LightTransportSettings(_report.Load(parse, SceneStem), $"Scenes/{SceneStem}.json", parse.GetValue(_size), samples, queries,
+        var settings = new LightTransportSettings(_report.Load(parse, SceneStem), $"Scenes/{SceneStem}.json", parse.GetValue(_size), parse.GetValue(_areaSamples), queries,
             parse.GetValue(_seeds), parse.GetValue(_referenceSamples), images ? parse.GetValue(_imageSize) : null, imageQueries);
         var report = LightTransportExperiment.Run(settings, Console.Error.WriteLine);
         writer.Write(report, ReportFooter.Lines(MachineDescription.Describe(null, null)));
