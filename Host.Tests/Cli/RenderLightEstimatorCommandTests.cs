@@ -1,3 +1,4 @@
+using QuantumRayTracing.Cli;
 using QuantumRayTracing.Tests.Output;
 
 namespace QuantumRayTracing.Tests.Cli;
@@ -54,6 +55,19 @@ public sealed class RenderLightEstimatorCommandTests : IDisposable
         Assert.Single(run.Error.Trim().Split('\n'));
         Assert.Contains($"--light-estimator {estimator}", run.Error);
         Assert.Empty(_scratch.FileNames());
+    }
+
+    [Fact]
+    public void VplRefusalSaysWhatIsMissingAndWhatRuns()
+    {
+        var run = ConsoleCapture.Run(["render", AreaScene, "--light-estimator", "bae", "--vpl", "2", "--size", "4", "-o", _scratch.File("x.png")]);
+        Assert.Equal(ExitCodes.BadInput, run.Code);
+        Assert.Contains("VPL light is not estimated yet", run.Error);
+        Assert.Contains("coin per channel", run.Error);
+        Assert.Contains("--light-estimator mc without --light-queries", run.Error);
+        Assert.Empty(_scratch.FileNames());
+        // What the message offers runs: Monte Carlo without --light-queries traces every VPL.
+        Assert.Equal(0, ConsoleCapture.Run(["render", AreaScene, "--light-estimator", "mc", "--vpl", "2", "--size", "4", "--reference-samples", "0", "-o", _scratch.File("x.png")]).Code);
     }
 
     [Fact]

@@ -13,6 +13,7 @@ public sealed class BenchCommand : Command
         Subcommands.Add(new BenchOptimisedTracingCommand());
         Subcommands.Add(new BenchSpeedVsErrorCommand());
         Subcommands.Add(new BenchLightsCommand());
+        Subcommands.Add(new BenchLightTransportCommand());
         Subcommands.Add(new BenchSupersamplingResultsCommand());
         Subcommands.Add(new BenchSupersamplingImagesCommand());
         Subcommands.Add(new BenchSimulatorCapacityCommand());

@@ -73,7 +73,9 @@ public sealed record RenderRunSettings(
             throw new UserError($"{option}: a quantum estimator's outcomes are drawn from its exact distributions on the analytic engine only; use --engine analytic");
         if (IsNoisy) throw new UserError($"{option}: light estimation does not model noise yet; drop the noise model");
         if (Scene.AreaLights.Count == 0) throw new UserError($"{option}: {Scene.Name} has no area lights to estimate");
-        if (Options.Vpl > 0) throw new UserError($"{option}: light estimation covers area lights only for now; use --vpl 0");
+        // What VPL estimation lacks, so the refusal can say it: a coin per colour channel whose preparation traces the bounce and the VPL's shadow rays.
+        if (Options.Vpl > 0)
+            throw new UserError($"{option}: VPL light is not estimated yet (a VPL's contribution is a colour, its albedo times its own direct light, so it needs a coin per channel whose preparation finds the VPL's bounce hit and its shadow rays over all primitives, and no such coin exists); use --vpl 0, or --light-estimator mc without --light-queries to trace every VPL");
         if (!LightEstimation.IsRegisterSize(Options.AreaSamples))
             throw new UserError($"{option}: --area-samples {Options.AreaSamples} is not a power of two (the register a coin puts in superposition holds 2^k samples)");
     }
