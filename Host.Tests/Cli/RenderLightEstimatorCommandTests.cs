@@ -1,3 +1,4 @@
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Tests.Output;
 

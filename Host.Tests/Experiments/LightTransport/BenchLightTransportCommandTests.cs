@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Engines;
 using QuantumRayTracing.Experiments;

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Cli;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;

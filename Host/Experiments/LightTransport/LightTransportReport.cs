@@ -1,4 +1,5 @@
 using System.Globalization;
+using QuantumRayTracing.Passes;
 using QuantumRayTracing.Output;
 using QuantumRayTracing.Rendering;
 using QuantumRayTracing.Reports;
