@@ -58,6 +58,10 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
         Assert.Empty(outcome.Error);
     }
 
+    [Fact]
+    public void PoolLargerThanTheImageIsBadInput() =>
+        Outcome.Of("estimate", Scene, "--pooled", "65", "--size", "8", "--workers", "1").AssertBadInput("--pooled", "a pool of 65 rays, but a 8x8 image casts 64 camera rays");
+
     [Theory]
     [InlineData("8,0")]  // outside the 8x8 image: bad input
     [InlineData("0,8")]
@@ -74,6 +78,7 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
     [InlineData("--iterations", "must be between 0 and 100000", "--iterations", "-1")]
     [InlineData("--iterations", "Cannot parse argument 'many'", "--iterations", "many")]
     [InlineData("--format", "'foo' is not one of table, md, csv", "--format", "foo")]
+    [InlineData("--pooled", "must be at least 1, got 0", "--pooled", "0")]
     public void UsageErrors(string option, string problem, params string[] options) =>
         Outcome.Of(["estimate", Scene, .. options]).AssertUsageError(option, problem);
 
@@ -91,6 +96,7 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
     [InlineData("--pixel", "applies to one ray's estimates", "--pixel", "1,1")] // one ray and a frame
     [InlineData("--iterations", "applies to one ray's estimates", "--iterations", "3")]
     [InlineData("--subpixels", "applies to one ray's estimates", "--subpixels", "4")]
+    [InlineData("--pooled", "applies to one ray's estimates", "--pooled", "4")]
     [InlineData("--seed", "Cannot parse argument '-1'", "--seed", "-1")]
     [InlineData("--passes", "must be at least 1, got 0", "--passes", "0")]
     public void FrameUsageErrors(string option, string problem, params string[] options) =>

@@ -20,6 +20,8 @@ public static class QSharpOperations
 
     public const string ApplyPooledGroverIterationOnNewRegisters = "QuantumRayTracing.Intersection.ApplyPooledGroverIterationOnNewRegisters";
 
+    public const string ApplyPooledGroverSearchWithUnitaryLookups = "QuantumRayTracing.Intersection.ApplyPooledGroverSearchWithUnitaryLookups";
+
     public const string ApplyPooledQueryOnNewRegisters = "QuantumRayTracing.Intersection.ApplyPooledQueryOnNewRegisters";
 
     public const string MeasureGateGroverBatch = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";
