@@ -22,14 +22,7 @@ public sealed class ExportPooledSearchCommand : Command
 
     private readonly Option<int?> _iterations = CommonOptions.Iterations("Grover iterations r (0 to 64). Default: the optimal count for the pool's marked pairs among its rays x N pairs.", 64);
 
-    private readonly Option<string> _oracle = new Option<string>("--oracle")
-    {
-        Description = "How the oracle is built. As in `export search`, every load is cleared by a second lookup, so compact exports as narrow.",
-        DefaultValueFactory = _ => OracleConstruction.Narrow.Name,
-        HelpName = string.Join('|', OracleConstruction.Named.Select(c => c.Name)),
-    }.Must(name => OracleConstruction.Named.Any(c => c.Name == name)
-        ? null
-        : $"--oracle: unknown construction '{name}'; expected {string.Join(", ", OracleConstruction.Named.Select(c => c.Name))}");
+    private readonly Option<string> _oracle = ExportOutputOptions.Oracle();
 
     private readonly ExportOutputOptions _output = new();
 
@@ -49,7 +42,7 @@ public sealed class ExportPooledSearchCommand : Command
             var scene = DefaultScene.Load(parse.GetValue(_scene));
             var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
             var pixels = parse.GetValue(_pixels)!.Select(text => OptionText.PixelIn(text, width, height, "--pixels")).ToArray();
-            return PooledSearchExport.ForPixels(scene, width, height, pixels, OracleConstruction.Named.Single(c => c.Name == parse.GetValue(_oracle)), parse.GetValue(_iterations));
+            return PooledSearchExport.ForPixels(scene, width, height, pixels, ExportOutputOptions.Construction(parse, _oracle), parse.GetValue(_iterations));
         });
     }
 }
