@@ -12,7 +12,7 @@ public sealed class ExportPooledSearchCommand : Command
 
     private readonly Option<string[]> _pixels = new Option<string[]>("--pixels")
     {
-        Description = "The pool: the camera rays through these pixels, X,Y each, space-separated (at least one).",
+        Description = "The pool: the camera rays through these pixels, X,Y each, space-separated (at least one). Default: none, it is required.",
         Required = true,
         AllowMultipleArgumentsPerToken = true,
         HelpName = "X,Y...",
