@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Text.Json.Nodes;
 using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Cli;
@@ -56,6 +57,24 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
         var outcome = Outcome.Of("estimate", Scene, "--pixel", "3,4", "--size", "8", "--no-circuit", "--format", "csv", "--workers", "1");
         Assert.True(outcome.Code == 0, outcome.Error);
         Assert.Empty(outcome.Error);
+    }
+
+    [Fact]
+    public void EstimatesAPooledQueryBesideTheRaysOracle()
+    {
+        // Two pools of camera rays on qornell-8: a query reads every ray's rows, so it costs more CCZ than one ray's oracle,
+        // and a pool of 4 more than one of 2.
+        long Ccz(int rays, int column)
+        {
+            var outcome = Outcome.Of("estimate", Scene, "--pooled", rays.ToString(CultureInfo.InvariantCulture), "--size", "8", "--no-circuit", "--format", "csv",
+                "--models", "qubit_gate_ns_e3", "--workers", "1");
+            Assert.True(outcome.Code == 0, outcome.Error);
+            var lines = outcome.Output.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
+            Assert.Equal("measure,oracle,pooled query,Grover iteration,pooled iteration", lines.First(l => l.StartsWith("measure,", StringComparison.Ordinal)));
+            return long.Parse(lines.First(l => l.StartsWith("CCZ,", StringComparison.Ordinal)).Split(',')[column], CultureInfo.InvariantCulture);
+        }
+        var (oracle, two, four) = (Ccz(2, 1), Ccz(2, 2), Ccz(4, 2));
+        Assert.True(oracle < two && two < four, $"CCZ: oracle {oracle}, pooled query of 2 rays {two}, of 4 rays {four}");
     }
 
     [Fact]
