@@ -42,7 +42,7 @@ public sealed class EstimateCommand : Command
     {
         Description = "Price a pooled search's query and Grover iteration for a pool of R camera rays of the image (spread evenly over it, each its first search), beside the one ray's oracle and iteration, instead of the one-ray rows. A pooled budget round searches all its rays' (ray, primitive) pairs with one QSearch; its lookups are over R x N pairs. Default: none, the one ray's circuits alone.",
         HelpName = "R",
-    }.Between(1, 4096);
+    }.Between(1, 2048);
 
     private readonly Option<bool> _frame = new("--frame")
     {
