@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Text.Json.Nodes;
 using QuantumRayTracing.Experiments;
 using QuantumRayTracing.Cli;
@@ -58,6 +59,28 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
         Assert.Empty(outcome.Error);
     }
 
+    [Fact]
+    public void EstimatesAPooledQueryBesideTheRaysOracle()
+    {
+        // Two pools of camera rays on qornell-8: a query reads every ray's rows, so it costs more CCZ than one ray's oracle,
+        // and a pool of 4 more than one of 2.
+        long Ccz(int rays, int column)
+        {
+            var outcome = Outcome.Of("estimate", Scene, "--pooled", rays.ToString(CultureInfo.InvariantCulture), "--size", "8", "--no-circuit", "--format", "csv",
+                "--models", "qubit_gate_ns_e3", "--workers", "1");
+            Assert.True(outcome.Code == 0, outcome.Error);
+            var lines = outcome.Output.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
+            Assert.Equal("measure,oracle,pooled query,Grover iteration,pooled iteration", lines.First(l => l.StartsWith("measure,", StringComparison.Ordinal)));
+            return long.Parse(lines.First(l => l.StartsWith("CCZ,", StringComparison.Ordinal)).Split(',')[column], CultureInfo.InvariantCulture);
+        }
+        var (oracle, two, four) = (Ccz(2, 1), Ccz(2, 2), Ccz(4, 2));
+        Assert.True(oracle < two && two < four, $"CCZ: oracle {oracle}, pooled query of 2 rays {two}, of 4 rays {four}");
+    }
+
+    [Fact]
+    public void PoolLargerThanTheImageIsBadInput() =>
+        Outcome.Of("estimate", Scene, "--pooled", "65", "--size", "8", "--workers", "1").AssertBadInput("--pooled", "a pool of 65 rays, but a 8x8 image casts 64 camera rays");
+
     [Theory]
     [InlineData("8,0")]  // outside the 8x8 image: bad input
     [InlineData("0,8")]
@@ -74,6 +97,7 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
     [InlineData("--iterations", "must be between 0 and 100000", "--iterations", "-1")]
     [InlineData("--iterations", "Cannot parse argument 'many'", "--iterations", "many")]
     [InlineData("--format", "'foo' is not one of table, md, csv", "--format", "foo")]
+    [InlineData("--pooled", "must be at least 1, got 0", "--pooled", "0")]
     public void UsageErrors(string option, string problem, params string[] options) =>
         Outcome.Of(["estimate", Scene, .. options]).AssertUsageError(option, problem);
 
@@ -91,6 +115,7 @@ public sealed class EstimateCommandTests(EstimateCommandTests.PricedFrames frame
     [InlineData("--pixel", "applies to one ray's estimates", "--pixel", "1,1")] // one ray and a frame
     [InlineData("--iterations", "applies to one ray's estimates", "--iterations", "3")]
     [InlineData("--subpixels", "applies to one ray's estimates", "--subpixels", "4")]
+    [InlineData("--pooled", "applies to one ray's estimates", "--pooled", "4")]
     [InlineData("--seed", "Cannot parse argument '-1'", "--seed", "-1")]
     [InlineData("--passes", "must be at least 1, got 0", "--passes", "0")]
     public void FrameUsageErrors(string option, string problem, params string[] options) =>

@@ -18,6 +18,12 @@ public static class QSharpOperations
 
     public const string ApplyIntersectionOracleOnNewRegisters = "QuantumRayTracing.Intersection.ApplyIntersectionOracleOnNewRegisters";
 
+    public const string ApplyPooledGroverIterationOnNewRegisters = "QuantumRayTracing.Intersection.ApplyPooledGroverIterationOnNewRegisters";
+
+    public const string ApplyPooledGroverSearchWithUnitaryLookups = "QuantumRayTracing.Intersection.ApplyPooledGroverSearchWithUnitaryLookups";
+
+    public const string ApplyPooledQueryOnNewRegisters = "QuantumRayTracing.Intersection.ApplyPooledQueryOnNewRegisters";
+
     public const string MeasureGateGroverBatch = "QuantumRayTracing.Intersection.MeasureGateGroverBatch";
 
     public const string MeasureGateGroverSearch = "QuantumRayTracing.Intersection.MeasureGateGroverSearch";

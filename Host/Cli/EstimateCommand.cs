@@ -38,6 +38,12 @@ public sealed class EstimateCommand : Command
 
     private readonly Option<int?> _counterBits = CommonOptions.CounterBits("QSS counter register bits.", 10, fallback: 4, shortName: false);
 
+    private readonly Option<int?> _pooled = new Option<int?>("--pooled")
+    {
+        Description = "Price a pooled search's query and Grover iteration for a pool of R camera rays of the image (spread evenly over it, each its first search), beside the one ray's oracle and iteration, instead of the one-ray rows. A pooled budget round searches all its rays' (ray, primitive) pairs with one QSearch; its lookups are over R x N pairs. Default: none, the one ray's circuits alone.",
+        HelpName = "R",
+    }.Between(1, 2048);
+
     private readonly Option<bool> _frame = new("--frame")
     {
         Description = "Price a whole frame instead of one ray: render it with the analytic engine (the same scene, --size, render options and --seed as `render`), record every Grover run, and sum the runs' estimates per pass on every model, beside the classical render's time.",
@@ -64,7 +70,7 @@ public sealed class EstimateCommand : Command
     public EstimateCommand() : base("estimate", "Resource estimates of the gate-level oracle, one Grover iteration and a QSearch run for one ray: logical qubits, T, CCZ, measurements, gates by kind and depth, physical qubits and runtime per qubit model. With --frame: what every Grover run of a whole frame costs, per pass.")
     {
         Arguments.Add(_scene);
-        this.AddOptions(_pixel, _worstCase, _size, _iterations, _subpixels, _counterBits);
+        this.AddOptions(_pixel, _worstCase, _size, _iterations, _subpixels, _counterBits, _pooled);
         _estimator.AddTo(this);
         _json.AddTo(this);
         this.AddOptions(_frame, _errorBudget, _qpus, _output, _cluster, _engine.Seed);
@@ -81,8 +87,11 @@ public sealed class EstimateCommand : Command
     {
         var (scene, width, height) = LoadScene(parse);
         var pixel = parse.GetValue(_pixel) is { } text ? OptionText.PixelIn(text, width, height) : ((int, int)?)null;
+        if (parse.GetValue(_pooled) > (long)width * height)
+            throw new UserError($"--pooled: a pool of {parse.GetValue(_pooled)} rays, but a {width}x{height} image casts {width * height} camera rays");
         var (table, estimates) = RayEstimateRun.Run(new RayEstimateSettings(scene, width, height, pixel, parse.GetValue(_iterations), parse.GetValue(_subpixels) * parse.GetValue(_subpixels),
-            parse.GetValue(_counterBits)!.Value, _estimator.Construction(parse), _estimator.QubitModels(parse), !parse.GetValue(_estimator.NoCircuit), parse.GetValue(_estimator.Workers)));
+            parse.GetValue(_counterBits)!.Value, _estimator.Construction(parse), _estimator.QubitModels(parse), !parse.GetValue(_estimator.NoCircuit), parse.GetValue(_estimator.Workers),
+            parse.GetValue(_pooled)));
         table.Write(parse.GetValue(_estimator.Format));
         _json.Write(parse, EstimateFigures.Of(table, estimates));
         return ExitCodes.Success;
@@ -116,7 +125,7 @@ public sealed class EstimateCommand : Command
     }
 
     /// <summary>The options that choose and shape one ray's circuits.</summary>
-    private IEnumerable<Option> OneRayOptions => [_pixel, _worstCase, _iterations, _subpixels, _counterBits, _estimator.NoCircuit];
+    private IEnumerable<Option> OneRayOptions => [_pixel, _worstCase, _iterations, _subpixels, _counterBits, _estimator.NoCircuit, _pooled];
 
     /// <summary>The options of a frame's pricing: its budget and machine, where it runs, and the render it records.</summary>
     private IEnumerable<Option> FrameOptions => new Option[] { _errorBudget, _qpus, _output, _cluster, _engine.Seed, _qsearch.Growth, _qsearch.Rule }.Concat(_render.All);

@@ -16,14 +16,7 @@ public sealed class ExportSearchCommand : Command
 
     private readonly Option<int?> _iterations = CommonOptions.Iterations("Grover iterations r (0 to 64). Default: the optimal count for the ray's marked set, floor(pi / (4 asin sqrt(M/N))).", 64);
 
-    private readonly Option<string> _oracle = new Option<string>("--oracle")
-    {
-        Description = "How the oracle is built. The export clears the loaded registers by a second lookup whatever the construction (the QDK cannot compile the measured unlookup of compact, baseline and device to QIR), so compact exports as narrow.",
-        DefaultValueFactory = _ => OracleConstruction.Narrow.Name,
-        HelpName = string.Join('|', OracleConstruction.Named.Select(c => c.Name)),
-    }.Must(name => OracleConstruction.Named.Any(c => c.Name == name)
-        ? null
-        : $"--oracle: unknown construction '{name}'; expected {string.Join(", ", OracleConstruction.Named.Select(c => c.Name))}");
+    private readonly Option<string> _oracle = ExportOutputOptions.Oracle();
 
     private readonly ExportOutputOptions _output = new();
 
@@ -36,7 +29,7 @@ public sealed class ExportSearchCommand : Command
             var scene = DefaultScene.Load(parse.GetValue(_scene));
             var (width, height) = OptionText.SizeOr(parse.GetValue(_size), scene);
             var (x, y) = OptionText.PixelIn(parse.GetValue(_pixel)!, width, height);
-            return SearchExport.ForPixel(scene, width, height, x, y, OracleConstruction.Named.Single(c => c.Name == parse.GetValue(_oracle)), parse.GetValue(_iterations));
+            return SearchExport.ForPixel(scene, width, height, x, y, ExportOutputOptions.Construction(parse, _oracle), parse.GetValue(_iterations));
         });
     }
 }

@@ -49,10 +49,10 @@ public static class OptionText
     }
 
     /// <summary>The pixel <paramref name="text"/> names (validated at parse time), refused when outside a width x height image.</summary>
-    public static (int X, int Y) PixelIn(string text, int width, int height)
+    public static (int X, int Y) PixelIn(string text, int width, int height, string option = "--pixel")
     {
         var (x, y) = ParsePixel(text).Pixel!.Value;
-        return x < width && y < height ? (x, y) : throw new Output.UserError($"--pixel {x},{y} is outside the {width}x{height} image");
+        return x < width && y < height ? (x, y) : throw new Output.UserError($"{option} {x},{y} is outside the {width}x{height} image");
     }
 
     /// <summary>Engine names, space- or comma-separated, each kept once, in the order of <paramref name="all"/>.</summary>

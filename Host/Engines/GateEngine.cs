@@ -133,6 +133,17 @@ public sealed class GateEngine(BridgePool pool, int maxRequestsPerCall = GateEng
             .Append(", ConstantBounds = ").Append(Bool(construction.ConstantBounds)).Append(" } }").ToString();
     }
 
+    /// <summary>
+    /// The Q# value of a pool's searches for one pooled query, an <c>IntersectionInput[]</c>: each ray's
+    /// <see cref="OracleArgument"/>, in pool order (the pair register's ray part indexes them).
+    /// </summary>
+    public static string PooledArgument(IReadOnlyList<OracleInput> pool)
+    {
+        ArgumentNullException.ThrowIfNull(pool);
+        if (pool.Count == 0) throw new ArgumentException("a pool needs at least one ray", nameof(pool));
+        return "[" + string.Join(", ", pool.Select(OracleArgument)) + "]";
+    }
+
     private static string Bool(bool value) => value ? "true" : "false";
 
     private static string Int(int value) => value.ToString(CultureInfo.InvariantCulture);

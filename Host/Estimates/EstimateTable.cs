@@ -29,6 +29,15 @@ public static class EstimateTable
         ];
     }
 
+    /// <summary>The line that says what a pooled query was estimated for: its pool, pair register and rows.</summary>
+    public static string PoolContext(SceneGeometry geometry, IReadOnlyList<OracleInput> pool, string label)
+    {
+        var rayBits = pool.Count <= 1 ? 0 : 32 - int.LeadingZeroCount(pool.Count - 1);
+        var depthBits = pool.Max(p => p.Table.DepthBits) + 1;
+        var rows = (long)pool.Count << geometry.IndexBits;
+        return $"pool: {label}; pair register {geometry.IndexBits} primitive + {rayBits} ray qubits, rows looked up over {N(rows)} pairs, windows over {N(pool.Count)} rays, {depthBits} depth bits (the widest ray's + 1)";
+    }
+
     public static ReportTable For(string title, IReadOnlyList<CircuitEstimate> estimates, IReadOnlyList<QubitModel> models, IReadOnlyList<string> context)
     {
         var table = new ReportTable(title, "measure", estimates.Select(e => e.Circuit.Name).ToArray());

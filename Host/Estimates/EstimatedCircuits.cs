@@ -46,6 +46,29 @@ public static class EstimatedCircuits
         s => $"{QSharpOperations.CountCoinHeads}(true, {s.CoinValues}, 1, 1)",
         _ => null);
 
+    /// <summary>
+    /// One query of a pooled search over the pool's (ray, primitive) pairs, XORing the pair's test into a fresh output
+    /// qubit: its ray's window by a lookup over the rays, its row by a lookup over the pairs, the one-ray oracle's comparators.
+    /// </summary>
+    public static readonly EstimatedCircuit PooledQuery = new(
+        "pooled query",
+        "one query of a pooled search: the ray's window looked up over the pool's rays, the pair's row over its rays x N pairs, the comparators, XOR into the output, uncompute",
+        s => $"{QSharpOperations.ApplyPooledQueryOnNewRegisters}({GateEngine.PooledArgument(PoolOf(s))})",
+        _ => null);
+
+    /// <summary>One Grover iteration of a pooled search: the pooled query in phase form and the reflection about the uniform superposition over the pairs.</summary>
+    public static readonly EstimatedCircuit PooledIteration = new(
+        "pooled iteration",
+        "one Grover iteration of a pooled search: the pooled query in phase form, then the reflection about the uniform superposition over the pairs",
+        s => $"{QSharpOperations.ApplyPooledGroverIterationOnNewRegisters}({GateEngine.PooledArgument(PoolOf(s))})",
+        _ => null);
+
+    /// <summary>The circuits of one pooled search, for `estimate --pooled`.</summary>
+    public static IReadOnlyList<EstimatedCircuit> Pooled { get; } = [PooledQuery, PooledIteration];
+
+    private static IReadOnlyList<OracleInput> PoolOf(EstimateSubject subject) =>
+        subject.Pool ?? throw new ArgumentException("a pooled circuit needs the subject's pool of rays", nameof(subject));
+
     /// <summary>The circuits of one ray, for the oracle's tables and checks.</summary>
     public static IReadOnlyList<EstimatedCircuit> Ray { get; } = [Oracle, GroverIteration, SearchRun];
 

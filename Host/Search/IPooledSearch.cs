@@ -3,8 +3,9 @@ namespace QuantumRayTracing.Search;
 /// <summary>
 /// One QSearch over the pooled (ray, primitive) pairs of several ray searches: a pair is marked when its row is accepted
 /// under its ray's window, so the search finds a ray that is wrong, if any is, in about √(rays · N) queries where
-/// confirming each ray alone takes about rays · √N. Each query loads a ray's window and a primitive's row, two lookups
-/// side by side (over the rays and over the primitives), and tests the pair: docs/conventions.md counts it as one query.
+/// confirming each ray alone takes about rays · √N. Each query looks up its ray's window over the rays and the pair's row
+/// over the rays × N pairs (a row's point depends on the ray as well as the primitive), and tests the pair (Q#
+/// <c>ApplyPooledIntersectionOracle</c>): docs/conventions.md counts it as one query and gives its gates, which grow with the pool.
 /// Only an engine that samples the search's outcome (the noiseless analytic engine) can run registers this wide.
 /// </summary>
 public interface IPooledSearch

@@ -43,4 +43,22 @@ public static class EstimateRay
         var (input, label) = Pixel(scene, geometry, width, height, best % width, best / width, construction);
         return (input, $"worst case: {label}");
     }
+
+    /// <summary>
+    /// A pool of <paramref name="rays"/> camera rays of a width × height image for a pooled query, each in its first search
+    /// (full range): the pixels k · (width · height) / rays, spread evenly in row-major order. A pooled query's gates depend
+    /// on the pool's size, N and the widest ray's depth bits, not on which rays it holds (but for the constant-bound construction).
+    /// </summary>
+    public static (IReadOnlyList<OracleInput> Pool, string Label) Pool(Scene scene, SceneGeometry geometry, int width, int height, int rays, OracleConstruction construction)
+    {
+        var pixels = (long)width * height;
+        if (rays < 1 || rays > pixels) throw new ArgumentOutOfRangeException(nameof(rays), $"a pool of {rays} rays from a {width}x{height} image's {pixels} camera rays");
+        var camera = CameraRays.For(scene.Camera, width, height);
+        var pool = Enumerable.Range(0, rays).AsParallel().AsOrdered().Select(k =>
+        {
+            var table = RayTable.Build(geometry, camera[(int)(k * pixels / rays)]);
+            return new OracleInput(table, table.FullRange) { Construction = construction };
+        }).ToList();
+        return (pool, $"{rays} camera rays of {width}x{height}, spread evenly over the image, each its first search (full range)");
+    }
 }

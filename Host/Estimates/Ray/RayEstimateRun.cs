@@ -5,7 +5,10 @@ using QuantumRayTracing.Search;
 
 namespace QuantumRayTracing.Estimates;
 
-/// <summary>`estimate` for one ray: its oracle, a Grover iteration, a QSearch run and the supersampling circuits, estimated on every model.</summary>
+/// <summary>
+/// `estimate` for one ray: its oracle, a Grover iteration, a QSearch run and the supersampling circuits, estimated on every
+/// model; with a pool instead, the ray's oracle and Grover iteration each beside a pooled search's query and iteration.
+/// </summary>
 public static class RayEstimateRun
 {
     /// <summary>The table `estimate` prints and the estimates behind it; a progress bar on an interactive console meanwhile.</summary>
@@ -16,9 +19,18 @@ public static class RayEstimateRun
             ? EstimateRay.Pixel(scene, geometry, settings.Width, settings.Height, pixel.X, pixel.Y, settings.Construction)
             : EstimateRay.WorstCase(scene, geometry, settings.Width, settings.Height, settings.Construction);
         var subject = new EstimateSubject(input, settings.Iterations ?? QSearchSchedule.CeilSqrt(geometry.Count), label, settings.Subpixels, settings.CounterBits);
+        var context = EstimateTable.Context(scene, geometry, subject);
+        IEnumerable<EstimatedCircuit> circuits = EstimatedCircuits.All;
+        if (settings.PooledRays is { } rays)
+        {
+            var (pool, poolLabel) = EstimateRay.Pool(scene, geometry, settings.Width, settings.Height, rays, settings.Construction);
+            subject = subject with { Pool = pool };
+            context = [.. context, EstimateTable.PoolContext(geometry, pool, poolLabel)];
+            circuits = [EstimatedCircuits.Oracle, EstimatedCircuits.PooledQuery, EstimatedCircuits.GroverIteration, EstimatedCircuits.PooledIteration];
+        }
         IReadOnlyList<CircuitEstimate> estimates;
-        using (var pool = new BridgePool(settings.Workers))
-            estimates = EstimateProgress.Run(new ResourceEstimator(pool, settings.Models, settings.WithCircuits), EstimatedCircuits.All.Select(c => (c, subject)).ToArray(), "estimating");
-        return (EstimateTable.For($"Resource estimates: {scene.Name}, {label}", estimates, settings.Models, EstimateTable.Context(scene, geometry, subject)), estimates);
+        using (var bridges = new BridgePool(settings.Workers))
+            estimates = EstimateProgress.Run(new ResourceEstimator(bridges, settings.Models, settings.WithCircuits), circuits.Select(c => (c, subject)).ToArray(), "estimating");
+        return (EstimateTable.For($"Resource estimates: {scene.Name}, {label}", estimates, settings.Models, context), estimates);
     }
 }

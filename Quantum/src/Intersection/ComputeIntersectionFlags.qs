@@ -1,5 +1,6 @@
 namespace QuantumRayTracing.Intersection {
     import Std.Arithmetic.ApplyIfGreaterL;
+    import Std.Arithmetic.ApplyIfGreaterLE;
     import Std.Arithmetic.ApplyIfGreaterOrEqualLE;
     import Std.Arithmetic.ApplyIfLessOrEqualL;
     import Std.Arithmetic.ApplyIfLessOrEqualLE;
@@ -43,22 +44,51 @@ namespace QuantumRayTracing.Intersection {
     /// the high bits of one number, so one comparison against a constant gives the lexicographic
     /// (depth, id) order.
     internal operation ComputeIntersectionFlags(tables : IntersectionTables, index : Qubit[], registers : IntersectionRegisters) : Unit is Adj {
+        ComputeWindowedIntersectionFlags(tables, index, index, [], [], registers);
+    }
+
+    /// # Summary
+    /// `ComputeIntersectionFlags` with the rows read at `address` and the window either the tables'
+    /// constants or loaded into registers: the one-ray oracle passes its index for both and no window
+    /// register; a pooled query (`ComputePooledIntersectionFlags`) the pair register as the address,
+    /// its primitive part for the limit's tie-break, and the window its ray's lookup loaded.
+    ///
+    /// # Input
+    /// ## tables
+    /// The rows' tables, one row per address.
+    /// ## address
+    /// The lookups' address register (`tables.IndexBits` qubits).
+    /// ## primitive
+    /// The primitive id the limit comparator reads below the depth.
+    /// ## near
+    /// The window's near as a register as wide as the depth register (compared by depth ≥ near), or
+    /// empty: then `tables.Near`, a constant.
+    /// ## limit
+    /// The window's limit over primitive + depth read as one number, or empty: then `tables.Limit`.
+    /// ## registers
+    /// The work registers, all in |0⟩.
+    internal operation ComputeWindowedIntersectionFlags(tables : IntersectionTables, address : Qubit[], primitive : Qubit[], near : Qubit[], limit : Qubit[], registers : IntersectionRegisters) : Unit is Adj {
         let (rpc, coord) = (registers.Rpc, registers.Coord);
         let c = tables.CoordinateBits;
         let (low, high) = tables.BoundRegisters == 2 ? (coord[...c - 1], coord[c...]) | (coord, coord);
         // With measured unloads the load is a plain Select, so that the oracle's uncomputation clears
         // it with the unlookup as well; otherwise it is the self-inverse XOR lookup and nothing measures.
         if tables.MeasuredUnload {
-            Select(tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
+            Select(tables.Load, address, rpc + coord + registers.Depth + registers.Valid);
         } else {
-            ApplyXorLookup(tables.UnitaryLookups, tables.Load, index, rpc + coord + registers.Depth + registers.Valid);
+            ApplyXorLookup(tables.UnitaryLookups, tables.Load, address, rpc + coord + registers.Depth + registers.Valid);
         }
-        ApplyIfLessOrEqualL(X, tables.Near, registers.Depth, registers.DepthFlags[0]);
-        ApplyIfGreaterL(X, tables.Limit, index + registers.Depth, registers.DepthFlags[1]);
+        if Length(near) == 0 {
+            ApplyIfLessOrEqualL(X, tables.Near, registers.Depth, registers.DepthFlags[0]);
+            ApplyIfGreaterL(X, tables.Limit, primitive + registers.Depth, registers.DepthFlags[1]);
+        } else {
+            ApplyIfLessOrEqualLE(X, near, registers.Depth, registers.DepthFlags[0]);
+            ApplyIfGreaterLE(X, limit, primitive + registers.Depth, registers.DepthFlags[1]);
+        }
         for s in 0..tables.Axes - 1 {
             let flag = registers.AxisFlags[s];
             if s > 0 {
-                ApplyXorLookup(tables.UnitaryLookups, tables.NextAxis[s - 1], index, rpc + coord);
+                ApplyXorLookup(tables.UnitaryLookups, tables.NextAxis[s - 1], address, rpc + coord);
             }
             X(flag);
             if tables.BoundRegisters == 0 {
@@ -66,31 +96,31 @@ namespace QuantumRayTracing.Intersection {
                 for p in 0..count - 1 {
                     let bounds = tables.AxisBounds[s][p];
                     if Length(bounds) == 2 {
-                        ApplyControlledOnInt(p, ApplyIfLessOrEqualL(X, bounds[0], rpc, _), index, flag);
-                        ApplyControlledOnInt(p, ApplyIfGreaterOrEqualL(X, bounds[1], rpc, _), index, flag);
+                        ApplyControlledOnInt(p, ApplyIfLessOrEqualL(X, bounds[0], rpc, _), address, flag);
+                        ApplyControlledOnInt(p, ApplyIfGreaterOrEqualL(X, bounds[1], rpc, _), address, flag);
                     } elif s == 0 {
                         // A row without a point, in place of a valid qubit: its first axis flag cleared.
-                        ApplyControlledOnInt(p, X, index, flag);
+                        ApplyControlledOnInt(p, X, address, flag);
                     }
                 }
                 // Indices past the last primitive hold no row either.
                 if s == 0 {
-                    for p in count..(1 <<< Length(index)) - 1 {
-                        ApplyControlledOnInt(p, X, index, flag);
+                    for p in count..(1 <<< Length(address)) - 1 {
+                        ApplyControlledOnInt(p, X, address, flag);
                     }
                 }
             } else {
                 ApplyIfLessOrEqualLE(X, low, rpc, flag);
                 if tables.BoundRegisters == 1 {
-                    ApplyXorLookup(tables.UnitaryLookups, tables.MinsToMaxes[s], index, coord);
+                    ApplyXorLookup(tables.UnitaryLookups, tables.MinsToMaxes[s], address, coord);
                 }
                 ApplyIfGreaterOrEqualLE(X, high, rpc, flag);
             }
         }
         if tables.MeasuredUnload {
-            Adjoint Select(tables.Unload, index, rpc + coord + registers.Depth);
+            Adjoint Select(tables.Unload, address, rpc + coord + registers.Depth);
         } else {
-            ApplyXorLookup(tables.UnitaryLookups, tables.Unload, index, rpc + coord + registers.Depth);
+            ApplyXorLookup(tables.UnitaryLookups, tables.Unload, address, rpc + coord + registers.Depth);
         }
     }
 }
