@@ -18,7 +18,7 @@ public partial class GateOracleTests
     private static readonly Lazy<SceneGeometry> FourScene = new(() =>
     {
         var scene = SceneLoader.Parse(Mixed, "mixed");
-        return new SceneGeometry(scene with { Rectangles = scene.Rectangles.Take(4).ToList() });
+        return new SceneGeometry(scene with { Primitives = scene.Primitives.Take(4).ToList() });
     });
 
     [Theory]

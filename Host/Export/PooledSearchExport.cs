@@ -18,7 +18,7 @@ public static class PooledSearchExport
     /// <summary>The pooled search of the camera rays through <paramref name="pixels"/> of a width × height image, each in its full range.</summary>
     public static ExportSubject ForPixels(Scene scene, int width, int height, IReadOnlyList<(int X, int Y)> pixels, OracleConstruction construction, int? iterations)
     {
-        if (scene.Rectangles.Count < 2) throw new Output.UserError($"scene {scene.Name}: a search needs at least 2 primitives");
+        if (scene.Primitives.Count < 2) throw new Output.UserError($"scene {scene.Name}: a search needs at least 2 primitives");
         if (pixels.Distinct().Count() != pixels.Count) throw new Output.UserError("--pixels: a pixel is named twice; a pool holds each ray once");
         var geometry = new SceneGeometry(scene);
         var pool = pixels.Select(p => EstimateRay.Pixel(scene, geometry, width, height, p.X, p.Y, construction).Input).ToArray();
